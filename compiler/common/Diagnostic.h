@@ -1,0 +1,56 @@
+#pragma once
+/// \file
+/// Errors and warnings with the source position they are about.
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "compiler/common/SourceFile.h"
+
+namespace mxc {
+
+enum class Severity { Error, Warning, Note };
+
+/// One message about the input. `location` names file, line and column when known.
+struct Diagnostic {
+  Severity severity = Severity::Error;
+  SourceLocation location;
+  std::string message;
+
+  /// "file:line:column: error: message" (the position is left out when unknown).
+  std::string format() const;
+};
+
+/// Collects the messages of a stage. A stage keeps going after an error where it can,
+/// so a user sees every problem of a document in one run.
+class Diagnostics {
+ public:
+  void error(SourceLocation location, std::string message);
+  void warning(SourceLocation location, std::string message);
+  void note(SourceLocation location, std::string message);
+  void add(Diagnostic diagnostic);
+
+  bool hasErrors() const { return errorCount_ > 0; }
+  size_t errorCount() const { return errorCount_; }
+  const std::vector<Diagnostic>& all() const { return items_; }
+  /// Every message, one per line, in the order they were reported.
+  std::string format() const;
+
+ private:
+  std::vector<Diagnostic> items_;
+  size_t errorCount_ = 0;
+};
+
+/// Thrown by stages that cannot continue after an error (the XML parser stops at the
+/// first malformed construct, as XML requires).
+class CompileError : public std::runtime_error {
+ public:
+  explicit CompileError(Diagnostic diagnostic);
+  const Diagnostic& diagnostic() const { return diagnostic_; }
+
+ private:
+  Diagnostic diagnostic_;
+};
+
+}  // namespace mxc
