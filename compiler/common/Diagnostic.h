@@ -20,6 +20,9 @@ struct Diagnostic {
 
   /// "file:line:column: error: message" (the position is left out when unknown).
   std::string format() const;
+  /// format() followed, when the position is known, by the source line and a caret under
+  /// the column, as compilers print them for a person at a terminal.
+  std::string formatWithSource() const;
 };
 
 /// Collects the messages of a stage. A stage keeps going after an error where it can,

@@ -1,0 +1,17 @@
+#pragma once
+/// \file
+/// Writing output files so that a reader never sees half of one.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace mxc::cli {
+
+/// Writes `contents` to a temporary file beside `path` and renames it over `path` once it is
+/// complete, so a failure (or a crash) leaves either the old file or none, never a partial one.
+/// Returns an error message on failure.
+std::optional<std::string> writeFileAtomically(const std::filesystem::path& path, std::string_view contents);
+
+}  // namespace mxc::cli

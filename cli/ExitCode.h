@@ -1,0 +1,14 @@
+#pragma once
+/// \file
+/// The exit codes of mxc, as documented in README.md.
+
+namespace mxc::cli {
+
+enum ExitCode : int {
+  kOk = 0,               ///< success (warnings may have been printed)
+  kInvalidDocument = 1,  ///< the document or a library has errors (printed with file:line:column)
+  kUsage = 2,            ///< bad command line
+  kOutputFailed = 3,     ///< an output could not be written (nothing partial is left behind)
+};
+
+}  // namespace mxc::cli

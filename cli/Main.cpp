@@ -1,0 +1,29 @@
+// mxc: a compiler for MaterialX material documents. See README.md for the commands.
+
+#include <cstdio>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/ExitCode.h"
+#include "cli/InspectCommand.h"
+
+int main(int argc, char** argv) {
+  using namespace mxc::cli;
+  CLI::App app{"mxc: compile MaterialX documents (Standard Surface, OpenPBR, pbrlib graphs) to shaders", "mxc"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "mxc 0.1.0");
+  app.footer(
+      "Exit codes: 0 success, 1 invalid document or library (errors name file:line:column), 2 usage error, "
+      "3 an output could not be written.\nRun 'mxc COMMAND --help' for the options of a command.");
+  int exitCode = kOk;
+  registerInspect(app, exitCode);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);  // --help, --version
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);  // prints the message
+    return kUsage;
+  }
+  return exitCode;
+}

@@ -1,0 +1,415 @@
+#include "compiler/document/DocumentBuilder.h"
+
+#include <type_traits>
+#include <unordered_map>
+
+#include <fmt/format.h>
+
+namespace mxc::doc {
+
+namespace {
+
+// Elements of the MaterialX specification that are not nodes and that mxc keeps without acting
+// on them (geometry binding and property assignment belong to the renderer, not the shader).
+constexpr std::string_view kKeptElements[] = {
+    "geominfo", "collection", "propertyset", "propertysetassign", "variantset", "variant",
+    "variantassign", "attributedef", "targetdef", "backdrop", "lookgroup", "unittypedef",
+};
+
+bool isKeptElement(std::string_view name) {
+  for (std::string_view k : kKeptElements) {
+    if (k == name) return true;
+  }
+  return false;
+}
+
+/// MaterialX names: a letter or '_' then letters, digits and '_' (':' separates namespaces).
+bool isValidName(std::string_view name) {
+  if (name.empty()) return false;
+  auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+  if (!letter(name[0])) return false;
+  for (char c : name) {
+    if (!letter(c) && !(c >= '0' && c <= '9') && c != ':') return false;
+  }
+  return true;
+}
+
+/// Effective inherited attributes (colorspace, fileprefix) of the enclosing elements.
+struct Scope {
+  std::string_view colorspace;
+  std::string_view fileprefix;
+
+  Scope enter(const xml::Element& e) const {
+    Scope s = *this;
+    if (auto cs = e.attribute("colorspace")) s.colorspace = *cs;
+    if (auto fp = e.attribute("fileprefix")) s.fileprefix = *fp;
+    return s;
+  }
+};
+
+/// Tracks names of sibling elements so a duplicate is reported with the first definition.
+class NameSet {
+ public:
+  NameSet(Diagnostics& diagnostics, std::string_view scope) : diagnostics_(diagnostics), scope_(scope) {}
+  void add(std::string_view name, SourceLocation location) {
+    if (name.empty()) return;
+    auto [it, inserted] = seen_.emplace(name, location);
+    if (!inserted) {
+      LineColumn first = it->second.lineColumn();
+      diagnostics_.error(location, fmt::format("duplicate name '{}' in {} (first defined at line {}, column {})", name,
+                                               scope_, first.line, first.column));
+    }
+  }
+
+ private:
+  Diagnostics& diagnostics_;
+  std::string_view scope_;
+  std::unordered_map<std::string_view, SourceLocation> seen_;
+};
+
+class Builder {
+ public:
+  Builder(Document& document, Diagnostics& diagnostics) : doc_(document), diagnostics_(diagnostics) {}
+
+  void build();
+
+ private:
+  SourceLocation at(const xml::Element& e) const { return e.location(); }
+  SourceLocation valueAt(const xml::Element& e, std::string_view attribute) const {
+    if (const xml::Attribute* a = e.findAttribute(attribute)) return e.document().locationOf(a->valueOffset);
+    return e.location();
+  }
+  /// The `name` attribute, checked: present and a valid MaterialX name.
+  std::string_view requireName(const xml::Element& e);
+  std::string_view requireAttribute(const xml::Element& e, std::string_view attribute, std::string_view why);
+  bool parseBool(const xml::Element& e, std::string_view attribute);
+
+  template <typename PortT>
+  PortT buildPort(const xml::Element& e, const Scope& scope);
+  Token buildToken(const xml::Element& e);
+  /// Reads the <input>/<output>/<token> children of a node, nodedef or graph; other children
+  /// go to `other` when given, else are errors.
+  template <typename Owner>
+  void buildPorts(const xml::Element& e, const Scope& scope, Owner& owner, NameSet& names,
+                  std::vector<xml::Element>* other);
+  Node buildNode(const xml::Element& e, const Scope& scope);
+  NodeDef buildNodeDef(const xml::Element& e, const Scope& scope);
+  NodeGraph buildNodeGraph(const xml::Element& e, const Scope& scope);
+  void unexpectedChild(const xml::Element& child, std::string_view parentKind);
+
+  Document& doc_;
+  Diagnostics& diagnostics_;
+};
+
+std::string_view Builder::requireName(const xml::Element& e) {
+  auto name = e.attribute("name");
+  if (!name) {
+    diagnostics_.error(at(e), fmt::format("<{}> has no 'name' attribute", e.name()));
+    return {};
+  }
+  if (!isValidName(*name)) {
+    diagnostics_.error(valueAt(e, "name"),
+                       fmt::format("invalid name '{}': a name starts with a letter or '_' and holds only letters, "
+                                   "digits and '_'",
+                                   *name));
+  }
+  return *name;
+}
+
+std::string_view Builder::requireAttribute(const xml::Element& e, std::string_view attribute, std::string_view why) {
+  auto value = e.attribute(attribute);
+  if (!value || value->empty()) {
+    diagnostics_.error(at(e), fmt::format("<{} name=\"{}\"> has no '{}' attribute ({})", e.name(),
+                                          e.attributeOr("name", ""), attribute, why));
+    return {};
+  }
+  return *value;
+}
+
+bool Builder::parseBool(const xml::Element& e, std::string_view attribute) {
+  auto value = e.attribute(attribute);
+  if (!value) return false;
+  if (*value == "true") return true;
+  if (*value != "false") {
+    diagnostics_.error(valueAt(e, attribute),
+                       fmt::format("'{}' must be true or false, not '{}'", attribute, *value));
+  }
+  return false;
+}
+
+template <typename PortT>
+PortT Builder::buildPort(const xml::Element& e, const Scope& outer) {
+  Scope scope = outer.enter(e);
+  PortT port;
+  port.element = e;
+  port.location = at(e);
+  port.name = requireName(e);
+  port.type = requireAttribute(e, "type", "every input and output declares its type");
+  port.nodename = e.attributeOr("nodename", "");
+  port.nodegraph = e.attributeOr("nodegraph", "");
+  port.output = e.attributeOr("output", "");
+  port.interfacename = e.attributeOr("interfacename", "");
+  port.channels = e.attributeOr("channels", "");
+  port.defaultgeomprop = e.attributeOr("defaultgeomprop", "");
+  port.defaultinput = e.attributeOr("defaultinput", "");
+  port.colorspace = scope.colorspace;
+  port.fileprefix = scope.fileprefix;
+  port.unit = e.attributeOr("unit", "");
+  port.unittype = e.attributeOr("unittype", "");
+  port.enumNames = e.attributeOr("enum", "");
+  port.enumValues = e.attributeOr("enumvalues", "");
+  port.uniform = parseBool(e, "uniform");
+
+  if (!port.nodename.empty() && !port.nodegraph.empty()) {
+    diagnostics_.error(port.attributeLocation("nodegraph"),
+                       fmt::format("'{}' connects to both node '{}' and node graph '{}'; give one", port.name,
+                                   port.nodename, port.nodegraph));
+  }
+  if (!port.interfacename.empty() && (!port.nodename.empty() || !port.nodegraph.empty())) {
+    diagnostics_.error(port.attributeLocation("interfacename"),
+                       fmt::format("'{}' has both an interfacename and a node connection; give one", port.name));
+  }
+
+  // Outputs of nodedefs give `default` where inputs give `value`. An output default may name a
+  // geometric property instead of a value (ND_flake2d's flakenormal defaults to "Nworld").
+  const xml::Attribute* valueAttribute = e.findAttribute("value");
+  if (const xml::Attribute* d = e.findAttribute("default"); d && !valueAttribute) {
+    if (std::is_same_v<PortT, Output> && isValidName(d->value) && componentCount(valueTypeOf(port.type)) > 1) {
+      port.defaultgeomprop = d->value;
+    } else {
+      valueAttribute = d;
+    }
+  }
+  if (valueAttribute) {
+    port.valueString = valueAttribute->value;
+    port.valueLocation = e.document().locationOf(valueAttribute->valueOffset);
+    if (!port.type.empty()) {
+      ValueError error;
+      port.value = tryParseValue(valueTypeOf(port.type), valueAttribute->value, &error);
+      if (!port.value) {
+        // Point inside the value when it was not rewritten by entity decoding.
+        const uint32_t shift = valueAttribute->decoded ? 0u : static_cast<uint32_t>(error.offset);
+        diagnostics_.error(e.document().locationOf(valueAttribute->valueOffset + shift),
+                           fmt::format("invalid {} value \"{}\" for '{}': {}", port.type, valueAttribute->value,
+                                       port.name, error.message));
+      }
+    }
+  }
+  for (const xml::Element& child : e.children()) unexpectedChild(child, e.name());
+  return port;
+}
+
+Token Builder::buildToken(const xml::Element& e) {
+  Token token;
+  token.location = at(e);
+  token.name = requireName(e);
+  token.type = e.attributeOr("type", "string");
+  token.value = e.attributeOr("value", "");
+  return token;
+}
+
+void Builder::unexpectedChild(const xml::Element& child, std::string_view parentKind) {
+  if (child.name() == "parameter") {
+    diagnostics_.error(at(child), fmt::format("<parameter> is MaterialX 1.37 syntax; since 1.38 it is written <input>"));
+    return;
+  }
+  diagnostics_.error(at(child), fmt::format("unexpected <{}> inside <{}>", child.name(), parentKind));
+}
+
+template <typename Owner>
+void Builder::buildPorts(const xml::Element& e, const Scope& scope, Owner& owner, NameSet& names,
+                         std::vector<xml::Element>* other) {
+  for (const xml::Element& child : e.children()) {
+    std::string_view kind = child.name();
+    if (kind == "input") {
+      owner.inputs.push_back(buildPort<Input>(child, scope));
+      names.add(owner.inputs.back().name, at(child));
+    } else if (kind == "output") {
+      owner.outputs.push_back(buildPort<Output>(child, scope));
+      names.add(owner.outputs.back().name, at(child));
+    } else if (kind == "token") {
+      owner.tokens.push_back(buildToken(child));
+      names.add(owner.tokens.back().name, at(child));
+    } else if (other) {
+      other->push_back(child);
+    } else {
+      unexpectedChild(child, e.name());
+    }
+  }
+}
+
+Node Builder::buildNode(const xml::Element& e, const Scope& outer) {
+  Scope scope = outer.enter(e);
+  Node node;
+  node.element = e;
+  node.location = at(e);
+  node.category = e.name();
+  node.name = requireName(e);
+  node.type = requireAttribute(e, "type", "a node declares its output type");
+  node.nodedef = e.attributeOr("nodedef", "");
+  node.version = e.attributeOr("version", "");
+  NameSet names(diagnostics_, "this node");
+  buildPorts(e, scope, node, names, nullptr);
+  return node;
+}
+
+NodeDef Builder::buildNodeDef(const xml::Element& e, const Scope& outer) {
+  Scope scope = outer.enter(e);
+  NodeDef def;
+  def.element = e;
+  def.location = at(e);
+  def.name = requireName(e);
+  def.node = requireAttribute(e, "node", "a nodedef names the node category it defines");
+  def.nodegroup = e.attributeOr("nodegroup", "");
+  def.version = e.attributeOr("version", "");
+  def.isDefaultVersion = parseBool(e, "isdefaultversion");
+  def.inherit = e.attributeOr("inherit", "");
+  def.target = e.attributeOr("target", "");
+  NameSet names(diagnostics_, "this nodedef");
+  buildPorts(e, scope, def, names, nullptr);
+  return def;
+}
+
+NodeGraph Builder::buildNodeGraph(const xml::Element& e, const Scope& outer) {
+  Scope scope = outer.enter(e);
+  NodeGraph graph;
+  graph.element = e;
+  graph.location = at(e);
+  graph.name = requireName(e);
+  graph.nodedef = e.attributeOr("nodedef", "");
+  NameSet names(diagnostics_, fmt::format("node graph '{}'", graph.name));
+  std::vector<xml::Element> nodes;
+  buildPorts(e, scope, graph, names, &nodes);
+  for (const xml::Element& child : nodes) {
+    std::string_view kind = child.name();
+    if (kind == "nodegraph" || kind == "nodedef" || kind == "implementation" || kind == "typedef" || kind == "look" ||
+        kind == "xi:include" || kind == "materialx") {
+      diagnostics_.error(at(child), fmt::format("<{}> is not allowed inside a node graph", kind));
+      continue;
+    }
+    graph.nodes.push_back(buildNode(child, scope));
+    names.add(graph.nodes.back().name, at(child));
+  }
+  if (graph.outputs.empty()) {
+    diagnostics_.warning(graph.location, fmt::format("node graph '{}' has no <output>", graph.name));
+  }
+  return graph;
+}
+
+void Builder::build() {
+  xml::Element root = doc_.xml().root();
+  doc_.location = at(root);
+  if (root.name() != "materialx") {
+    diagnostics_.error(at(root),
+                       fmt::format("the root element is <{}>; a MaterialX document starts with <materialx>", root.name()));
+    return;
+  }
+  doc_.version = root.attributeOr("version", "");
+  doc_.colorspace = root.attributeOr("colorspace", "");
+  doc_.fileprefix = root.attributeOr("fileprefix", "");
+  if (doc_.version.empty()) {
+    diagnostics_.warning(at(root), "<materialx> has no version; reading it as MaterialX 1.39");
+  } else if (doc_.version != "1.38" && doc_.version != "1.39") {
+    diagnostics_.warning(valueAt(root, "version"),
+                         fmt::format("MaterialX version {} is not one mxc knows (1.38, 1.39); reading it as 1.39",
+                                     doc_.version));
+  }
+  if (root.attribute("namespace")) {
+    diagnostics_.error(valueAt(root, "namespace"),
+                       "the 'namespace' attribute is not supported: mxc would resolve names without it and could "
+                       "pick the wrong definitions");
+  }
+  Scope scope = Scope().enter(root);
+  NameSet names(diagnostics_, "the document");
+  for (const xml::Element& e : root.children()) {
+    std::string_view kind = e.name();
+    if (kind == "nodedef") {
+      doc_.nodedefs.push_back(buildNodeDef(e, scope));
+      names.add(doc_.nodedefs.back().name, at(e));
+    } else if (kind == "nodegraph") {
+      doc_.nodegraphs.push_back(buildNodeGraph(e, scope));
+      names.add(doc_.nodegraphs.back().name, at(e));
+    } else if (kind == "implementation") {
+      Implementation impl;
+      impl.location = at(e);
+      impl.name = requireName(e);
+      impl.nodedef = requireAttribute(e, "nodedef", "an implementation names the nodedef it implements");
+      impl.nodegraph = e.attributeOr("nodegraph", "");
+      impl.file = e.attributeOr("file", "");
+      impl.function = e.attributeOr("function", "");
+      impl.target = e.attributeOr("target", "");
+      doc_.implementations.push_back(impl);
+      names.add(impl.name, at(e));
+    } else if (kind == "typedef") {
+      TypeDef t{requireName(e), e.attributeOr("semantic", ""), e.attributeOr("context", ""), at(e)};
+      doc_.typedefs.push_back(t);
+      names.add(t.name, at(e));
+    } else if (kind == "geompropdef") {
+      GeomPropDef g;
+      g.location = at(e);
+      g.name = requireName(e);
+      g.type = requireAttribute(e, "type", "a geompropdef declares its type");
+      g.geomprop = requireAttribute(e, "geomprop", "a geompropdef names the geometric property");
+      g.space = e.attributeOr("space", "");
+      g.index = e.attributeOr("index", "");
+      doc_.geompropdefs.push_back(g);
+      names.add(g.name, at(e));
+    } else if (kind == "unitdef") {
+      UnitDef u;
+      u.location = at(e);
+      u.name = requireName(e);
+      u.unittype = requireAttribute(e, "unittype", "a unitdef names its unit type");
+      for (const xml::Element& unit : e.children()) {
+        if (unit.name() != "unit") {
+          unexpectedChild(unit, "unitdef");
+          continue;
+        }
+        ValueError error;
+        auto scale = tryParseValue(ValueType::Float, unit.attributeOr("scale", "1"), &error);
+        if (!scale) diagnostics_.error(valueAt(unit, "scale"), "invalid unit scale: " + error.message);
+        u.units.push_back({requireName(unit), scale ? scale->as<float>() : 1.0f});
+      }
+      doc_.unitdefs.push_back(u);
+      names.add(u.name, at(e));
+    } else if (kind == "look") {
+      Look look;
+      look.location = at(e);
+      look.name = requireName(e);
+      for (const xml::Element& child : e.children()) {
+        if (child.name() == "materialassign") {
+          look.assigns.push_back({requireName(child), child.attributeOr("material", ""), child.attributeOr("geom", ""),
+                                  child.attributeOr("collection", ""), at(child)});
+        }
+      }
+      doc_.looks.push_back(look);
+      names.add(look.name, at(e));
+    } else if (kind == "xi:include") {
+      auto href = e.attribute("href");
+      if (!href || href->empty()) {
+        diagnostics_.error(at(e), "<xi:include> has no 'href' attribute naming the file to include");
+        continue;
+      }
+      doc_.includes.push_back({*href, valueAt(e, "href"), nullptr});
+    } else if (isKeptElement(kind)) {
+      doc_.otherElements.push_back(e);
+    } else if (kind == "input" || kind == "output" || kind == "token" || kind == "parameter") {
+      diagnostics_.error(at(e), fmt::format("<{}> must be inside a node, nodedef or node graph, not directly in "
+                                            "<materialx>",
+                                            kind));
+    } else {
+      doc_.nodes.push_back(buildNode(e, scope));
+      names.add(doc_.nodes.back().name, at(e));
+    }
+  }
+  doc_.link();
+}
+
+}  // namespace
+
+std::unique_ptr<Document> buildDocument(xml::Document xml, Diagnostics& diagnostics) {
+  auto document = std::make_unique<Document>(std::move(xml));
+  Builder(*document, diagnostics).build();
+  return document;
+}
+
+}  // namespace mxc::doc

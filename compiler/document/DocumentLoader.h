@@ -1,0 +1,50 @@
+#pragma once
+/// \file
+/// Reading documents from files or memory, with xi:include.
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "compiler/common/Diagnostic.h"
+#include "compiler/document/Document.h"
+#include "compiler/xml/XmlParser.h"
+
+namespace mxc::doc {
+
+/// Loads documents and the documents they include, and owns them all. A file included twice
+/// (a diamond) is loaded once; an include cycle is an error at the <xi:include> that closes it.
+class DocumentLoader {
+ public:
+  DocumentLoader(SourceManager& sources, Diagnostics& diagnostics, xml::ParseOptions options = {});
+
+  /// Loads a file. Returns null when it cannot be read or is not well-formed XML (the reason
+  /// is in the diagnostics); otherwise the document, possibly with reported problems.
+  const Document* loadFile(const std::filesystem::path& path);
+  /// Loads a text held in memory under `name` (includes resolve relative to `name`'s folder).
+  const Document* loadText(const std::string& name, std::string text);
+
+  /// Every document loaded so far, in load order (includes before their includers).
+  const std::vector<const Document*>& documents() const { return order_; }
+
+ private:
+  const Document* load(const std::filesystem::path& path, SourceLocation includedFrom);
+  const Document* finish(const SourceFile& source);
+
+  SourceManager& sources_;
+  Diagnostics& diagnostics_;
+  xml::ParseOptions options_;
+  std::vector<std::unique_ptr<Document>> owned_;
+  std::map<std::string, const Document*> byPath_;  // files by normalised absolute path
+  std::vector<std::string> loading_;                         // include chain, for cycle detection
+  std::vector<const Document*> order_;
+};
+
+/// Reads a whole file as bytes; returns an error message instead when it cannot.
+/// Refuses files larger than `maxBytes` before reading them.
+std::variant<std::string, std::string> readFile(const std::filesystem::path& path, size_t maxBytes);
+
+}  // namespace mxc::doc

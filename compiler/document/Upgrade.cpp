@@ -1,0 +1,186 @@
+#include "compiler/document/Upgrade.h"
+
+#include <algorithm>
+#include <set>
+
+#include <fmt/format.h>
+
+namespace mxc::doc {
+
+namespace {
+
+/// The nodes of one scope (the document level or one graph) with name lookup.
+struct ScopeNodes {
+  std::vector<Node>* nodes;
+  std::vector<Output>* outputs;  // graph outputs; null at document level
+
+  Node* find(std::string_view name) {
+    for (Node& n : *nodes) {
+      if (n.name == name) return &n;
+    }
+    return nullptr;
+  }
+  std::string uniqueName(const std::string& base) {
+    std::string name = base;
+    for (int i = 2; find(name); ++i) name = base + std::to_string(i);
+    return name;
+  }
+  /// Every port in the scope that can name a node: node inputs and graph outputs.
+  template <typename F>
+  void forEachPort(F f) {
+    for (Node& n : *nodes) {
+      for (Input& in : n.inputs) f(in);
+    }
+    if (outputs) {
+      for (Output& out : *outputs) f(out);
+    }
+  }
+};
+
+// MaterialX 1.39 renamed the inputs of atan2 from in1/in2 to iny/inx (same order: y, then x).
+int renameAtan2Inputs(ScopeNodes scope) {
+  int edits = 0;
+  for (Node& n : *scope.nodes) {
+    if (n.category != "atan2") continue;
+    for (Input& in : n.inputs) {
+      if (in.name == "in1") in.name = "iny", ++edits;
+      if (in.name == "in2") in.name = "inx", ++edits;
+    }
+  }
+  return edits;
+}
+
+// MaterialX 1.39 made subsurface_bsdf's radius a color3 (it was a vector3): a vector3 value is
+// reinterpreted, a vector3 connection goes through a new convert node.
+int convertSubsurfaceRadius(Document& doc, ScopeNodes scope) {
+  int edits = 0;
+  std::vector<Node> added;
+  for (Node& n : *scope.nodes) {
+    if (n.category != "subsurface_bsdf") continue;
+    Input* radius = n.findInput("radius");
+    if (!radius || radius->type != "vector3") continue;
+    radius->type = "color3";
+    ++edits;
+    if (radius->value) {
+      radius->value = Value(ValueType::Color3, radius->value->as<glm::vec3>());
+      continue;
+    }
+    if (!radius->isConnected()) continue;
+    Node convert;
+    convert.category = "convert";
+    convert.name = doc.own(scope.uniqueName(std::string(n.name) + "_radius_color3"));
+    convert.type = "color3";
+    convert.location = radius->location;
+    Input in = *radius;
+    in.name = "in";
+    in.type = "vector3";
+    in.element = {};
+    convert.inputs.push_back(in);
+    radius->nodename = convert.name;
+    radius->nodegraph = {};
+    radius->interfacename = {};
+    radius->output = {};
+    added.push_back(std::move(convert));
+  }
+  for (Node& n : added) scope.nodes->push_back(std::move(n));
+  return edits;
+}
+
+bool isBsdfCombinator(std::string_view category) {
+  return category == "layer" || category == "mix" || category == "add" || category == "multiply";
+}
+
+bool takesThinFilm(std::string_view category) {
+  return category == "dielectric_bsdf" || category == "conductor_bsdf" || category == "generalized_schlick_bsdf";
+}
+
+// MaterialX 1.38 wrote thin film as layer(top = thin_film_bsdf, base = B). In 1.39 the film is a
+// property of the Fresnel of the dielectric, conductor and generalized-Schlick BSDFs under it
+// (thinfilm_thickness, thinfilm_ior inputs), which is also how our IR models it (the seed
+// commentary, section 4.2). The layer is replaced by B and the film moves onto B's BSDFs.
+int foldThinFilmLayers(Document& doc, ScopeNodes scope, Diagnostics& diagnostics) {
+  int edits = 0;
+  std::set<std::string_view> removed;
+  for (Node& layer : *scope.nodes) {
+    if (layer.category != "layer") continue;
+    Input* top = layer.findInput("top");
+    Input* base = layer.findInput("base");
+    if (!top || top->nodename.empty()) continue;
+    Node* film = scope.find(top->nodename);
+    if (!film || film->category != "thin_film_bsdf") continue;
+    if (!base || base->nodename.empty()) {
+      diagnostics.error(layer.location, fmt::format("cannot upgrade the 1.38 thin-film layer '{}': its base is not "
+                                                    "a node of the same graph",
+                                                    layer.name));
+      continue;
+    }
+    // The film's inputs, with the 1.38 defaults of thin_film_bsdf (550 nm, IOR 1.5).
+    Input thickness;
+    Input ior;
+    if (const Input* t = film->findInput("thickness")) thickness = *t;
+    else thickness.value = Value(ValueType::Float, 550.0f), thickness.valueString = "550";
+    if (const Input* i = film->findInput("ior")) ior = *i;
+    else ior.value = Value(ValueType::Float, 1.5f), ior.valueString = "1.5";
+    thickness.name = "thinfilm_thickness";
+    ior.name = "thinfilm_ior";
+    thickness.type = ior.type = "float";
+    thickness.element = ior.element = {};
+    if (!thickness.location.valid()) thickness.location = film->location;
+    if (!ior.location.valid()) ior.location = film->location;
+
+    // Every thin-film-capable BSDF reachable from the base through BSDF combinators.
+    std::vector<std::string_view> pending{base->nodename};
+    std::set<std::string_view> visited;
+    while (!pending.empty()) {
+      std::string_view name = pending.back();
+      pending.pop_back();
+      if (!visited.insert(name).second) continue;
+      Node* n = scope.find(name);
+      if (!n) continue;
+      if (takesThinFilm(n->category)) {
+        if (!n->findInput("thinfilm_thickness")) n->inputs.push_back(thickness);
+        if (!n->findInput("thinfilm_ior")) n->inputs.push_back(ior);
+      } else if (isBsdfCombinator(n->category)) {
+        for (const Input& in : n->inputs) {
+          if ((in.type == "BSDF") && !in.nodename.empty()) pending.push_back(in.nodename);
+        }
+      }
+    }
+    const std::string_view baseName = base->nodename;
+    const std::string_view baseOutput = base->output;
+    scope.forEachPort([&](Port& port) {
+      if (port.nodename == layer.name) {
+        port.nodename = baseName;
+        port.output = baseOutput;
+      }
+    });
+    removed.insert(layer.name);
+    removed.insert(film->name);
+    doc.upgradeNotes.push_back(fmt::format("thin-film layer '{}' folded into the BSDFs under '{}'", layer.name, baseName));
+    ++edits;
+  }
+  if (!removed.empty()) {
+    std::erase_if(*scope.nodes, [&](const Node& n) { return removed.count(n.name) > 0; });
+  }
+  return edits;
+}
+
+}  // namespace
+
+void upgradeTo139(Document& doc, Diagnostics& diagnostics) {
+  if (doc.version != "1.38") return;
+  std::vector<ScopeNodes> scopes{{&doc.nodes, nullptr}};
+  for (NodeGraph& g : doc.nodegraphs) scopes.push_back({&g.nodes, &g.outputs});
+  int atan2 = 0;
+  int radius = 0;
+  for (ScopeNodes scope : scopes) {
+    atan2 += renameAtan2Inputs(scope);
+    radius += convertSubsurfaceRadius(doc, scope);
+    foldThinFilmLayers(doc, scope, diagnostics);
+  }
+  if (atan2) doc.upgradeNotes.push_back(fmt::format("{} atan2 inputs renamed to iny/inx", atan2));
+  if (radius) doc.upgradeNotes.push_back(fmt::format("{} subsurface_bsdf radius inputs made color3", radius));
+  doc.link();
+}
+
+}  // namespace mxc::doc

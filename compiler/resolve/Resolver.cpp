@@ -1,0 +1,528 @@
+#include "compiler/resolve/Resolver.h"
+
+#include <algorithm>
+#include <unordered_map>
+
+#include <fmt/format.h>
+
+#include "compiler/resolve/Channels.h"
+#include "compiler/resolve/NodeDefMatcher.h"
+
+namespace mxc::resolve {
+
+namespace {
+
+/// A scope being resolved: its result and its nodes by name.
+struct Scope {
+  ResolvedGraph* resolved = nullptr;
+  const doc::NodeGraph* graph = nullptr;  // null at document level
+  std::unordered_map<std::string_view, ResolvedNode*> nodes;
+
+  std::string describe() const {
+    return graph ? fmt::format("node graph '{}'", graph->name) : std::string("the document");
+  }
+};
+
+/// A dependency edge found while ordering: the node depended on and the input that makes it.
+struct Dependency {
+  ResolvedNode* node;
+  const ResolvedInput* input;
+};
+
+class Resolver {
+ public:
+  Resolver(const lib::NodeLibrary& library, Diagnostics& diagnostics) : library_(library), diagnostics_(diagnostics) {}
+
+  /// Resolves the given document-level nodes and graphs as one document.
+  void resolve(ResolvedGraph& top, const std::vector<const doc::Node*>& topNodes,
+               std::vector<std::unique_ptr<ResolvedGraph>>& graphs, const std::vector<const doc::NodeGraph*>& docGraphs);
+
+ private:
+  void createNodes(Scope& scope, const std::vector<const doc::Node*>& nodes);
+  void resolveNode(Scope& scope, ResolvedNode& node);
+  void resolveInterface(Scope& scope);
+  void resolveOutputs(Scope& scope);
+  /// Resolves what a port is set to (connection, interface, value), checked against `type`.
+  void resolvePort(const Scope& scope, const doc::Port& port, ResolvedInput& result);
+  void checkConnectionType(const doc::Port& port, ResolvedInput& result);
+  void checkEnum(const ResolvedInput& input);
+  void order(std::vector<Scope*>& scopes);
+  std::vector<Dependency> dependencies(ResolvedNode& node);
+  void followInto(const ResolvedInput& input, const ResolvedInput& via, std::vector<Dependency>& out, int depth);
+
+  const lib::NodeLibrary& library_;
+  Diagnostics& diagnostics_;
+  Scope top_;
+  std::vector<std::unique_ptr<Scope>> graphScopes_;
+  std::unordered_map<std::string_view, Scope*> graphsByName_;
+};
+
+void Resolver::createNodes(Scope& scope, const std::vector<const doc::Node*>& nodes) {
+  for (const doc::Node* node : nodes) {
+    if (node->name.empty()) continue;  // reported by the builder
+    auto resolved = std::make_unique<ResolvedNode>();
+    resolved->node = node;
+    resolved->scope = scope.resolved;
+    resolved->nodedef = matchNodeDef(*node, library_, diagnostics_);
+    if (resolved->nodedef) resolved->signature = &library_.signature(*resolved->nodedef);
+    scope.nodes.emplace(node->name, resolved.get());
+    scope.resolved->nodes.push_back(std::move(resolved));
+  }
+}
+
+void Resolver::checkConnectionType(const doc::Port& port, ResolvedInput& result) {
+  const std::string_view from = result.upstream.type;
+  if (from.empty()) return;  // the upstream node has no nodedef; its error is already reported
+  if (!port.channels.empty()) {
+    if (auto problem = checkChannels(port.channels, from, result.type)) {
+      diagnostics_.error(port.attributeLocation("channels"),
+                         fmt::format("'{}' cannot take channels \"{}\" of a {}: {}", port.name, port.channels, from,
+                                     *problem));
+    }
+    return;
+  }
+  if (from != result.type) {
+    std::string what = result.upstream.node ? fmt::format("node '{}'", result.upstream.node->name())
+                                            : fmt::format("node graph '{}'", result.upstream.graph->name());
+    diagnostics_.error(port.attributeLocation(result.upstream.node ? "nodename" : "nodegraph"),
+                       fmt::format("type mismatch: '{}' is {}, but output '{}' of {} is {}", port.name, result.type,
+                                   result.upstream.output, what, from));
+  }
+}
+
+void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedInput& result) {
+  result.instance = &port;
+  result.location = port.location;
+  result.channels = port.channels;
+  if (!port.channels.empty() && port.element.valid() && port.element.document().root().attributeOr("version", "") != "1.38") {
+    diagnostics_.error(port.attributeLocation("channels"),
+                       "the 'channels' attribute is MaterialX 1.38 syntax, removed in 1.39: use <extract>, "
+                       "<combine2/3/4> or <convert> nodes");
+  }
+  if (!port.nodename.empty()) {
+    auto it = scope.nodes.find(port.nodename);
+    if (it == scope.nodes.end()) {
+      diagnostics_.error(port.attributeLocation("nodename"),
+                         fmt::format("'{}' connects to node '{}', which does not exist in {}", port.name, port.nodename,
+                                     scope.describe()));
+      return;
+    }
+    ResolvedNode* up = it->second;
+    result.source = InputSource::Connection;
+    result.upstream.node = up;
+    if (!up->signature) {
+      result.upstream.output = port.output;
+      return;
+    }
+    const doc::Output* out = nullptr;
+    if (!port.output.empty()) {
+      out = up->signature->findOutput(port.output);
+      if (!out) {
+        std::vector<std::string> names;
+        for (const doc::Output* o : up->signature->outputs) names.emplace_back(o->name);
+        diagnostics_.error(port.attributeLocation("output"),
+                           fmt::format("node '{}' has no output '{}' (its outputs: {})", up->name(), port.output,
+                                       fmt::join(names, ", ")));
+        return;
+      }
+    } else if (up->signature->outputs.size() == 1) {
+      out = up->signature->outputs[0];
+    } else {
+      std::vector<std::string> names;
+      for (const doc::Output* o : up->signature->outputs) names.emplace_back(o->name);
+      diagnostics_.error(port.attributeLocation("nodename"),
+                         fmt::format("node '{}' has several outputs ({}); name one with output=\"...\"", up->name(),
+                                     fmt::join(names, ", ")));
+      return;
+    }
+    result.upstream.output = out->name;
+    result.upstream.type = out->type;
+    checkConnectionType(port, result);
+    return;
+  }
+  if (!port.nodegraph.empty()) {
+    if (scope.graph) {
+      diagnostics_.error(port.attributeLocation("nodegraph"),
+                         fmt::format("'{}' connects to node graph '{}' from inside {}: only document-level elements "
+                                     "can connect to a node graph",
+                                     port.name, port.nodegraph, scope.describe()));
+      return;
+    }
+    auto it = graphsByName_.find(port.nodegraph);
+    if (it == graphsByName_.end()) {
+      diagnostics_.error(port.attributeLocation("nodegraph"),
+                         fmt::format("'{}' connects to node graph '{}', which does not exist", port.name, port.nodegraph));
+      return;
+    }
+    const ResolvedGraph& graph = *it->second->resolved;
+    const doc::NodeGraph& element = *it->second->graph;
+    const doc::Output* out = nullptr;
+    if (!port.output.empty()) {
+      out = element.findOutput(port.output);
+    } else if (element.outputs.size() == 1) {
+      out = &element.outputs[0];
+    }
+    if (!out) {
+      std::vector<std::string> names;
+      for (const doc::Output& o : element.outputs) names.emplace_back(o.name);
+      diagnostics_.error(port.attributeLocation(port.output.empty() ? "nodegraph" : "output"),
+                         port.output.empty()
+                             ? fmt::format("node graph '{}' has several outputs ({}); name one with output=\"...\"",
+                                           element.name, fmt::join(names, ", "))
+                             : fmt::format("node graph '{}' has no output '{}' (its outputs: {})", element.name,
+                                           port.output, fmt::join(names, ", ")));
+      return;
+    }
+    result.source = InputSource::Connection;
+    result.upstream.graph = &graph;
+    result.upstream.output = out->name;
+    result.upstream.type = out->type;
+    checkConnectionType(port, result);
+    return;
+  }
+  if (!port.interfacename.empty()) {
+    if (!scope.graph) {
+      diagnostics_.error(port.attributeLocation("interfacename"),
+                         fmt::format("'{}' uses interfacename=\"{}\" outside a node graph", port.name,
+                                     port.interfacename));
+      return;
+    }
+    const ResolvedInput* iface = scope.resolved->findInterface(port.interfacename);
+    if (!iface) {
+      std::vector<std::string> names;
+      for (const ResolvedInput& i : scope.resolved->interface) names.emplace_back(i.name);
+      diagnostics_.error(port.attributeLocation("interfacename"),
+                         fmt::format("'{}' refers to interface input '{}', which {} does not have (its interface: {})",
+                                     port.name, port.interfacename, scope.describe(),
+                                     names.empty() ? std::string("empty") : fmt::format("{}", fmt::join(names, ", "))));
+      return;
+    }
+    result.source = InputSource::Interface;
+    result.interfaceName = iface->name;
+    if (iface->type != result.type) {
+      diagnostics_.error(port.attributeLocation("interfacename"),
+                         fmt::format("type mismatch: '{}' is {}, but interface input '{}' of {} is {}", port.name,
+                                     result.type, iface->name, scope.describe(), iface->type));
+    }
+    return;
+  }
+  // An empty value of a shader or closure type (value="") leaves the input unset.
+  if (port.value && port.value->type() != doc::ValueType::None) {
+    result.source = InputSource::Value;
+    result.value = port.value;
+    // Filenames are relative to the enclosing fileprefix (MaterialX 1.39 "Filename Substitutions").
+    if (port.value->type() == doc::ValueType::Filename && !port.fileprefix.empty() &&
+        !port.value->as<std::string>().empty()) {
+      result.value = doc::Value(doc::ValueType::Filename, std::string(port.fileprefix) + port.value->as<std::string>());
+    }
+  }
+}
+
+void Resolver::checkEnum(const ResolvedInput& input) {
+  if (!input.declaration || input.source != InputSource::Value || !input.value) return;
+  if (input.declaration->enumNames.empty() || !input.declaration->enumValues.empty()) return;
+  if (input.value->type() != doc::ValueType::String) return;
+  const std::string& value = input.value->as<std::string>();
+  std::string_view list = input.declaration->enumNames;
+  size_t start = 0;
+  while (start <= list.size()) {
+    size_t comma = list.find(',', start);
+    std::string_view item = list.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+    while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
+    while (!item.empty() && item.back() == ' ') item.remove_suffix(1);
+    if (item == value) return;
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  diagnostics_.error(input.instance ? input.instance->attributeLocation("value") : input.location,
+                     fmt::format("'{}' is \"{}\", which is not one of its allowed values: {}", input.name, value, list));
+}
+
+void Resolver::resolveNode(Scope& scope, ResolvedNode& node) {
+  if (!node.signature) return;
+  for (const doc::Input* declaration : node.signature->inputs) {
+    ResolvedInput input;
+    input.name = declaration->name;
+    input.type = declaration->type;
+    input.declaration = declaration;
+    input.location = declaration->location;
+    if (const doc::Input* instance = node.node->findInput(declaration->name)) resolvePort(scope, *instance, input);
+    if (input.source == InputSource::Unset) {
+      if (declaration->value && declaration->value->type() != doc::ValueType::None) {
+        input.source = InputSource::Default;
+        input.value = declaration->value;
+      } else if (!declaration->defaultgeomprop.empty()) {
+        input.source = InputSource::GeomProp;
+        input.geomprop = declaration->defaultgeomprop;
+      }
+    }
+    checkEnum(input);
+    node.inputs.push_back(std::move(input));
+  }
+}
+
+void Resolver::resolveInterface(Scope& scope) {
+  ResolvedGraph& graph = *scope.resolved;
+  if (graph.implements) {
+    for (const doc::Input* declaration : library_.signature(*graph.implements).inputs) {
+      ResolvedInput input;
+      input.name = declaration->name;
+      input.type = declaration->type;
+      input.declaration = declaration;
+      input.location = declaration->location;
+      if (declaration->value && declaration->value->type() != doc::ValueType::None) {
+        input.source = InputSource::Default;
+        input.value = declaration->value;
+      } else if (!declaration->defaultgeomprop.empty()) {
+        input.source = InputSource::GeomProp;
+        input.geomprop = declaration->defaultgeomprop;
+      }
+      graph.interface.push_back(std::move(input));
+    }
+    return;
+  }
+  for (const doc::Input& declared : scope.graph->inputs) {
+    ResolvedInput input;
+    input.name = declared.name;
+    input.type = declared.type;
+    input.location = declared.location;
+    if (!library_.isKnownType(declared.type)) {
+      diagnostics_.error(declared.attributeLocation("type"),
+                         fmt::format("interface input '{}' has unknown type '{}'", declared.name, declared.type));
+    }
+    // A document-level graph's interface inputs take values, or connections to document-level nodes.
+    resolvePort(top_, declared, input);
+    if (input.source == InputSource::Unset && !declared.defaultgeomprop.empty()) {
+      input.source = InputSource::GeomProp;
+      input.geomprop = declared.defaultgeomprop;
+    }
+    graph.interface.push_back(std::move(input));
+  }
+}
+
+void Resolver::resolveOutputs(Scope& scope) {
+  ResolvedGraph& graph = *scope.resolved;
+  for (const doc::Output& out : scope.graph->outputs) {
+    ResolvedInput output;
+    output.name = out.name;
+    output.type = out.type;
+    output.location = out.location;
+    resolvePort(scope, out, output);
+    if (output.source == InputSource::Unset && !out.isConnected()) {
+      diagnostics_.warning(out.location, fmt::format("output '{}' of node graph '{}' is not connected", out.name,
+                                                     scope.graph->name));
+    }
+    graph.outputs.push_back(std::move(output));
+  }
+  if (graph.implements) {
+    for (const doc::Output* declared : library_.signature(*graph.implements).outputs) {
+      const ResolvedInput* out = graph.findOutput(declared->name);
+      if (!out) {
+        diagnostics_.error(scope.graph->location,
+                           fmt::format("node graph '{}' implements nodedef '{}' but has no output '{}'",
+                                       scope.graph->name, graph.implements->name, declared->name));
+      } else if (out->type != declared->type) {
+        diagnostics_.error(out->location, fmt::format("output '{}' is {}, but nodedef '{}' declares it {}", out->name,
+                                                      out->type, graph.implements->name, declared->type));
+      }
+    }
+  }
+}
+
+void Resolver::followInto(const ResolvedInput& input, const ResolvedInput& via, std::vector<Dependency>& out, int depth) {
+  // Graph outputs and interface inputs are pass-throughs; follow them to the nodes behind.
+  // `depth` bounds the walk so a malformed chain of graphs cannot loop.
+  if (depth > 64) return;
+  if (input.source == InputSource::Connection) {
+    if (input.upstream.node) {
+      out.push_back({const_cast<ResolvedNode*>(input.upstream.node), &via});
+    } else if (input.upstream.graph) {
+      if (const ResolvedInput* o = input.upstream.graph->findOutput(input.upstream.output)) followInto(*o, via, out, depth + 1);
+    }
+  }
+}
+
+std::vector<Dependency> Resolver::dependencies(ResolvedNode& node) {
+  std::vector<Dependency> out;
+  for (const ResolvedInput& input : node.inputs) {
+    if (input.source == InputSource::Interface) {
+      if (const ResolvedInput* iface = node.scope->findInterface(input.interfaceName)) followInto(*iface, input, out, 0);
+    } else {
+      followInto(input, input, out, 0);
+    }
+  }
+  return out;
+}
+
+void Resolver::order(std::vector<Scope*>& scopes) {
+  // Iterative depth-first search (a long chain of nodes must not overflow the call stack):
+  // post-order gives producers before consumers; an edge back to a node on the stack is a cycle.
+  enum class Mark : uint8_t { None, Active, Done };
+  std::unordered_map<const ResolvedNode*, Mark> marks;
+  std::vector<ResolvedNode*> sorted;
+  struct Frame {
+    ResolvedNode* node;
+    std::vector<Dependency> deps;
+    size_t next = 0;
+  };
+  for (Scope* scope : scopes) {
+    for (auto& root : scope->resolved->nodes) {
+      if (marks[root.get()] != Mark::None) continue;
+      std::vector<Frame> stack;
+      stack.push_back({root.get(), dependencies(*root)});
+      marks[root.get()] = Mark::Active;
+      while (!stack.empty()) {
+        Frame& frame = stack.back();
+        if (frame.next < frame.deps.size()) {
+          Dependency dep = frame.deps[frame.next++];
+          Mark& mark = marks[dep.node];
+          if (mark == Mark::None) {
+            mark = Mark::Active;
+            std::vector<Dependency> deps = dependencies(*dep.node);
+            stack.push_back({dep.node, std::move(deps)});
+          } else if (mark == Mark::Active) {
+            std::string path;
+            bool on = false;
+            for (const Frame& f : stack) {
+              if (f.node == dep.node) on = true;
+              if (on) path += std::string(f.node->name()) + " -> ";
+            }
+            path += dep.node->name();
+            diagnostics_.error(dep.input->location,
+                               fmt::format("cycle: {} (through input '{}' of node '{}')", path, dep.input->name,
+                                           frame.node->name()));
+          }
+          continue;
+        }
+        marks[frame.node] = Mark::Done;
+        sorted.push_back(frame.node);
+        stack.pop_back();
+      }
+    }
+  }
+  std::unordered_map<const ResolvedNode*, size_t> position;
+  for (size_t i = 0; i < sorted.size(); ++i) position[sorted[i]] = i;
+  for (Scope* scope : scopes) {
+    auto& nodes = scope->resolved->nodes;
+    std::stable_sort(nodes.begin(), nodes.end(), [&](const auto& a, const auto& b) {
+      return position[a.get()] < position[b.get()];
+    });
+  }
+}
+
+void Resolver::resolve(ResolvedGraph& top, const std::vector<const doc::Node*>& topNodes,
+                       std::vector<std::unique_ptr<ResolvedGraph>>& graphs,
+                       const std::vector<const doc::NodeGraph*>& docGraphs) {
+  top_.resolved = &top;
+  for (const doc::NodeGraph* g : docGraphs) {
+    if (g->name.empty()) continue;
+    auto resolved = std::make_unique<ResolvedGraph>();
+    resolved->graph = g;
+    resolved->implements = library_.implementedNodeDef(*g);
+    if (!g->nodedef.empty() || resolved->implements) {
+      if (!resolved->implements) {
+        diagnostics_.error(g->element.valid() ? g->element.location() : g->location,
+                           fmt::format("node graph '{}' implements nodedef '{}', which is not defined", g->name,
+                                       g->nodedef));
+      } else if (!g->inputs.empty()) {
+        diagnostics_.error(g->inputs.front().location,
+                           fmt::format("node graph '{}' implements nodedef '{}' and so takes its interface from it; "
+                                       "it cannot declare inputs of its own",
+                                       g->name, g->nodedef));
+      }
+    }
+    auto scope = std::make_unique<Scope>();
+    scope->resolved = resolved.get();
+    scope->graph = g;
+    graphsByName_.emplace(g->name, scope.get());
+    graphScopes_.push_back(std::move(scope));
+    graphs.push_back(std::move(resolved));
+  }
+  createNodes(top_, topNodes);
+  for (auto& scope : graphScopes_) {
+    std::vector<const doc::Node*> nodes;
+    for (const doc::Node& n : scope->graph->nodes) nodes.push_back(&n);
+    createNodes(*scope, nodes);
+  }
+  for (auto& scope : graphScopes_) resolveInterface(*scope);
+  for (auto& node : top.nodes) resolveNode(top_, *node);
+  for (auto& scope : graphScopes_) {
+    for (auto& node : scope->resolved->nodes) resolveNode(*scope, *node);
+    resolveOutputs(*scope);
+  }
+  std::vector<Scope*> scopes{&top_};
+  for (auto& scope : graphScopes_) scopes.push_back(scope.get());
+  order(scopes);
+}
+
+/// The document and every document it includes, includes first, each once.
+void collectDocuments(const doc::Document& document, std::vector<const doc::Document*>& out) {
+  if (std::find(out.begin(), out.end(), &document) != out.end()) return;
+  for (const doc::Include& include : document.includes) {
+    if (include.document) collectDocuments(*include.document, out);
+  }
+  out.push_back(&document);
+}
+
+}  // namespace
+
+ResolvedDocument resolveDocument(const doc::Document& document, const lib::NodeLibrary& library,
+                                 Diagnostics& diagnostics) {
+  ResolvedDocument result;
+  result.document = &document;
+  collectDocuments(document, result.documents);
+  result.definitions = std::make_unique<lib::NodeLibrary>(&library);
+  for (const doc::Document* d : result.documents) result.definitions->addDocument(*d, diagnostics);
+  result.definitions->finalize(diagnostics);
+
+  // Names at document level must be unique across the document and its includes.
+  std::unordered_map<std::string_view, SourceLocation> names;
+  std::vector<const doc::Node*> topNodes;
+  std::vector<const doc::NodeGraph*> graphs;
+  auto claim = [&](std::string_view name, SourceLocation location) {
+    auto [it, inserted] = names.emplace(name, location);
+    if (!inserted && it->second.file != location.file) {
+      diagnostics.error(location, fmt::format("'{}' is also defined at {} (an included document uses the same name)",
+                                              name, it->second.str()));
+    }
+  };
+  for (const doc::Document* d : result.documents) {
+    for (const doc::Node& n : d->nodes) {
+      claim(n.name, n.location);
+      topNodes.push_back(&n);
+    }
+    for (const doc::NodeGraph& g : d->nodegraphs) {
+      claim(g.name, g.location);
+      graphs.push_back(&g);
+    }
+  }
+  Resolver(*result.definitions, diagnostics).resolve(result.top, topNodes, result.graphs, graphs);
+
+  for (const auto& node : result.top.nodes) {
+    if (!node->signature || node->signature->outputType() != "material") continue;
+    ResolvedMaterial material;
+    material.node = node.get();
+    for (const ResolvedInput& input : node->inputs) {
+      if (input.source != InputSource::Connection) continue;
+      const ResolvedNode* shader = input.upstream.node;
+      if (!shader && input.upstream.graph) {
+        // A shader produced inside a graph: the node feeding that graph output.
+        const ResolvedInput* out = input.upstream.graph->findOutput(input.upstream.output);
+        if (out && out->source == InputSource::Connection) shader = out->upstream.node;
+      }
+      if (shader) material.shaders.push_back({input.name, shader});
+    }
+    result.materials.push_back(std::move(material));
+  }
+  return result;
+}
+
+std::unique_ptr<ResolvedGraph> resolveImplementation(const doc::NodeGraph& graph, const lib::NodeLibrary& library,
+                                                     Diagnostics& diagnostics) {
+  ResolvedGraph top;
+  std::vector<std::unique_ptr<ResolvedGraph>> graphs;
+  Resolver(library, diagnostics).resolve(top, {}, graphs, {&graph});
+  return graphs.empty() ? nullptr : std::move(graphs.front());
+}
+
+}  // namespace mxc::resolve
