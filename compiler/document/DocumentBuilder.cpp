@@ -50,7 +50,7 @@ struct Scope {
 /// Tracks names of sibling elements so a duplicate is reported with the first definition.
 class NameSet {
  public:
-  NameSet(Diagnostics& diagnostics, std::string_view scope) : diagnostics_(diagnostics), scope_(scope) {}
+  NameSet(Diagnostics& diagnostics, std::string scope) : diagnostics_(diagnostics), scope_(std::move(scope)) {}
   void add(std::string_view name, SourceLocation location) {
     if (name.empty()) return;
     auto [it, inserted] = seen_.emplace(name, location);
@@ -63,7 +63,7 @@ class NameSet {
 
  private:
   Diagnostics& diagnostics_;
-  std::string_view scope_;
+  std::string scope_;
   std::unordered_map<std::string_view, SourceLocation> seen_;
 };
 

@@ -1,0 +1,191 @@
+// The mxc command line: inspect's outputs, exit codes, and atomic output files.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "support/TestSupport.h"
+
+namespace mxc::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandRun {
+  int exitCode = -1;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+/// Runs mxc with arguments (shell-quoted by the caller), capturing both streams.
+CommandRun mxc(const std::string& arguments) {
+  const fs::path errFile = fs::temp_directory_path() / ("mxc_cli_err_" + std::to_string(::getpid()));
+  std::string command = std::string(MXC_BINARY) + " " + arguments + " 2>" + errFile.string();
+  CommandRun run;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buffer;
+  size_t n;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.out.append(buffer.data(), n);
+  int status = ::pclose(pipe);
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream err(errFile);
+  run.err.assign(std::istreambuf_iterator<char>(err), {});
+  fs::remove(errFile);
+  return run;
+}
+
+std::string corpus(const std::string& rel) { return (sharedDir() / "corpus" / rel).string(); }
+
+fs::path writeTemp(const std::string& name, const std::string& text) {
+  fs::path path = fs::temp_directory_path() / ("mxc_cli_" + std::to_string(::getpid()) + "_" + name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(InspectCommand, TextReportShowsMaterialsInputsAndSources) {
+  CommandRun r = mxc("inspect " + corpus("materialx/examples/OpenPbr/open_pbr_carpaint.mtlx"));
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_NE(r.out.find("material Car_Paint <surfacematerial>"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("<open_pbr_surface> ND_open_pbr_surface_surfaceshader v1.1.1"), std::string::npos);
+  // A set input shows its value and line; a default input shows where the nodedef is.
+  EXPECT_NE(r.out.find("coat_weight"), std::string::npos);
+  EXPECT_NE(r.out.find("(default)  nodedef nodedefs/bxdf/open_pbr_surface.mtlx:"), std::string::npos);
+  EXPECT_NE(r.out.find("0 errors, 0 warnings"), std::string::npos);
+}
+
+TEST(InspectCommand, JsonFollowsTheSchema) {
+  CommandRun r = mxc("inspect --json " + corpus("materialx/examples/StandardSurface/standard_surface_brick_procedural.mtlx"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["schema"], "mxc-inspect-1");
+  EXPECT_EQ(j["document"]["version"], "1.39");
+  ASSERT_EQ(j["materials"].size(), 1u);
+  EXPECT_EQ(j["materials"][0]["name"], "M_BrickPattern");
+  EXPECT_EQ(j["materials"][0]["shaders"][0]["node"], "N_StandardSurface");
+  ASSERT_EQ(j["graphs"].size(), 1u);
+  EXPECT_EQ(j["graphs"][0]["name"], "NG_BrickPattern");
+  bool found = false;
+  for (const auto& node : j["nodes"]) {
+    if (node["id"] != "N_StandardSurface") continue;
+    found = true;
+    EXPECT_EQ(node["nodedef"], "ND_standard_surface_surfaceshader");
+    for (const auto& input : node["inputs"]) {
+      if (input["name"] == "base_color") {
+        EXPECT_EQ(input["source"], "connection");
+        EXPECT_EQ(input["from"]["graph"], "NG_BrickPattern");
+        EXPECT_EQ(input["from"]["output"], "base_color_output");
+        EXPECT_EQ(input["location"]["line"], 125);
+      }
+      if (input["name"] == "base") {
+        EXPECT_EQ(input["source"], "default");
+        EXPECT_EQ(input["value"], 1.0);
+      }
+    }
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(InspectCommand, DotIsAGraphvizDigraph) {
+  CommandRun r = mxc("inspect --dot " + corpus("materialx/examples/StandardSurface/standard_surface_brick_procedural.mtlx"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("digraph ", 0), 0u);
+  EXPECT_NE(r.out.find("subgraph \"cluster_NG_BrickPattern\""), std::string::npos);
+  EXPECT_NE(r.out.find("\"NG_BrickPattern/node_clamp_0\" -> \"NG_BrickPattern/output:base_color_output\""), std::string::npos);
+  EXPECT_EQ(r.out.back(), '\n');
+}
+
+TEST(InspectCommand, InvalidDocumentExitsOneWithPositionAndNoReport) {
+  fs::path bad = writeTemp("bad.mtlx", mtlx("  <add name=\"a\" type=\"float\">\n    <input name=\"in1\" type=\"float\" nodename=\"zz\"/>\n  </add>\n"));
+  CommandRun r = mxc("inspect " + bad.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_NE(r.err.find(bad.string() + ":4:46: error: 'in1' connects to node 'zz'"), std::string::npos) << r.err;
+  // The source line and a caret under the column follow the message.
+  EXPECT_NE(r.err.find(" 4 |     <input name=\"in1\" type=\"float\" nodename=\"zz\"/>\n   | " + std::string(45, ' ') + "^"),
+            std::string::npos)
+      << r.err;
+  CommandRun partial = mxc("inspect --partial " + bad.string());
+  EXPECT_EQ(partial.exitCode, 1);
+  EXPECT_NE(partial.out.find("1 error, 0 warnings"), std::string::npos);
+  fs::remove(bad);
+}
+
+TEST(InspectCommand, MalformedXmlExitsOne) {
+  fs::path bad = writeTemp("broken.mtlx", "<materialx version=\"1.39\">\n  <nodegraph name=\"x\">\n</materialx>\n");
+  CommandRun r = mxc("inspect " + bad.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find(":3:1: error: mismatched end tag </materialx>: the open element is <nodegraph>"), std::string::npos) << r.err;
+  fs::remove(bad);
+}
+
+TEST(InspectCommand, UsageErrorsExitTwo) {
+  EXPECT_EQ(mxc("").exitCode, 2);
+  EXPECT_EQ(mxc("inspect").exitCode, 2);
+  EXPECT_EQ(mxc("inspect --no-such-flag x.mtlx").exitCode, 2);
+  EXPECT_EQ(mxc("frobnicate").exitCode, 2);
+  EXPECT_EQ(mxc("inspect --json --dot x.mtlx").exitCode, 2);
+  CommandRun help = mxc("--help");
+  EXPECT_EQ(help.exitCode, 0);
+  EXPECT_NE(help.out.find("inspect"), std::string::npos);
+  EXPECT_NE(help.out.find("Exit codes"), std::string::npos);
+  EXPECT_EQ(mxc("inspect --help").exitCode, 0);
+}
+
+TEST(InspectCommand, MissingFileExitsOne) {
+  CommandRun r = mxc("inspect /no/such/document.mtlx");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("cannot read '/no/such/document.mtlx'"), std::string::npos) << r.err;
+}
+
+TEST(InspectCommand, OutputFileIsWrittenWholeOrNotAtAll) {
+  fs::path out = fs::temp_directory_path() / ("mxc_cli_report_" + std::to_string(::getpid()) + ".json");
+  std::ofstream(out) << "previous";
+  // A failing run leaves the previous file as it was.
+  fs::path bad = writeTemp("bad2.mtlx", mtlx("  <nosuchnode name=\"a\" type=\"float\"/>\n"));
+  EXPECT_EQ(mxc("inspect --json -o " + out.string() + " " + bad.string()).exitCode, 1);
+  std::ifstream before(out);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(before), {}), "previous");
+  // A good run replaces it with a complete report, and no temporary file is left behind.
+  EXPECT_EQ(mxc("inspect --json -o " + out.string() + " " + corpus("openpbr-presets/open_pbr_glass.mtlx")).exitCode, 0);
+  std::ifstream after(out);
+  nlohmann::json j = nlohmann::json::parse(std::string(std::istreambuf_iterator<char>(after), {}));
+  EXPECT_EQ(j["schema"], "mxc-inspect-1");
+  for (const auto& entry : fs::directory_iterator(out.parent_path())) {
+    EXPECT_EQ(entry.path().filename().string().find(".mxc_cli_report_"), std::string::npos) << entry.path();
+  }
+  // An output folder that does not exist is an output failure (3), not a document error.
+  EXPECT_EQ(mxc("inspect -o /no/such/folder/r.txt " + corpus("openpbr-presets/open_pbr_glass.mtlx")).exitCode, 3);
+  fs::remove(out);
+  fs::remove(bad);
+}
+
+TEST(InspectCommand, LibraryFolderOptions) {
+  const std::string mx = (sharedDir() / "reference/materialx/libraries").string();
+  CommandRun r = mxc("inspect --no-builtin --library " + mx + " " + corpus("materialx/examples/OpenPbr/open_pbr_glass.mtlx"));
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("libraries  " + mx + " ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("materialx/libraries/bxdf/open_pbr_surface.mtlx"), std::string::npos);
+  EXPECT_EQ(mxc("inspect --no-builtin " + corpus("materialx/examples/OpenPbr/open_pbr_glass.mtlx")).exitCode, 1);
+  CommandRun missing = mxc("inspect --library /no/such/lib " + corpus("materialx/examples/OpenPbr/open_pbr_glass.mtlx"));
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("cannot read the library '/no/such/lib'"), std::string::npos);
+}
+
+TEST(InspectCommand, IncludesAndLooksAreReported) {
+  CommandRun r = mxc("inspect " + corpus("materialx/examples/StandardSurface/standard_surface_look_wood_tiled.mtlx"));
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("includes   standard_surface_wood_tiled.mtlx"), std::string::npos);
+  EXPECT_NE(r.out.find("look Wood_Look"), std::string::npos);
+  EXPECT_NE(r.out.find("materialassign preview: material Tiled_Wood -> geom \"Preview_Mesh\""), std::string::npos);
+  EXPECT_NE(r.out.find("material Tiled_Wood"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mxc::test

@@ -1,0 +1,153 @@
+// Graph resolution on valid documents: nodedef choice, input sources, interfaces, graph
+// outputs, materials, dependency order.
+
+#include "compiler/resolve/Resolver.h"
+
+#include <gtest/gtest.h>
+
+#include "support/TestSupport.h"
+
+namespace mxc::test {
+namespace {
+
+using resolve::InputSource;
+
+TEST(Resolver, PicksTheNodedefByOutputAndInputTypes) {
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(mtlx(
+      "  <add name=\"plain\" type=\"color3\">\n    <input name=\"in2\" type=\"color3\" value=\"1,1,1\"/>\n  </add>\n"
+      "  <add name=\"scalar\" type=\"color3\">\n    <input name=\"in2\" type=\"float\" value=\"1\"/>\n  </add>\n"
+      "  <add name=\"bare\" type=\"vector2\"/>\n"));
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  EXPECT_EQ(r.top.findNode("plain")->nodedef->name, "ND_add_color3");
+  EXPECT_EQ(r.top.findNode("scalar")->nodedef->name, "ND_add_color3FA");
+  // Unset inputs cannot tell ND_add_vector2 from ND_add_vector2FA: the first declared wins.
+  EXPECT_EQ(r.top.findNode("bare")->nodedef->name, "ND_add_vector2");
+}
+
+TEST(Resolver, VersionsDefaultAndExplicit) {
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(mtlx(
+      "  <standard_surface name=\"latest\" type=\"surfaceshader\"/>\n"
+      "  <standard_surface name=\"old\" type=\"surfaceshader\" version=\"1.0.0\"/>\n"));
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  EXPECT_EQ(r.top.findNode("latest")->nodedef->name, "ND_standard_surface_surfaceshader");
+  EXPECT_EQ(r.top.findNode("old")->nodedef->name, "ND_standard_surface_surfaceshader_100");
+}
+
+TEST(Resolver, InputSources) {
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(mtlx(
+      "  <constant name=\"c\" type=\"color3\">\n    <input name=\"value\" type=\"color3\" value=\"0.1, 0.2, 0.3\"/>\n"
+      "  </constant>\n"
+      "  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n"
+      "    <input name=\"base_color\" type=\"color3\" nodename=\"c\"/>\n"
+      "    <input name=\"specular_roughness\" type=\"float\" value=\"0.25\"/>\n"
+      "  </open_pbr_surface>\n"
+      "  <surfacematerial name=\"m\" type=\"material\">\n"
+      "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"s\"/>\n  </surfacematerial>\n"));
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  const resolve::ResolvedNode* s = r.top.findNode("s");
+  ASSERT_NE(s, nullptr);
+  // Every nodedef input is present, in nodedef order.
+  EXPECT_EQ(s->inputs.size(), context.libraries.top().signature(*s->nodedef).inputs.size());
+  EXPECT_EQ(s->inputs.front().name, "base_weight");
+  const resolve::ResolvedInput* color = s->findInput("base_color");
+  EXPECT_EQ(color->source, InputSource::Connection);
+  EXPECT_EQ(color->upstream.node, r.top.findNode("c"));
+  EXPECT_EQ(color->upstream.output, "out");
+  EXPECT_EQ(color->location.line(), 7u);
+  const resolve::ResolvedInput* roughness = s->findInput("specular_roughness");
+  EXPECT_EQ(roughness->source, InputSource::Value);
+  EXPECT_FLOAT_EQ(roughness->value->as<float>(), 0.25f);
+  const resolve::ResolvedInput* ior = s->findInput("specular_ior");
+  EXPECT_EQ(ior->source, InputSource::Default);
+  EXPECT_FLOAT_EQ(ior->value->as<float>(), 1.5f);
+  EXPECT_EQ(ior->instance, nullptr);
+  EXPECT_NE(ior->location.file->path().find("nodedefs/bxdf/open_pbr_surface.mtlx"), std::string::npos);
+  const resolve::ResolvedInput* normal = s->findInput("geometry_normal");
+  EXPECT_EQ(normal->source, InputSource::GeomProp);
+  EXPECT_EQ(normal->geomprop, "Nworld");
+  // Producers come before consumers.
+  ASSERT_EQ(r.top.nodes.size(), 3u);
+  EXPECT_EQ(r.top.nodes[0]->name(), "c");
+  EXPECT_EQ(r.top.nodes[2]->name(), "m");
+  ASSERT_EQ(r.materials.size(), 1u);
+  ASSERT_EQ(r.materials[0].shaders.size(), 1u);
+  EXPECT_EQ(r.materials[0].shaders[0].node, s);
+  EXPECT_EQ(r.materials[0].shaders[0].input, "surfaceshader");
+}
+
+TEST(Resolver, GraphInterfaceOutputsAndFilePrefix) {
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(
+      "<materialx version=\"1.39\" fileprefix=\"textures/\">\n"
+      "  <nodegraph name=\"NG\">\n"
+      "    <input name=\"tiling\" type=\"vector2\" value=\"2, 2\"/>\n"
+      "    <tiledimage name=\"tex\" type=\"color3\">\n"
+      "      <input name=\"file\" type=\"filename\" value=\"wood.png\"/>\n"
+      "      <input name=\"uvtiling\" type=\"vector2\" interfacename=\"tiling\"/>\n"
+      "    </tiledimage>\n"
+      "    <output name=\"color\" type=\"color3\" nodename=\"tex\"/>\n"
+      "  </nodegraph>\n"
+      "  <standard_surface name=\"s\" type=\"surfaceshader\">\n"
+      "    <input name=\"base_color\" type=\"color3\" nodegraph=\"NG\" output=\"color\"/>\n"
+      "  </standard_surface>\n"
+      "  <surfacematerial name=\"m\" type=\"material\">\n"
+      "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"s\"/>\n  </surfacematerial>\n"
+      "</materialx>\n");
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  const resolve::ResolvedGraph* g = r.findGraph("NG");
+  ASSERT_NE(g, nullptr);
+  const resolve::ResolvedNode* tex = g->findNode("tex");
+  EXPECT_EQ(tex->findInput("file")->value->as<std::string>(), "textures/wood.png");
+  EXPECT_EQ(tex->findInput("uvtiling")->source, InputSource::Interface);
+  EXPECT_EQ(g->findInterface("tiling")->value->as<glm::vec2>(), glm::vec2(2, 2));
+  EXPECT_EQ(tex->findInput("texcoord")->geomprop, "UV0");
+  const resolve::ResolvedInput* color = r.top.findNode("s")->findInput("base_color");
+  EXPECT_EQ(color->upstream.graph, g);
+  EXPECT_EQ(color->upstream.output, "color");
+  EXPECT_EQ(g->findOutput("color")->upstream.node, tex);
+}
+
+TEST(Resolver, ShaderBehindAGraphOutputIsTheMaterialsShader) {
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(mtlx(
+      "  <nodegraph name=\"NG\">\n    <oren_nayar_diffuse_bsdf name=\"d\" type=\"BSDF\"/>\n"
+      "    <surface name=\"s\" type=\"surfaceshader\">\n      <input name=\"bsdf\" type=\"BSDF\" nodename=\"d\"/>\n"
+      "    </surface>\n    <output name=\"out\" type=\"surfaceshader\" nodename=\"s\"/>\n  </nodegraph>\n"
+      "  <surfacematerial name=\"m\" type=\"material\">\n"
+      "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodegraph=\"NG\"/>\n  </surfacematerial>\n"));
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  ASSERT_EQ(r.materials.size(), 1u);
+  ASSERT_EQ(r.materials[0].shaders.size(), 1u);
+  EXPECT_EQ(r.materials[0].shaders[0].node->name(), "s");
+}
+
+TEST(Resolver, Channels138SwizzleIsKeptOnTheConnection) {
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(
+      "<materialx version=\"1.38\">\n  <constant name=\"c\" type=\"color3\"/>\n"
+      "  <add name=\"a\" type=\"vector2\">\n    <input name=\"in1\" type=\"vector2\" nodename=\"c\" channels=\"bg\"/>\n"
+      "  </add>\n</materialx>\n");
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  EXPECT_EQ(r.top.findNode("a")->findInput("in1")->channels, "bg");
+}
+
+TEST(Resolver, LongChainsResolveWithoutDeepRecursion) {
+  // 20000 nodes in a chain: ordering is iterative, so the call stack does not grow with it.
+  std::string body = "  <constant name=\"n0\" type=\"float\"/>\n";
+  for (int i = 1; i < 20000; ++i) {
+    body += "  <add name=\"n" + std::to_string(i) + "\" type=\"float\"><input name=\"in1\" type=\"float\" nodename=\"n" +
+            std::to_string(i - 1) + "\"/></add>\n";
+  }
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(mtlx(body));
+  EXPECT_FALSE(context.diagnostics.hasErrors());
+  ASSERT_EQ(r.top.nodes.size(), 20000u);
+  EXPECT_EQ(r.top.nodes.front()->name(), "n0");
+  EXPECT_EQ(r.top.nodes.back()->name(), "n19999");
+}
+
+}  // namespace
+}  // namespace mxc::test
