@@ -23,6 +23,28 @@ struct Scope {
   }
 };
 
+/// An input as a nodedef declares it, not yet given a source.
+ResolvedInput declaredInput(const doc::Input& declaration) {
+  ResolvedInput input;
+  input.name = declaration.name;
+  input.type = declaration.type;
+  input.declaration = &declaration;
+  input.location = declaration.location;
+  return input;
+}
+
+/// The nodedef's fallback for an input nothing sets: its default value, else its default
+/// geometric property; otherwise the input stays unset.
+void applyDefault(ResolvedInput& input, const doc::Input& declaration) {
+  if (declaration.value && declaration.value->type() != doc::ValueType::None) {
+    input.source = InputSource::Default;
+    input.value = declaration.value;
+  } else if (!declaration.defaultgeomprop.empty()) {
+    input.source = InputSource::GeomProp;
+    input.geomprop = declaration.defaultgeomprop;
+  }
+}
+
 /// A dependency edge found while ordering: the node depended on and the input that makes it.
 struct Dependency {
   ResolvedNode* node;
@@ -210,10 +232,19 @@ void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedIn
   if (port.value && port.value->type() != doc::ValueType::None) {
     result.source = InputSource::Value;
     result.value = port.value;
-    // Filenames are relative to the enclosing fileprefix (MaterialX 1.39 "Filename Substitutions").
-    if (port.value->type() == doc::ValueType::Filename && !port.fileprefix.empty() &&
-        !port.value->as<std::string>().empty()) {
-      result.value = doc::Value(doc::ValueType::Filename, std::string(port.fileprefix) + port.value->as<std::string>());
+    // Filenames are relative to the enclosing fileprefix, and [token] names the value of a
+    // <token> of the enclosing graph (MaterialX 1.39 "Filename Substitutions").
+    if (port.value->type() == doc::ValueType::Filename && !port.value->as<std::string>().empty()) {
+      std::string path = std::string(port.fileprefix) + port.value->as<std::string>();
+      if (scope.graph) {
+        for (const doc::Token& token : scope.graph->tokens) {
+          const std::string key = "[" + std::string(token.name) + "]";
+          for (size_t at = path.find(key); at != std::string::npos; at = path.find(key, at + token.value.size())) {
+            path.replace(at, key.size(), token.value);
+          }
+        }
+      }
+      result.value = doc::Value(doc::ValueType::Filename, std::move(path));
     }
   }
 }
@@ -241,21 +272,9 @@ void Resolver::checkEnum(const ResolvedInput& input) {
 void Resolver::resolveNode(Scope& scope, ResolvedNode& node) {
   if (!node.signature) return;
   for (const doc::Input* declaration : node.signature->inputs) {
-    ResolvedInput input;
-    input.name = declaration->name;
-    input.type = declaration->type;
-    input.declaration = declaration;
-    input.location = declaration->location;
+    ResolvedInput input = declaredInput(*declaration);
     if (const doc::Input* instance = node.node->findInput(declaration->name)) resolvePort(scope, *instance, input);
-    if (input.source == InputSource::Unset) {
-      if (declaration->value && declaration->value->type() != doc::ValueType::None) {
-        input.source = InputSource::Default;
-        input.value = declaration->value;
-      } else if (!declaration->defaultgeomprop.empty()) {
-        input.source = InputSource::GeomProp;
-        input.geomprop = declaration->defaultgeomprop;
-      }
-    }
+    if (input.source == InputSource::Unset) applyDefault(input, *declaration);
     checkEnum(input);
     node.inputs.push_back(std::move(input));
   }
@@ -265,18 +284,8 @@ void Resolver::resolveInterface(Scope& scope) {
   ResolvedGraph& graph = *scope.resolved;
   if (graph.implements) {
     for (const doc::Input* declaration : library_.signature(*graph.implements).inputs) {
-      ResolvedInput input;
-      input.name = declaration->name;
-      input.type = declaration->type;
-      input.declaration = declaration;
-      input.location = declaration->location;
-      if (declaration->value && declaration->value->type() != doc::ValueType::None) {
-        input.source = InputSource::Default;
-        input.value = declaration->value;
-      } else if (!declaration->defaultgeomprop.empty()) {
-        input.source = InputSource::GeomProp;
-        input.geomprop = declaration->defaultgeomprop;
-      }
+      ResolvedInput input = declaredInput(*declaration);
+      applyDefault(input, *declaration);
       graph.interface.push_back(std::move(input));
     }
     return;

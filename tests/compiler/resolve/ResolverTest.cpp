@@ -110,6 +110,17 @@ TEST(Resolver, GraphInterfaceOutputsAndFilePrefix) {
   EXPECT_EQ(g->findOutput("color")->upstream.node, tex);
 }
 
+TEST(Resolver, FilenameTokensAreSubstituted) {
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(mtlx(
+      "  <nodegraph name=\"NG\">\n    <token name=\"size\" type=\"string\" value=\"2k\"/>\n"
+      "    <image name=\"img\" type=\"color3\">\n"
+      "      <input name=\"file\" type=\"filename\" value=\"wood_[size]_[size].png\"/>\n    </image>\n"
+      "    <output name=\"out\" type=\"color3\" nodename=\"img\"/>\n  </nodegraph>\n"));
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  EXPECT_EQ(r.findGraph("NG")->findNode("img")->findInput("file")->value->as<std::string>(), "wood_2k_2k.png");
+}
+
 TEST(Resolver, ShaderBehindAGraphOutputIsTheMaterialsShader) {
   Context context;
   resolve::ResolvedDocument r = context.resolve(mtlx(
