@@ -1,0 +1,64 @@
+#pragma once
+/// \file
+/// One material in the IR: its expressions, its scattering tree, and what the passes found.
+
+#include <string>
+#include <vector>
+
+#include "compiler/ir/Expr.h"
+#include "compiler/ir/Scatter.h"
+
+namespace mxc::ir {
+
+/// A feature of the material that survived the passes, with the input that keeps it alive
+/// (Material::effects; issue "effect summary": coat, fuzz, thin_film, transmission, ...).
+struct Effect {
+  std::string name;
+  Origin origin;  ///< the input whose value keeps the effect (a coverage, a weight, a colour)
+};
+
+/// A remark about the lowering a user should know: a structure that is not energy-bounded,
+/// an approximation, an input that has no effect.
+struct Note {
+  std::string message;
+  Origin origin;
+};
+
+struct Material {
+  std::string name;          ///< the material node's name (or a graph output's, for pbrlib graphs)
+  std::string shader;        ///< the shading node's category (open_pbr_surface, standard_surface, surface)
+  Origin origin;             ///< the shading node
+  ExprGraph exprs;
+  std::vector<Interface> interfaces;
+  std::vector<Medium> media;
+  std::vector<Emission> emissions;
+  std::vector<ScatterNode> nodes;
+  Index root = kNone;
+  Param opacity;     ///< kept for transparent shadows; already part of the tree as Mix(Ambient, surface)
+  Param thinWalled;  ///< bool: the surface is a two-sided sheet (OpenPBR "Thin-walled mode")
+  std::vector<Effect> effects;
+  std::vector<Note> notes;
+
+  Index addNode(ScatterNode node) {
+    nodes.push_back(std::move(node));
+    return static_cast<Index>(nodes.size() - 1);
+  }
+  Index addInterface(Interface i) {
+    interfaces.push_back(std::move(i));
+    return static_cast<Index>(interfaces.size() - 1);
+  }
+  Index addMedium(Medium m) {
+    media.push_back(std::move(m));
+    return static_cast<Index>(media.size() - 1);
+  }
+  Index addEmission(Emission e) {
+    emissions.push_back(std::move(e));
+    return static_cast<Index>(emissions.size() - 1);
+  }
+  /// Convenience constructors of scattering nodes.
+  Index slab(Index top, Index medium, Index base, Param coverage, Origin from);
+  Index mix(Index a, Index b, Param weight, Origin from);
+  Index leaf(ScatterKind kind, Origin from);
+};
+
+}  // namespace mxc::ir

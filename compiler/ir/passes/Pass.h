@@ -1,0 +1,68 @@
+#pragma once
+/// \file
+/// IR passes: each has a name and one job, and returns how many edits it made. runPasses
+/// runs the standard list to a fixed point, then sweeps what nothing refers to any more.
+
+#include <string_view>
+#include <vector>
+
+#include "compiler/ir/Material.h"
+
+namespace mxc::ir {
+
+struct Pass {
+  std::string_view name;
+  int (*run)(Material&);
+};
+
+// Expressions
+/// Replaces operations on constants by their value and applies algebraic identities
+/// (x * 1 = x, x + 0 = x, mix(a, b, 0) = a, select(true, a, b) = a, ...).
+int constantFolding(Material& m);
+/// Drops expressions and scattering entries nothing reachable refers to, and renumbers.
+int deadCode(Material& m);
+/// Merges structurally identical interfaces, media, emissions and scattering nodes.
+/// (Identical expressions are shared when they are built: ExprGraph interns them.)
+int commonSubexpressions(Material& m);
+
+// Scattering structure
+/// A slab whose coverage is 0 is its base; coverage 1 is dropped (absent means 1).
+int pruneCoverage(Material& m);
+/// mix(a, b, 0) = a, mix(a, b, 1) = b, mix(a, a, w) = a; add with an absorber; tint by 1.
+int collapseMix(Material& m);
+/// A medium that neither absorbs nor scatters (nor refracts: a bulk dielectric with an IOR
+/// stays) is removed.
+int removeEmptyMedia(Material& m);
+/// A thin film of thickness 0 or coverage 0 is removed.
+int removeThinFilm(Material& m);
+/// A slot holding its default value (slotDefault) is dropped: absent means the default.
+int removeDefaultSlots(Material& m);
+/// Emission of colour 0 is removed.
+int removeDarkEmission(Material& m);
+/// A reflection-only dielectric over a transmission-only one with the same interface
+/// parameters is one dielectric; an index-matched slab under an interface takes that
+/// interface (MaterialX's layer(dielectric, subsurface) and layer(dielectric_R, dielectric_T)).
+int mergeDielectricLobes(Material& m);
+/// A transmitting dielectric at the bottom of a stack gets the clear bulk it transmits into
+/// (a medium with the interface's IOR; a thin sheet when the material is thin-walled), so
+/// "a dielectric over a medium" reads the same from every lowering.
+int bulkUnderTransmission(Material& m);
+/// Slab(top, base = mix(a, b, w)) = mix(Slab(top, a), Slab(top, b), w), and likewise for
+/// emissive and tint nodes: the normal form is a mixture of slab stacks.
+int distributeOverMix(Material& m);
+/// mix(Slab(f), Slab(f with thin film), w) = Slab(f with thin film of coverage w).
+int foldThinFilmMix(Material& m);
+
+/// The standard pass list, in order.
+const std::vector<Pass>& standardPasses();
+
+struct PassReport {
+  std::string_view name;
+  int edits = 0;
+};
+
+/// Runs the standard passes until none edits (at most `maxRounds` rounds), then deadCode.
+/// Returns the edits of each pass summed over the rounds.
+std::vector<PassReport> runPasses(Material& m, int maxRounds = 32);
+
+}  // namespace mxc::ir

@@ -1,0 +1,251 @@
+#include "compiler/lower/Context.h"
+
+#include <fmt/format.h>
+
+#include "compiler/resolve/Resolver.h"
+
+namespace mxc::lower {
+
+using resolve::InputSource;
+using resolve::ResolvedInput;
+
+namespace {
+
+bool isClosureType(std::string_view type) {
+  return type == "BSDF" || type == "EDF" || type == "VDF" || type == "surfaceshader" || type == "volumeshader" ||
+         type == "displacementshader" || type == "lightshader" || type == "material";
+}
+
+/// The zero of a type: what an unresolved or unsupported node contributes, so lowering can
+/// go on and report every problem of the document.
+ir::ExprId zero(ir::ExprBuilder& b, ir::Type type) {
+  if (type == ir::Type::String) return b.graph().constant(doc::Value(doc::ValueType::String, std::string()));
+  return b.vec(type, 0.0f);
+}
+
+}  // namespace
+
+Context::Context(ir::Material& m, const resolve::ResolvedDocument& doc, const LoweringOptions& o, Diagnostics& d)
+    : material(m), b(m.exprs), document(doc), library(*doc.definitions), options(o), diagnostics(d) {
+  top_.graph = &doc.top;
+}
+
+Env& Context::graphEnv(const resolve::ResolvedGraph& graph) {
+  if (auto it = graphEnvs_.find(&graph); it != graphEnvs_.end()) return *it->second;
+  Env& env = envs_.emplace_back();
+  env.graph = &graph;
+  graphEnvs_.emplace(&graph, &env);
+  return env;
+}
+
+void Context::error(SourceLocation where, std::string message) { diagnostics.error(where, std::move(message)); }
+
+void Context::note(ir::Origin where, std::string message) {
+  material.notes.push_back({std::move(message), where});
+}
+
+ir::Origin Context::origin(const NodeRef& n, std::string_view name) const {
+  if (const ResolvedInput* in = n.node->findInput(name)) return {in->location, in->name};
+  return nodeOrigin(n);
+}
+
+ir::Origin Context::nodeOrigin(const NodeRef& n) const { return {n.node->node->location, n.node->name()}; }
+
+ir::Type Context::inputType(const NodeRef& n, std::string_view name) const {
+  ir::Type type = ir::Type::Float;
+  if (const ResolvedInput* in = n.node->findInput(name)) ir::irTypeOf(in->type, type);
+  return type;
+}
+
+ir::Type Context::outputType(const NodeRef& n, std::string_view output) const {
+  ir::Type type = ir::Type::Float;
+  if (n.node->signature) {
+    const doc::Output* out = output.empty() ? nullptr : n.node->signature->findOutput(output);
+    if (!out && !n.node->signature->outputs.empty()) out = n.node->signature->outputs[0];
+    if (out) ir::irTypeOf(out->type, type);
+  }
+  return type;
+}
+
+const ResolvedInput* Context::interfaceInput(Env& env, std::string_view name, Env*& where) {
+  if (env.caller) {
+    where = env.callerEnv;
+    return env.caller->findInput(name);
+  }
+  if (env.graph && env.graph->graph) {
+    // A document-level graph: its interface inputs are set at document level.
+    where = &top_;
+    return env.graph->findInterface(name);
+  }
+  return nullptr;
+}
+
+ir::ExprId Context::applyChannels(ir::ExprId value, std::string_view channels, ir::Type to) {
+  // MaterialX 1.38 swizzle: each channel selects a component (r/x=0, g/y=1, b/z=2, a/w=3) or
+  // is the constant 0 or 1. The resolver checked the channels against both types.
+  std::vector<ir::ExprId> parts;
+  const bool scalar = ir::componentCount(b.type(value)) <= 1;
+  for (char c : channels) {
+    if (c == '0' || c == '1') {
+      parts.push_back(b.f(c == '1' ? 1.0f : 0.0f));
+      continue;
+    }
+    const std::string_view names = "rgbaxyzw";
+    const int index = static_cast<int>(names.find(c)) % 4;
+    parts.push_back(scalar ? value : b.extract(value, index));
+  }
+  if (parts.size() == 1) return parts[0];
+  return b.construct(to, parts);
+}
+
+ir::ExprId Context::value(const ResolvedInput& in, Env& env) {
+  ir::Type type = ir::Type::Float;
+  const bool typed = ir::irTypeOf(in.type, type);
+  if (!typed) return ir::kNoExpr;
+  ir::ExprId v = ir::kNoExpr;
+  switch (in.source) {
+    case InputSource::Value:
+    case InputSource::Default:
+      if (in.value) v = material.exprs.constant(*in.value);
+      break;
+    case InputSource::GeomProp:
+      v = material.exprs.named(ir::Op::GeomProp, type, in.geomprop);
+      break;
+    case InputSource::Connection:
+      if (in.upstream.node) {
+        v = nodeValue({in.upstream.node, &env}, in.upstream.output);
+      } else if (in.upstream.graph) {
+        Env& genv = graphEnv(*in.upstream.graph);
+        if (const ResolvedInput* out = in.upstream.graph->findOutput(in.upstream.output)) v = value(*out, genv);
+      }
+      if (v != ir::kNoExpr && !in.channels.empty()) v = applyChannels(v, in.channels, type);
+      break;
+    case InputSource::Interface: {
+      Env* where = nullptr;
+      if (const ResolvedInput* iface = interfaceInput(env, in.interfaceName, where)) v = value(*iface, *where);
+      break;
+    }
+    case InputSource::Unset:
+      break;
+  }
+  return v;
+}
+
+ir::ExprId Context::input(const NodeRef& n, std::string_view name) {
+  const ResolvedInput* in = n.node->findInput(name);
+  return in ? value(*in, *n.env) : ir::kNoExpr;
+}
+
+ir::Param Context::param(const NodeRef& n, std::string_view name) { return {input(n, name), origin(n, name)}; }
+
+std::string Context::stringInput(const NodeRef& n, std::string_view name) {
+  const ResolvedInput* in = n.node->findInput(name);
+  if (!in) return {};
+  ir::ExprId v = value(*in, *n.env);
+  if (v != ir::kNoExpr && material.exprs.isConstant(v) && material.exprs[v].type == ir::Type::String) {
+    return material.exprs.constantValue(v).str();
+  }
+  return {};
+}
+
+ir::ExprId Context::nodeValue(const NodeRef& n, std::string_view output) {
+  const auto key = std::make_pair(n.node, std::string(output));
+  if (auto it = n.env->values.find(key); it != n.env->values.end()) return it->second;
+  const ir::Type type = outputType(n, output);
+  ir::ExprId v = ir::kNoExpr;
+  if (!n.node->nodedef) {
+    v = zero(b, type);  // the resolver reported why
+  } else if (n.node->signature && isClosureType(n.node->signature->outputType())) {
+    error(n.node->node->location, fmt::format("node '{}' outputs a {}, which cannot be used as a value",
+                                              n.node->name(), n.node->signature->outputType()));
+    v = zero(b, type);
+  } else if (ValueRule rule = findValueRule(n.node->category())) {
+    v = rule(*this, n, output, type);
+  } else if (Env* inner = inlineImplementation(n)) {
+    if (const ResolvedInput* out = implementationOutput(*inner, output)) v = value(*out, *inner);
+  } else {
+    error(n.node->node->location,
+          fmt::format("<{}> (nodedef {}) is not supported by mxc's lowering yet, and no node graph in the libraries "
+                      "implements it",
+                      n.node->category(), n.node->nodedef->name));
+  }
+  if (v == ir::kNoExpr) v = zero(b, type);
+  n.env->values.emplace(key, v);
+  return v;
+}
+
+Env* Context::inlineImplementation(const NodeRef& n) {
+  if (!n.node->nodedef) return nullptr;
+  const doc::NodeGraph* graph = library.implementationGraph(*n.node->nodedef);
+  if (!graph) return nullptr;
+  const auto key = std::make_pair(n.node, n.env);
+  if (auto it = inlined_.find(key); it != inlined_.end()) return it->second;
+  if (n.env->depth >= 32) {
+    error(n.node->node->location, fmt::format("node graphs implementing <{}> nest more than 32 deep (a graph that "
+                                              "uses its own node?)",
+                                              n.node->category()));
+    return nullptr;
+  }
+  auto& resolved = implementations_[graph];
+  if (!resolved) resolved = resolve::resolveImplementation(*graph, library, diagnostics);
+  if (!resolved) return nullptr;
+  Env& env = envs_.emplace_back();
+  env.graph = resolved.get();
+  env.caller = n.node;
+  env.callerEnv = n.env;
+  env.depth = n.env->depth + 1;
+  inlined_.emplace(key, &env);
+  return &env;
+}
+
+const ResolvedInput* Context::implementationOutput(Env& env, std::string_view output) {
+  const ResolvedInput* out = output.empty() ? nullptr : env.graph->findOutput(output);
+  if (!out && !env.graph->outputs.empty()) out = &env.graph->outputs.front();
+  return out;
+}
+
+Closure Context::closure(const ResolvedInput& in, Env& env) {
+  switch (in.source) {
+    case InputSource::Connection:
+      if (in.upstream.node) return nodeClosure({in.upstream.node, &env}, in.upstream.output);
+      if (in.upstream.graph) {
+        Env& genv = graphEnv(*in.upstream.graph);
+        if (const ResolvedInput* out = in.upstream.graph->findOutput(in.upstream.output)) return closure(*out, genv);
+      }
+      return {};
+    case InputSource::Interface: {
+      Env* where = nullptr;
+      if (const ResolvedInput* iface = interfaceInput(env, in.interfaceName, where)) return closure(*iface, *where);
+      return {};
+    }
+    default:
+      return {};
+  }
+}
+
+Closure Context::closureInput(const NodeRef& n, std::string_view name) {
+  const ResolvedInput* in = n.node->findInput(name);
+  return in ? closure(*in, *n.env) : Closure{};
+}
+
+Closure Context::nodeClosure(const NodeRef& n, std::string_view output) {
+  auto& cache = closures_[std::make_pair(n.node, n.env)];
+  if (auto it = cache.find(std::string(output)); it != cache.end()) return it->second;
+  Closure result;
+  if (!n.node->nodedef) {
+    // reported by the resolver
+  } else if (ClosureRule rule = findClosureRule(n.node->category())) {
+    result = rule(*this, n, output);
+  } else if (Env* inner = inlineImplementation(n)) {
+    if (const ResolvedInput* out = implementationOutput(*inner, output)) result = closure(*out, *inner);
+  } else {
+    error(n.node->node->location,
+          fmt::format("<{}> (nodedef {}) is not supported by mxc's lowering yet, and no node graph in the libraries "
+                      "implements it",
+                      n.node->category(), n.node->nodedef->name));
+  }
+  cache.emplace(std::string(output), result);
+  return result;
+}
+
+}  // namespace mxc::lower

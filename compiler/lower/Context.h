@@ -1,0 +1,121 @@
+#pragma once
+/// \file
+/// The state of lowering one material: environments for graph scopes, memoised node results,
+/// and the functions rules use to read a node's inputs as IR values or closures.
+
+#include <deque>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "compiler/common/Diagnostic.h"
+#include "compiler/ir/ExprBuilder.h"
+#include "compiler/ir/Material.h"
+#include "compiler/library/NodeLibrary.h"
+#include "compiler/lower/Lowering.h"
+#include "compiler/resolve/ResolvedGraph.h"
+
+namespace mxc::lower {
+
+/// A scope in which nodes are lowered: the document level, a document-level node graph, or
+/// an inlined implementation graph bound to the node instance it implements.
+struct Env {
+  const resolve::ResolvedGraph* graph = nullptr;
+  const resolve::ResolvedNode* caller = nullptr;  ///< the instance an implementation graph implements
+  Env* callerEnv = nullptr;
+  int depth = 0;  ///< inlining depth, bounded so a self-implementing graph cannot recurse forever
+  std::map<std::pair<const resolve::ResolvedNode*, std::string>, ir::ExprId> values;
+};
+
+/// What a closure-typed output lowers to.
+struct Closure {
+  enum class Kind : uint8_t { None, Scatter, Medium, Emission };
+  Kind kind = Kind::None;
+  ir::Index index = ir::kNone;              ///< scatter node (Scatter) or medium (Medium)
+  std::vector<ir::Index> emissions;         ///< Emission: the emitters whose sum it is
+};
+
+/// A node in the environment it is lowered in.
+struct NodeRef {
+  const resolve::ResolvedNode* node;
+  Env* env;
+};
+
+class Context {
+ public:
+  Context(ir::Material& material, const resolve::ResolvedDocument& document, const LoweringOptions& options,
+          Diagnostics& diagnostics);
+
+  ir::Material& material;
+  ir::ExprBuilder b;
+  const resolve::ResolvedDocument& document;
+  const lib::NodeLibrary& library;
+  const LoweringOptions& options;
+  Diagnostics& diagnostics;
+
+  /// The environment of the document level and of each document-level node graph.
+  Env& topEnv() { return top_; }
+  Env& graphEnv(const resolve::ResolvedGraph& graph);
+
+  // --- Values ---
+  /// A node input as an IR value, lowering what it is connected to. kNoExpr when unset.
+  ir::ExprId input(const NodeRef& n, std::string_view name);
+  /// As input(), with the origin of the input for the IR's Param.
+  ir::Param param(const NodeRef& n, std::string_view name);
+  /// A uniform string or filename input's value ("" when unset or connected).
+  std::string stringInput(const NodeRef& n, std::string_view name);
+  /// The value feeding a resolved input (of a node, a graph interface, or a graph output).
+  ir::ExprId value(const resolve::ResolvedInput& input, Env& env);
+  /// The output of a value-typed node.
+  ir::ExprId nodeValue(const NodeRef& n, std::string_view output);
+  /// Where an input of a node is set (its element, else the nodedef's), for Params and messages.
+  ir::Origin origin(const NodeRef& n, std::string_view name) const;
+  ir::Origin nodeOrigin(const NodeRef& n) const;
+  /// The IR type of a node input or output (Float when it has none).
+  ir::Type inputType(const NodeRef& n, std::string_view name) const;
+  ir::Type outputType(const NodeRef& n, std::string_view output) const;
+
+  // --- Closures ---
+  Closure closureInput(const NodeRef& n, std::string_view name);
+  Closure closure(const resolve::ResolvedInput& input, Env& env);
+  Closure nodeClosure(const NodeRef& n, std::string_view output);
+
+  // --- Messages ---
+  void error(SourceLocation where, std::string message);
+  void note(ir::Origin where, std::string message);
+
+  /// Runs the node graph implementing `n`'s nodedef, binding its interface to `n`'s inputs.
+  /// Returns the environment of the inlined graph, or null when there is none.
+  Env* inlineImplementation(const NodeRef& n);
+  /// The output of an implementation graph, as a value or a closure.
+  const resolve::ResolvedInput* implementationOutput(Env& env, std::string_view output);
+
+ private:
+  const resolve::ResolvedInput* interfaceInput(Env& env, std::string_view name, Env*& where);
+  ir::ExprId applyChannels(ir::ExprId value, std::string_view channels, ir::Type to);
+
+  Env top_;
+  std::deque<Env> envs_;
+  std::map<const resolve::ResolvedGraph*, Env*> graphEnvs_;
+  std::map<std::pair<const resolve::ResolvedNode*, Env*>, Env*> inlined_;
+  std::map<std::pair<const resolve::ResolvedNode*, Env*>, std::map<std::string, Closure>> closures_;
+  std::map<const doc::NodeGraph*, std::unique_ptr<resolve::ResolvedGraph>> implementations_;
+};
+
+/// A value-node rule: lowers output `output` of node `n`, of IR type `type`.
+using ValueRule = ir::ExprId (*)(Context& c, const NodeRef& n, std::string_view output, ir::Type type);
+/// The rule for a value-node category, or null (stdlib categories: StdlibRules.cpp).
+ValueRule findValueRule(std::string_view category);
+
+/// A closure-node rule (pbrlib BSDF, EDF and VDF nodes: PbrlibRules.cpp).
+using ClosureRule = Closure (*)(Context& c, const NodeRef& n, std::string_view output);
+ClosureRule findClosureRule(std::string_view category);
+
+/// mxc's lowering of the shading models from their specifications (OpenPbrLowering.cpp,
+/// StandardSurfaceLowering.cpp); each returns the root of the material's scattering tree.
+ir::Index lowerOpenPbrSurface(Context& c, const NodeRef& n);
+ir::Index lowerStandardSurface(Context& c, const NodeRef& n);
+
+}  // namespace mxc::lower

@@ -1,0 +1,78 @@
+#include "compiler/lower/Lowering.h"
+
+#include <fmt/format.h>
+
+#include "compiler/lower/Context.h"
+
+namespace mxc::lower {
+
+namespace {
+
+/// Lowers the closure feeding `input` in `env` as the whole material.
+ir::Material lowerShader(const resolve::ResolvedDocument& document, const LoweringOptions& options,
+                         Diagnostics& diagnostics, std::string name, const resolve::ResolvedNode* shader,
+                         const resolve::ResolvedGraph* graph, const resolve::ResolvedInput* graphOutput) {
+  ir::Material material;
+  material.name = std::move(name);
+  Context c(material, document, options, diagnostics);
+  Closure root;
+  if (shader) {
+    material.shader = std::string(shader->category());
+    material.origin = {shader->node->location, shader->name()};
+    Env& env = shader->scope && shader->scope->graph ? c.graphEnv(*shader->scope) : c.topEnv();
+    root = c.nodeClosure({shader, &env}, "out");
+  } else if (graph && graphOutput) {
+    material.shader = "surface";
+    material.origin = {graphOutput->location, graphOutput->name};
+    root = c.closure(*graphOutput, c.graphEnv(*graph));
+    if (graphOutput->source == resolve::InputSource::Connection && graphOutput->upstream.node) {
+      material.shader = std::string(graphOutput->upstream.node->category());
+    }
+  }
+  if (root.kind == Closure::Kind::Scatter) {
+    material.root = root.index;
+  } else {
+    material.root = material.leaf(ir::ScatterKind::Absorber, material.origin);
+    if (!diagnostics.hasErrors()) {
+      c.note(material.origin, "the shader has no BSDF: the surface is black");
+    }
+  }
+  return material;
+}
+
+}  // namespace
+
+std::vector<ir::Material> lowerDocument(const resolve::ResolvedDocument& document, const LoweringOptions& options,
+                                        Diagnostics& diagnostics) {
+  std::vector<ir::Material> materials;
+  for (const resolve::ResolvedMaterial& m : document.materials) {
+    for (const auto& shader : m.shaders) {
+      if (shader.input != "surfaceshader") continue;  // displacement and volume shaders: not lowered
+      materials.push_back(lowerShader(document, options, diagnostics, std::string(m.node->name()), shader.node,
+                                      nullptr, nullptr));
+    }
+  }
+  if (!document.materials.empty()) return materials;
+  // No material: every surface shader a document-level graph outputs (pbrlib test documents),
+  // then every document-level surface shader node.
+  for (const auto& g : document.graphs) {
+    if (g->implements) continue;
+    for (const resolve::ResolvedInput& out : g->outputs) {
+      if (out.type != "surfaceshader") continue;
+      materials.push_back(lowerShader(document, options, diagnostics, fmt::format("{}/{}", g->name(), out.name),
+                                      nullptr, g.get(), &out));
+    }
+  }
+  for (const auto& node : document.top.nodes) {
+    if (!node->signature || node->signature->outputType() != "surfaceshader") continue;
+    bool consumed = false;
+    for (const auto& other : document.top.nodes) {
+      for (const resolve::ResolvedInput& in : other->inputs) consumed = consumed || in.upstream.node == node.get();
+    }
+    if (consumed) continue;
+    materials.push_back(lowerShader(document, options, diagnostics, std::string(node->name()), node.get(), nullptr, nullptr));
+  }
+  return materials;
+}
+
+}  // namespace mxc::lower

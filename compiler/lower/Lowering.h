@@ -1,0 +1,29 @@
+#pragma once
+/// \file
+/// Lowering: from the resolved graph of a document to IR materials (compiler/ir).
+
+#include <string>
+#include <vector>
+
+#include "compiler/common/Diagnostic.h"
+#include "compiler/ir/Material.h"
+#include "compiler/resolve/ResolvedGraph.h"
+
+namespace mxc::lower {
+
+struct LoweringOptions {
+  /// Lower open_pbr_surface and standard_surface through the node graph that implements them
+  /// in the library (for example MaterialX's own graphs, with --library), instead of mxc's
+  /// lowering from the specifications. Used to compare the two.
+  bool useShadingModelGraphs = false;
+};
+
+/// Every material of the document, in document order: each surfacematerial's surface shader.
+/// A document without materials (a pbrlib test graph) gives one material per surfaceshader
+/// output of its node graphs, named "graph/output". Errors (an unsupported node, a structure
+/// that cannot be lowered) are reported at the element that causes them; the material is
+/// still returned with what could be lowered.
+std::vector<ir::Material> lowerDocument(const resolve::ResolvedDocument& document, const LoweringOptions& options,
+                                        Diagnostics& diagnostics);
+
+}  // namespace mxc::lower

@@ -1,0 +1,514 @@
+// Lowering rules for value nodes of the MaterialX standard library (MaterialX Specification
+// 1.39, "Standard Nodes") and the value nodes of pbrlib (roughness_anisotropy, artistic_ior).
+// Each rule turns a node's inputs into IR expressions; formulas cite their definition.
+
+#include <unordered_map>
+
+#include <fmt/format.h>
+
+#include "compiler/lower/Context.h"
+#include "compiler/lower/Microfacet.h"
+
+namespace mxc::lower {
+
+using ir::ExprId;
+using ir::Op;
+using ir::Type;
+
+namespace {
+
+/// An input as an IR value; unset inputs (which a nodedef default normally prevents) are zero.
+ExprId in(Context& c, const NodeRef& n, std::string_view name) {
+  ExprId v = c.input(n, name);
+  return v != ir::kNoExpr ? v : c.b.vec(c.inputType(n, name), 0.0f);
+}
+
+bool hasInput(const NodeRef& n, std::string_view name) { return n.node->findInput(name) != nullptr; }
+
+/// A uniform integer input's constant value, or `fallback` when it is not a constant.
+int intInput(Context& c, const NodeRef& n, std::string_view name, int fallback) {
+  ExprId v = c.input(n, name);
+  if (v == ir::kNoExpr || !c.material.exprs.isConstant(v)) return fallback;
+  std::vector<float> comps = c.material.exprs.constantComponents(v);
+  return comps.empty() ? fallback : static_cast<int>(comps[0]);
+}
+
+bool isMatrix(Type t) { return t == Type::Mat3 || t == Type::Mat4; }
+
+// --- Math (MaterialX "Math Nodes") ---
+
+ExprId binaryRule(Context& c, const NodeRef& n, Op op) {
+  ExprId a = in(c, n, "in1");
+  ExprId b = in(c, n, "in2");
+  return c.b.binary(op, a, b);
+}
+
+ExprId add(Context& c, const NodeRef& n, std::string_view, Type) { return binaryRule(c, n, Op::Add); }
+ExprId subtract(Context& c, const NodeRef& n, std::string_view, Type) { return binaryRule(c, n, Op::Sub); }
+ExprId multiply(Context& c, const NodeRef& n, std::string_view, Type type) {
+  // Matrix multiply is the matrix product; everything else is component-wise.
+  if (isMatrix(type)) return c.material.exprs.op(Op::MatMul, type, {in(c, n, "in1"), in(c, n, "in2")});
+  return binaryRule(c, n, Op::Mul);
+}
+ExprId divide(Context& c, const NodeRef& n, std::string_view, Type type) {
+  if (isMatrix(type)) {
+    ExprId inverse = c.material.exprs.op(Op::Inverse, type, {in(c, n, "in2")});
+    return c.material.exprs.op(Op::MatMul, type, {in(c, n, "in1"), inverse});
+  }
+  return binaryRule(c, n, Op::Div);  // as the document writes it: user arithmetic is not altered
+}
+ExprId modulo(Context& c, const NodeRef& n, std::string_view, Type) { return binaryRule(c, n, Op::Mod); }
+ExprId power(Context& c, const NodeRef& n, std::string_view, Type) { return binaryRule(c, n, Op::Pow); }
+ExprId minimum(Context& c, const NodeRef& n, std::string_view, Type) { return binaryRule(c, n, Op::Min); }
+ExprId maximum(Context& c, const NodeRef& n, std::string_view, Type) { return binaryRule(c, n, Op::Max); }
+ExprId safepower(Context& c, const NodeRef& n, std::string_view, Type) {
+  // sign(a) * |a|^b: defined for negative bases (MaterialX "safepower").
+  ExprId a = in(c, n, "in1");
+  return c.b.mul(c.b.sign(a), c.b.pow(c.b.abs(a), in(c, n, "in2")));
+}
+ExprId atan2(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.b.atan2(in(c, n, "iny"), in(c, n, "inx"));
+}
+
+template <Op op>
+ExprId unaryRule(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.b.unary(op, in(c, n, "in"));
+}
+
+ExprId fract(Context& c, const NodeRef& n, std::string_view, Type) {
+  ExprId x = in(c, n, "in");
+  return c.b.sub(x, c.b.unary(Op::Floor, x));
+}
+ExprId magnitude(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.material.exprs.op(Op::Length, Type::Float, {in(c, n, "in")});
+}
+ExprId distance(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.material.exprs.op(Op::Length, Type::Float, {c.b.sub(in(c, n, "in1"), in(c, n, "in2"))});
+}
+ExprId dotproduct(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.b.dot(in(c, n, "in1"), in(c, n, "in2"));
+}
+ExprId crossproduct(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.material.exprs.op(Op::Cross, Type::Vec3, {in(c, n, "in1"), in(c, n, "in2")});
+}
+ExprId invert(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.b.sub(in(c, n, "amount"), in(c, n, "in"));  // amount - in
+}
+ExprId clamp(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.b.clamp(in(c, n, "in"), in(c, n, "low"), in(c, n, "high"));
+}
+ExprId mix(Context& c, const NodeRef& n, std::string_view, Type) {
+  // MaterialX mix: fg * mix + bg * (1 - mix).
+  return c.b.lerp(in(c, n, "bg"), in(c, n, "fg"), in(c, n, "mix"));
+}
+ExprId remap(Context& c, const NodeRef& n, std::string_view, Type) {
+  // outlow + (in - inlow) (outhigh - outlow) / (inhigh - inlow), as the document writes it.
+  ExprId x = in(c, n, "in");
+  ExprId inlow = in(c, n, "inlow");
+  ExprId outlow = in(c, n, "outlow");
+  ExprId t = c.b.div(c.b.sub(x, inlow), c.b.sub(in(c, n, "inhigh"), inlow));
+  return c.b.add(outlow, c.b.mul(t, c.b.sub(in(c, n, "outhigh"), outlow)));
+}
+ExprId range(Context& c, const NodeRef& n, std::string_view, Type) {
+  // MaterialX "range": remap to [0, 1], apply 1/gamma, remap to the output range, optional clamp.
+  ExprId x = in(c, n, "in");
+  ExprId inlow = in(c, n, "inlow");
+  ExprId outlow = in(c, n, "outlow");
+  ExprId t = c.b.div(c.b.sub(x, inlow), c.b.sub(in(c, n, "inhigh"), inlow));
+  t = c.b.pow(t, c.b.div(c.b.vec(c.b.type(in(c, n, "gamma")), 1.0f), in(c, n, "gamma")));
+  ExprId out = c.b.add(outlow, c.b.mul(t, c.b.sub(in(c, n, "outhigh"), outlow)));
+  ExprId doClamp = in(c, n, "doclamp");
+  ExprId clamped = c.b.clamp(out, outlow, in(c, n, "outhigh"));
+  return c.b.select(doClamp, clamped, out);
+}
+ExprId smoothstep(Context& c, const NodeRef& n, std::string_view, Type type) {
+  ExprId low = c.b.splat(in(c, n, "low"), type);
+  ExprId high = c.b.splat(in(c, n, "high"), type);
+  return c.material.exprs.op(Op::SmoothStep, type, {low, high, in(c, n, "in")});
+}
+ExprId normalize(Context& c, const NodeRef& n, std::string_view, Type) { return c.b.normalize(in(c, n, "in")); }
+ExprId mincomponent(Context& c, const NodeRef& n, std::string_view, Type) { return c.b.minComponent(in(c, n, "in")); }
+ExprId maxcomponent(Context& c, const NodeRef& n, std::string_view, Type) { return c.b.maxComponent(in(c, n, "in")); }
+
+// --- Logic and selection (MaterialX "Conditional Nodes") ---
+
+template <Op compare>
+ExprId conditional(Context& c, const NodeRef& n, std::string_view, Type) {
+  ExprId condition = c.material.exprs.op(compare, Type::Bool, {in(c, n, "value1"), in(c, n, "value2")});
+  if (!hasInput(n, "in1")) return condition;  // the boolean-output variants
+  return c.b.select(condition, in(c, n, "in1"), in(c, n, "in2"));
+}
+ExprId switchRule(Context& c, const NodeRef& n, std::string_view, Type type) {
+  // in1 when which < 1, in2 when which < 2, ... (MaterialX "switch"), as a chain of selects.
+  ExprId which = in(c, n, "which");
+  if (c.b.type(which) != Type::Float) which = c.material.exprs.op(Op::Construct, Type::Float, {which});
+  int count = 0;
+  while (hasInput(n, fmt::format("in{}", count + 1))) ++count;
+  ExprId result = in(c, n, fmt::format("in{}", count));
+  for (int i = count - 1; i >= 1; --i) {
+    ExprId below = c.material.exprs.op(Op::Greater, Type::Bool, {c.b.f(static_cast<float>(i)), which});
+    result = c.b.select(below, in(c, n, fmt::format("in{}", i)), result);
+  }
+  (void)type;
+  return result;
+}
+ExprId logicAnd(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.material.exprs.op(Op::And, Type::Bool, {in(c, n, "in1"), in(c, n, "in2")});
+}
+ExprId logicOr(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.material.exprs.op(Op::Or, Type::Bool, {in(c, n, "in1"), in(c, n, "in2")});
+}
+ExprId logicNot(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.material.exprs.op(Op::Not, Type::Bool, {in(c, n, "in")});
+}
+ExprId logicXor(Context& c, const NodeRef& n, std::string_view, Type) {
+  ExprId a = in(c, n, "in1");
+  ExprId b = in(c, n, "in2");
+  return c.material.exprs.op(Op::Not, Type::Bool, {c.material.exprs.op(Op::Equal, Type::Bool, {a, b})});
+}
+
+// --- Channels (MaterialX "Channel Nodes") ---
+
+ExprId constant(Context& c, const NodeRef& n, std::string_view, Type) { return in(c, n, "value"); }
+ExprId identity(Context& c, const NodeRef& n, std::string_view, Type) { return in(c, n, "in"); }
+ExprId convert(Context& c, const NodeRef& n, std::string_view, Type type) { return c.b.convert(in(c, n, "in"), type); }
+ExprId combine(Context& c, const NodeRef& n, std::string_view, Type type) {
+  std::vector<ExprId> parts;
+  for (int i = 1; hasInput(n, fmt::format("in{}", i)); ++i) parts.push_back(in(c, n, fmt::format("in{}", i)));
+  return c.b.construct(type, parts);
+}
+ExprId separate(Context& c, const NodeRef& n, std::string_view output, Type) {
+  // Outputs outr/outg/outb/outa or outx/outy/outz/outw select one component.
+  const std::string_view names = "rgbaxyzw";
+  const size_t at = output.empty() ? std::string_view::npos : names.find(output.back());
+  const int component = at == std::string_view::npos ? 0 : static_cast<int>(at % 4);
+  return c.b.extract(in(c, n, "in"), component);
+}
+ExprId extract(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.b.extract(in(c, n, "in"), intInput(c, n, "index", 0));
+}
+
+// --- Geometry and application (MaterialX "Geometric Nodes", "Application Nodes") ---
+
+/// Geometric property names follow the geompropdefs of the standard library: P, N, T, B
+/// with "object" or "world" (a "model" space request reads the object space value).
+std::string spaceName(Context& c, const NodeRef& n) {
+  std::string space = c.stringInput(n, "space");
+  return space == "world" ? "world" : "object";
+}
+ExprId position(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return c.material.exprs.named(Op::GeomProp, type, spaceName(c, n) == "world" ? "Pworld" : "Pobject");
+}
+ExprId normal(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return c.material.exprs.named(Op::GeomProp, type, spaceName(c, n) == "world" ? "Nworld" : "Nobject");
+}
+ExprId tangent(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return c.material.exprs.named(Op::GeomProp, type, spaceName(c, n) == "world" ? "Tworld" : "Tobject");
+}
+ExprId bitangent(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return c.material.exprs.named(Op::GeomProp, type, spaceName(c, n) == "world" ? "Bworld" : "Bobject");
+}
+ExprId texcoord(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return c.material.exprs.named(Op::GeomProp, type, fmt::format("UV{}", intInput(c, n, "index", 0)));
+}
+ExprId geomcolor(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return c.material.exprs.named(Op::GeomProp, type, fmt::format("color{}", intInput(c, n, "index", 0)));
+}
+ExprId geompropvalue(Context& c, const NodeRef& n, std::string_view, Type type) {
+  // A named primvar, with the node's default when the geometry does not have it.
+  return c.material.exprs.opWithString(Op::GeomProp, type, {in(c, n, "default")}, c.stringInput(n, "geomprop"));
+}
+ExprId frame(Context& c, const NodeRef&, std::string_view, Type type) {
+  return c.material.exprs.named(Op::Parameter, type, "frame");
+}
+ExprId time(Context& c, const NodeRef&, std::string_view, Type type) {
+  return c.material.exprs.named(Op::Parameter, type, "time");
+}
+
+// --- Textures (MaterialX "Texture Nodes") ---
+
+ExprId sample(Context& c, const NodeRef& n, ExprId uv, Type type, std::string_view uaddress, std::string_view vaddress) {
+  const std::string file = c.stringInput(n, "file");
+  ExprId texture = c.material.exprs.named(Op::Texture, Type::String, file);
+  std::string filter = c.stringInput(n, "filtertype");
+  return c.material.exprs.opWithString(Op::ImageSample, type, {texture, uv, in(c, n, "default")},
+                                       fmt::format("{},{},{}", uaddress, vaddress, filter.empty() ? "linear" : filter));
+}
+ExprId image(Context& c, const NodeRef& n, std::string_view, Type type) {
+  std::string u = c.stringInput(n, "uaddressmode");
+  std::string v = c.stringInput(n, "vaddressmode");
+  return sample(c, n, in(c, n, "texcoord"), type, u.empty() ? "periodic" : u, v.empty() ? "periodic" : v);
+}
+ExprId tiledimage(Context& c, const NodeRef& n, std::string_view, Type type) {
+  // uv = (texcoord * uvtiling - uvoffset) / realworldimagesize * realworldtilesize, periodic.
+  ExprId uv = c.b.sub(c.b.mul(in(c, n, "texcoord"), in(c, n, "uvtiling")), in(c, n, "uvoffset"));
+  uv = c.b.mul(c.b.div(uv, in(c, n, "realworldimagesize")), in(c, n, "realworldtilesize"));
+  return sample(c, n, uv, type, "periodic", "periodic");
+}
+ExprId hextiledimage(Context& c, const NodeRef& n, std::string_view, Type type) {
+  // Hexagonal tiling (Mikkelsen 2022) is done by the shader library; the IR keeps its inputs.
+  const std::string file = c.stringInput(n, "file");
+  ExprId texture = c.material.exprs.named(Op::Texture, Type::String, file);
+  ExprId uv = c.b.mul(in(c, n, "texcoord"), in(c, n, "tiling"));
+  std::vector<ExprId> args{texture, uv, in(c, n, "default"), in(c, n, "rotation"), in(c, n, "rotationrange"),
+                           in(c, n, "scale"), in(c, n, "scalerange"), in(c, n, "offset"), in(c, n, "offsetrange"),
+                           in(c, n, "falloff"), in(c, n, "falloffcontrast"), in(c, n, "lumacoeffs")};
+  return c.material.exprs.opWithString(Op::ImageSample, type, args, "hex,hex,linear");
+}
+ExprId place2d(Context& c, const NodeRef& n, std::string_view, Type) {
+  // operationorder 0 (SRT): rotate((uv - pivot) / scale) - offset + pivot;
+  // operationorder 1 (TRS): rotate((uv - pivot) - offset) / scale + pivot.
+  ExprId uv = c.b.sub(in(c, n, "texcoord"), in(c, n, "pivot"));
+  ExprId scale = in(c, n, "scale");
+  ExprId rotate = in(c, n, "rotate");
+  ExprId offset = in(c, n, "offset");
+  ExprId pivot = in(c, n, "pivot");
+  auto rotated = [&](ExprId v) { return c.material.exprs.op(Op::Rotate2D, Type::Vec2, {v, rotate}); };
+  ExprId srt = c.b.add(c.b.sub(rotated(c.b.div(uv, scale)), offset), pivot);
+  ExprId trs = c.b.add(c.b.div(rotated(c.b.sub(uv, offset)), scale), pivot);
+  ExprId order = in(c, n, "operationorder");
+  ExprId isTrs = c.material.exprs.op(Op::Greater, Type::Bool, {order, c.material.exprs.constantInt(0)});
+  return c.b.select(isTrs, trs, srt);
+}
+ExprId normalmap(Context& c, const NodeRef& n, std::string_view, Type) {
+  ExprId scale = in(c, n, "scale");
+  if (c.b.type(scale) == Type::Float) scale = c.b.splat(scale, Type::Vec2);
+  return c.material.exprs.op(Op::NormalMap, Type::Vec3,
+                             {in(c, n, "in"), scale, in(c, n, "normal"), in(c, n, "tangent"), in(c, n, "bitangent")});
+}
+
+// --- Procedural (MaterialX "Procedural Nodes") ---
+
+/// amplitude * noise + pivot, with the noise of the output's type.
+ExprId noiseWith(Context& c, const NodeRef& n, Op op, ExprId coordinate, Type type) {
+  ExprId noise = c.material.exprs.op(op, type, {coordinate});
+  return c.b.add(c.b.mul(noise, in(c, n, "amplitude")), in(c, n, "pivot"));
+}
+ExprId noise2d(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return noiseWith(c, n, Op::Noise2D, in(c, n, "texcoord"), type);
+}
+ExprId noise3d(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return noiseWith(c, n, Op::Noise3D, in(c, n, "position"), type);
+}
+ExprId fractal3d(Context& c, const NodeRef& n, std::string_view, Type type) {
+  ExprId noise = c.material.exprs.op(Op::Fractal3D, type,
+                                     {in(c, n, "position"), in(c, n, "octaves"), in(c, n, "lacunarity"),
+                                      in(c, n, "diminish")});
+  return c.b.mul(noise, in(c, n, "amplitude"));
+}
+ExprId cellnoise2d(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return c.material.exprs.op(Op::CellNoise2D, type, {in(c, n, "texcoord")});
+}
+ExprId cellnoise3d(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return c.material.exprs.op(Op::CellNoise3D, type, {in(c, n, "position")});
+}
+ExprId worleynoise2d(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return c.material.exprs.op(Op::WorleyNoise2D, type, {in(c, n, "texcoord"), in(c, n, "jitter")});
+}
+ExprId worleynoise3d(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return c.material.exprs.op(Op::WorleyNoise3D, type, {in(c, n, "position"), in(c, n, "jitter")});
+}
+
+// --- Colour (MaterialX "Adjustment Nodes") ---
+
+/// Applies a colour operation to the rgb of a color3 or color4 (alpha passes through).
+template <typename F>
+ExprId onRgb(Context& c, ExprId color, Type type, F f) {
+  if (type != Type::Vec4) return f(color);
+  ExprId rgb = c.b.convert(color, Type::Vec3);
+  ExprId out = f(rgb);
+  return c.b.construct(Type::Vec4, {out, c.b.extract(color, 3)});
+}
+ExprId luminance(Context& c, const NodeRef& n, std::string_view, Type type) {
+  ExprId coefficients = in(c, n, "lumacoeffs");
+  return onRgb(c, in(c, n, "in"), type, [&](ExprId rgb) {
+    return c.b.splat(c.b.dot(rgb, coefficients), Type::Vec3);
+  });
+}
+ExprId rgbtohsv(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return onRgb(c, in(c, n, "in"), type,
+               [&](ExprId rgb) { return c.material.exprs.op(Op::RgbToHsv, Type::Vec3, {rgb}); });
+}
+ExprId hsvtorgb(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return onRgb(c, in(c, n, "in"), type,
+               [&](ExprId hsv) { return c.material.exprs.op(Op::HsvToRgb, Type::Vec3, {hsv}); });
+}
+ExprId saturate(Context& c, const NodeRef& n, std::string_view, Type type) {
+  // lerp(luminance, colour, amount): amount 0 is grey, 1 unchanged.
+  ExprId coefficients = in(c, n, "lumacoeffs");
+  ExprId amount = in(c, n, "amount");
+  return onRgb(c, in(c, n, "in"), type, [&](ExprId rgb) {
+    ExprId grey = c.b.splat(c.b.dot(rgb, coefficients), Type::Vec3);
+    return c.b.lerp(grey, rgb, amount);
+  });
+}
+ExprId hsvadjust(Context& c, const NodeRef& n, std::string_view, Type type) {
+  // Hue shifts (wrapping), saturation and value scale: MaterialX "hsvadjust".
+  ExprId amount = in(c, n, "amount");
+  return onRgb(c, in(c, n, "in"), type, [&](ExprId rgb) {
+    ExprId hsv = c.material.exprs.op(Op::RgbToHsv, Type::Vec3, {rgb});
+    ExprId hue = c.b.add(c.b.extract(hsv, 0), c.b.extract(amount, 0));
+    hue = c.b.sub(hue, c.b.unary(Op::Floor, hue));
+    ExprId adjusted = c.b.construct(Type::Vec3, {hue, c.b.mul(c.b.extract(hsv, 1), c.b.extract(amount, 1)),
+                                                c.b.mul(c.b.extract(hsv, 2), c.b.extract(amount, 2))});
+    return c.material.exprs.op(Op::HsvToRgb, Type::Vec3, {adjusted});
+  });
+}
+ExprId contrast(Context& c, const NodeRef& n, std::string_view, Type) {
+  // (in - pivot) * amount + pivot
+  ExprId pivot = in(c, n, "pivot");
+  return c.b.add(c.b.mul(c.b.sub(in(c, n, "in"), pivot), in(c, n, "amount")), pivot);
+}
+
+// --- Transforms ---
+
+ExprId rotate2d(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.material.exprs.op(Op::Rotate2D, Type::Vec2, {in(c, n, "in"), in(c, n, "amount")});
+}
+ExprId rotate3d(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.material.exprs.op(Op::Rotate3D, Type::Vec3, {in(c, n, "in"), in(c, n, "amount"), in(c, n, "axis")});
+}
+template <Op op>
+ExprId transform(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return c.material.exprs.opWithString(op, type, {in(c, n, "in")},
+                                       fmt::format("{},{}", c.stringInput(n, "fromspace"), c.stringInput(n, "tospace")));
+}
+ExprId transformmatrix(Context& c, const NodeRef& n, std::string_view, Type type) {
+  // A vector (padded with w = 1 for the homogeneous 2D/3D forms) times the matrix.
+  ExprId v = in(c, n, "in");
+  ExprId m = in(c, n, "mat");
+  const int vn = ir::componentCount(c.b.type(v));
+  const int mn = c.b.type(m) == Type::Mat3 ? 3 : 4;
+  ExprId padded = vn == mn ? v : c.b.construct(ir::vectorType(mn), {v, c.b.f(1.0f)});
+  ExprId product = c.material.exprs.op(Op::MatMul, ir::vectorType(mn), {padded, m});
+  return ir::componentCount(type) == mn ? product : c.b.convert(product, type);
+}
+
+// --- pbrlib value nodes ---
+
+ExprId roughnessAnisotropy(Context& c, const NodeRef& n, std::string_view, Type) {
+  return burleyAlpha(c.b, in(c, n, "roughness"), in(c, n, "anisotropy"));
+}
+ExprId roughnessDual(Context& c, const NodeRef& n, std::string_view, Type) {
+  // Two roughnesses squared to alphas (MaterialX "roughness_dual"), clamped to [1e-7, 1] as above.
+  ExprId r = in(c, n, "roughness");
+  return c.b.clamp(c.b.mul(r, r), c.b.f(1e-7f), c.b.f(1.0f));
+}
+ExprId glossinessAnisotropy(Context& c, const NodeRef& n, std::string_view, Type) {
+  // roughness = 1 - glossiness, then as roughness_anisotropy.
+  return burleyAlpha(c.b, c.b.oneMinus(in(c, n, "glossiness")), in(c, n, "anisotropy"));
+}
+ExprId artisticIor(Context& c, const NodeRef& n, std::string_view output, Type) {
+  auto [ior, extinction] = gulbrandsenIor(c.b, in(c, n, "reflectivity"), in(c, n, "edge_color"));
+  return output == "extinction" ? extinction : ior;
+}
+
+using RuleTable = std::unordered_map<std::string_view, ValueRule>;
+
+const RuleTable& rules() {
+  static const RuleTable table = {
+      {"add", add},
+      {"subtract", subtract},
+      {"multiply", multiply},
+      {"divide", divide},
+      {"modulo", modulo},
+      {"power", power},
+      {"safepower", safepower},
+      {"min", minimum},
+      {"max", maximum},
+      {"atan2", atan2},
+      {"absval", unaryRule<Op::Abs>},
+      {"floor", unaryRule<Op::Floor>},
+      {"ceil", unaryRule<Op::Ceil>},
+      {"round", unaryRule<Op::Round>},
+      {"sign", unaryRule<Op::Sign>},
+      {"sqrt", unaryRule<Op::Sqrt>},
+      {"exp", unaryRule<Op::Exp>},
+      {"ln", unaryRule<Op::Ln>},
+      {"sin", unaryRule<Op::Sin>},
+      {"cos", unaryRule<Op::Cos>},
+      {"tan", unaryRule<Op::Tan>},
+      {"asin", unaryRule<Op::Asin>},
+      {"acos", unaryRule<Op::Acos>},
+      {"fract", fract},
+      {"magnitude", magnitude},
+      {"distance", distance},
+      {"dotproduct", dotproduct},
+      {"crossproduct", crossproduct},
+      {"invert", invert},
+      {"clamp", clamp},
+      {"mix", mix},
+      {"remap", remap},
+      {"range", range},
+      {"smoothstep", smoothstep},
+      {"normalize", normalize},
+      {"mincomponent", mincomponent},
+      {"maxcomponent", maxcomponent},
+      {"ifgreater", conditional<Op::Greater>},
+      {"ifgreatereq", conditional<Op::GreaterEq>},
+      {"ifequal", conditional<Op::Equal>},
+      {"switch", switchRule},
+      {"and", logicAnd},
+      {"or", logicOr},
+      {"not", logicNot},
+      {"xor", logicXor},
+      {"constant", constant},
+      {"dot", identity},
+      {"convert", convert},
+      {"combine2", combine},
+      {"combine3", combine},
+      {"combine4", combine},
+      {"separate2", separate},
+      {"separate3", separate},
+      {"separate4", separate},
+      {"extract", extract},
+      {"position", position},
+      {"normal", normal},
+      {"tangent", tangent},
+      {"bitangent", bitangent},
+      {"texcoord", texcoord},
+      {"geomcolor", geomcolor},
+      {"geompropvalue", geompropvalue},
+      {"geompropvalueuniform", geompropvalue},
+      {"frame", frame},
+      {"time", time},
+      {"image", image},
+      {"tiledimage", tiledimage},
+      {"hextiledimage", hextiledimage},
+      {"place2d", place2d},
+      {"normalmap", normalmap},
+      {"noise2d", noise2d},
+      {"noise3d", noise3d},
+      {"fractal3d", fractal3d},
+      {"cellnoise2d", cellnoise2d},
+      {"cellnoise3d", cellnoise3d},
+      {"worleynoise2d", worleynoise2d},
+      {"worleynoise3d", worleynoise3d},
+      {"luminance", luminance},
+      {"rgbtohsv", rgbtohsv},
+      {"hsvtorgb", hsvtorgb},
+      {"saturate", saturate},
+      {"hsvadjust", hsvadjust},
+      {"contrast", contrast},
+      {"rotate2d", rotate2d},
+      {"rotate3d", rotate3d},
+      {"transformpoint", transform<Op::TransformPoint>},
+      {"transformvector", transform<Op::TransformVector>},
+      {"transformnormal", transform<Op::TransformNormal>},
+      {"transformmatrix", transformmatrix},
+      {"roughness_anisotropy", roughnessAnisotropy},
+      {"roughness_dual", roughnessDual},
+      {"glossiness_anisotropy", glossinessAnisotropy},
+      {"artistic_ior", artisticIor},
+  };
+  return table;
+}
+
+}  // namespace
+
+ValueRule findValueRule(std::string_view category) {
+  auto it = rules().find(category);
+  return it == rules().end() ? nullptr : it->second;
+}
+
+}  // namespace mxc::lower
