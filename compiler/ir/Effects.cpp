@@ -90,7 +90,10 @@ void summarizeEffects(Material& m) {
           case InterfaceKind::Sheen: add(iface.sheenModel == SheenModel::Zeltner ? "fuzz" : "sheen", coverageOr(n)); break;
         }
         if (iface.thinFilm.present()) {
-          add("thin_film", iface.thinFilm.coverage.present() ? iface.thinFilm.coverage.origin : iface.thinFilm.thickness.origin);
+          const ThinFilm& film = iface.thinFilm;
+          add("thin_film", film.coverage.present() ? film.coverage.origin
+                           : film.origin.location.valid() ? film.origin
+                                                          : film.thickness.origin);
         }
         if (const Param* alpha = iface.slots.find(Slot::Alpha); alpha && anisotropic(m, alpha->value)) {
           add("anisotropy", alpha->origin);

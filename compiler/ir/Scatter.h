@@ -137,6 +137,7 @@ struct ThinFilm {
   Param thickness;  ///< nanometres
   Param ior;
   Param coverage;
+  Origin origin;  ///< the input that switches the film on (thin_film_weight), for the effect summary
   bool present() const { return thickness.present(); }
 };
 

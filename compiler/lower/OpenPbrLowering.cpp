@@ -60,6 +60,7 @@ struct OpenPbr {
     film.thickness = thickness;
     film.ior = p("thin_film_ior");
     film.coverage = weight;
+    film.origin = weight.origin;
     return film;
   }
 
@@ -78,7 +79,7 @@ struct OpenPbr {
     Param tint = clamped("transmission_color", 0.0f, 1.0f);
     tint.value = b.select(b.greater(depth.value, b.f(0.0f)), b.vec(Type::Vec3, 1.0f), tint.value);
     i.slots.set(Slot::TransmissionTint, tint);
-    i.slots.set(Slot::Alpha, {alpha, at("specular_roughness")});
+    i.slots.set(Slot::Alpha, {alpha, roughnessOrigin("specular_roughness", "specular_roughness_anisotropy")});
     i.slots.set(Slot::Normal, p("geometry_normal"));
     i.slots.set(Slot::Tangent, p("geometry_tangent"));
     i.thinFilm = thinFilm();
@@ -99,7 +100,7 @@ struct OpenPbr {
     i.slots.set(Slot::F90, {b.vec(Type::Vec3, 1.0f), at("specular_color")});
     i.slots.set(Slot::Exponent, {b.f(5.0f), at("specular_color")});
     i.slots.set(Slot::FresnelScale, nonNegative("specular_weight"));
-    i.slots.set(Slot::Alpha, {alpha, at("specular_roughness")});
+    i.slots.set(Slot::Alpha, {alpha, roughnessOrigin("specular_roughness", "specular_roughness_anisotropy")});
     i.slots.set(Slot::Normal, p("geometry_normal"));
     i.slots.set(Slot::Tangent, p("geometry_tangent"));
     i.thinFilm = thinFilm();
@@ -175,6 +176,12 @@ struct OpenPbr {
     return c.material.slab(dielectricTop, medium, ir::kNone, {}, at("transmission_weight"));
   }
 
+  /// Where a roughness comes from: its anisotropy input when that is not the constant 0 (the
+  /// input that makes the lobe anisotropic), else the roughness input.
+  ir::Origin roughnessOrigin(std::string_view roughness, std::string_view anisotropy) {
+    return isConstant(p(anisotropy), 0.0f) ? at(roughness) : at(anisotropy);
+  }
+
   /// M_base_substrate for one thin-walled mode.
   Index baseSubstrate(bool thinWalled) {
     ExprId alpha = openPbrAlpha(b, p("specular_roughness").value, p("specular_roughness_anisotropy").value);
@@ -222,7 +229,7 @@ struct OpenPbr {
     coat.origin = c.nodeOrigin(n);
     coat.slots.set(Slot::Ior, p("coat_ior"));
     coat.slots.set(Slot::Alpha, {openPbrAlpha(b, p("coat_roughness").value, p("coat_roughness_anisotropy").value),
-                                 at("coat_roughness")});
+                                 roughnessOrigin("coat_roughness", "coat_roughness_anisotropy")});
     coat.slots.set(Slot::Normal, p("geometry_coat_normal"));
     coat.slots.set(Slot::Tangent, p("geometry_coat_tangent"));
     coat.slots.set(Slot::Darkening, clamped("coat_darkening", 0.0f, 1.0f));

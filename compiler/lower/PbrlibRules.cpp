@@ -48,6 +48,7 @@ void microfacet(Context& c, ir::Interface& i, const NodeRef& n) {
   if (thickness.present() && !c.material.exprs.isConstantEqual(thickness.value, 0.0f)) {
     i.thinFilm.thickness = thickness;
     i.thinFilm.ior = c.param(n, "thinfilm_ior");
+    i.thinFilm.origin = thickness.origin;
   }
 }
 

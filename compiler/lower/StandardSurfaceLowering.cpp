@@ -83,13 +83,16 @@ struct StandardSurface {
     Param tint = clamped("transmission_color", 0.0f, 1.0f);
     tint.value = b.select(b.greater(depth.value, b.f(0.0f)), b.vec(Type::Vec3, 1.0f), tint.value);
     i.slots.set(Slot::TransmissionTint, tint);
-    i.slots.set(Slot::Alpha, {burleyAlpha(b, roughness, p("specular_anisotropy").value), at(origin)});
+    const bool anisotropic = !isConstant(p("specular_anisotropy"), 0.0f);
+    i.slots.set(Slot::Alpha, {burleyAlpha(b, roughness, p("specular_anisotropy").value),
+                              anisotropic ? at("specular_anisotropy") : at(origin)});
     i.slots.set(Slot::Normal, p("normal"));
     i.slots.set(Slot::Tangent, {rotatedTangent("tangent", "specular_rotation", "normal"), at("tangent")});
     Param thickness = nonNegative("thin_film_thickness");
     if (!isConstant(thickness, 0.0f)) {
       i.thinFilm.thickness = thickness;
       i.thinFilm.ior = p("thin_film_IOR");
+      i.thinFilm.origin = thickness.origin;
     }
     return c.material.addInterface(std::move(i));
   }
@@ -183,6 +186,7 @@ struct StandardSurface {
     if (!isConstant(thickness, 0.0f)) {
       metal.thinFilm.thickness = thickness;
       metal.thinFilm.ior = p("thin_film_IOR");
+      metal.thinFilm.origin = thickness.origin;
     }
     Index metalSlab = c.material.slab(c.material.addInterface(std::move(metal)), ir::kNone, ir::kNone, {}, at("metalness"));
     return c.material.mix(specularMix, metalSlab, clamped("metalness", 0.0f, 1.0f), at("metalness"));

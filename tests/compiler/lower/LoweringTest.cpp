@@ -1,0 +1,362 @@
+// Lowering to the slab IR: the structures the specifications describe, the effect summary,
+// the media and roughness formulas, pbrlib graphs, and lowering errors.
+
+#include "compiler/lower/Lowering.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "compiler/ir/Effects.h"
+#include "compiler/ir/Evaluate.h"
+#include "compiler/ir/Print.h"
+#include "compiler/ir/Walk.h"
+#include "compiler/ir/passes/Pass.h"
+#include "support/TestSupport.h"
+
+namespace mxc::test {
+namespace {
+
+using ir::Slot;
+
+struct Lowered {
+  std::unique_ptr<Context> context;
+  std::vector<ir::Material> materials;
+
+  const ir::Material& only() const { return materials.at(0); }
+  std::vector<std::string> effects(size_t i = 0) const {
+    std::vector<std::string> out;
+    for (const ir::Effect& e : materials.at(i).effects) out.push_back(e.name);
+    return out;
+  }
+  const ir::Effect* effect(const std::string& name, size_t i = 0) const {
+    for (const ir::Effect& e : materials.at(i).effects) {
+      if (e.name == name) return &e;
+    }
+    return nullptr;
+  }
+};
+
+Lowered lower(const std::string& text) {
+  Lowered out;
+  out.context = std::make_unique<Context>();
+  resolve::ResolvedDocument r = out.context->resolve(text);
+  EXPECT_FALSE(out.context->diagnostics.hasErrors()) << out.context->diagnostics.format();
+  out.materials = lower::lowerDocument(r, {}, out.context->diagnostics);
+  for (ir::Material& m : out.materials) {
+    ir::runPasses(m);
+    ir::summarizeEffects(m);
+  }
+  return out;
+}
+
+Lowered lowerFile(const std::string& relative) {
+  Lowered out;
+  out.context = std::make_unique<Context>();
+  const doc::Document* d = out.context->loader.loadFile(sharedDir() / relative);
+  EXPECT_NE(d, nullptr);
+  resolve::ResolvedDocument r = resolve::resolveDocument(*d, out.context->libraries.top(), out.context->diagnostics);
+  out.materials = lower::lowerDocument(r, {}, out.context->diagnostics);
+  EXPECT_FALSE(out.context->diagnostics.hasErrors()) << out.context->diagnostics.format();
+  for (ir::Material& m : out.materials) {
+    ir::runPasses(m);
+    ir::summarizeEffects(m);
+  }
+  return out;
+}
+
+/// An open_pbr_surface material with the given <input> elements.
+std::string openPbr(const std::string& inputs) {
+  return mtlx("  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n" + inputs +
+              "  </open_pbr_surface>\n  <surfacematerial name=\"m\" type=\"material\">\n"
+              "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"s\"/>\n  </surfacematerial>\n");
+}
+
+std::string in(const std::string& name, const std::string& type, const std::string& value) {
+  return "    <input name=\"" + name + "\" type=\"" + type + "\" value=\"" + value + "\"/>\n";
+}
+
+std::vector<float> constant(const ir::Material& m, ir::ExprId e) {
+  std::optional<ir::Constant> c = ir::evaluateExpr(m.exprs, e);
+  return c ? c->v : std::vector<float>{};
+}
+
+/// The first medium / interface of a kind found in the material's tree.
+const ir::Medium* findMedium(const ir::Material& m, ir::Medium::Extent extent) {
+  for (ir::Index i : ir::reachableNodes(m)) {
+    ir::Index md = m.nodes[i].medium;
+    if (md != ir::kNone && m.media[md].extent == extent) return &m.media[md];
+  }
+  return nullptr;
+}
+
+const ir::Interface* findInterface(const ir::Material& m, ir::InterfaceKind kind) {
+  for (ir::Index i : ir::reachableNodes(m)) {
+    ir::Index t = m.nodes[i].top;
+    if (t != ir::kNone && m.interfaces[t].kind == kind) return &m.interfaces[t];
+  }
+  return nullptr;
+}
+
+TEST(OpenPbrLowering, DefaultIsGlossOverDiffuseWithMinimalEffects) {
+  Lowered l = lowerFile("corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx");
+  ASSERT_EQ(l.materials.size(), 1u);
+  EXPECT_EQ(ir::structureSignature(l.only()), "slab(dielectric:RT,-,slab(diffuse,-,-))");
+  EXPECT_EQ(l.effects(), (std::vector<std::string>{"diffuse", "specular"}));
+  const ir::Interface* diffuse = findInterface(l.only(), ir::InterfaceKind::Diffuse);
+  ASSERT_NE(diffuse, nullptr);
+  EXPECT_EQ(diffuse->diffuseModel, ir::DiffuseModel::EON);  // OpenPBR "Glossy-diffuse"
+  EXPECT_EQ(constant(l.only(), diffuse->slots.value(Slot::Color)), (std::vector<float>{0.8f, 0.8f, 0.8f}));
+}
+
+TEST(OpenPbrLowering, GlassIsADielectricOverAMedium) {
+  Lowered l = lowerFile("corpus/materialx/examples/OpenPbr/open_pbr_glass.mtlx");
+  EXPECT_EQ(ir::structureSignature(l.only()), "slab(dielectric:RT,bulk,-)");
+  EXPECT_EQ(l.effects(), (std::vector<std::string>{"dispersion", "specular", "transmission"}));
+  const ir::Medium* bulk = findMedium(l.only(), ir::Medium::Extent::Bulk);
+  ASSERT_NE(bulk, nullptr);
+  EXPECT_EQ(constant(l.only(), bulk->slots.value(Slot::Ior)), std::vector<float>{1.52f});
+  EXPECT_EQ(constant(l.only(), bulk->slots.value(Slot::AbbeNumber)), std::vector<float>{64.0f});  // 64 / scale 1
+}
+
+TEST(OpenPbrLowering, CoatWeightZeroHasNoCoat) {
+  Lowered without = lower(openPbr(in("coat_weight", "float", "0") + in("coat_color", "color3", "0.5, 0.2, 0.1")));
+  EXPECT_EQ(ir::structureSignature(without.only()), "slab(dielectric:RT,-,slab(diffuse,-,-))");
+  EXPECT_EQ(without.effect("coat"), nullptr);
+  Lowered with = lower(openPbr(in("coat_weight", "float", "1") + in("coat_color", "color3", "0.25, 0.25, 0.25")));
+  EXPECT_EQ(ir::structureSignature(with.only()), "slab(dielectric:RT,-,slab(dielectric:RT,-,slab(diffuse,-,-)))");
+  ASSERT_NE(with.effect("coat"), nullptr);
+  EXPECT_EQ(with.effect("coat")->origin.input, "coat_weight");
+  // The coat medium: unit thickness, mu_a = -ln(coat_color) / 2 (coat_color = T^2, OpenPBR "Coat").
+  const ir::Medium* coat = findMedium(with.only(), ir::Medium::Extent::Finite);
+  ASSERT_NE(coat, nullptr);
+  EXPECT_NEAR(constant(with.only(), coat->slots.value(Slot::Absorption))[0], -std::log(0.25f) / 2, 1e-6);
+}
+
+TEST(OpenPbrLowering, EachFeatureIsAnEffectKeptByItsInput) {
+  struct Case {
+    std::string inputs;
+    std::string effect;
+    std::string input;
+  };
+  const Case cases[] = {
+      {in("fuzz_weight", "float", "0.5"), "fuzz", "fuzz_weight"},
+      {in("thin_film_weight", "float", "1") + in("thin_film_thickness", "float", "0.4"), "thin_film", "thin_film_weight"},
+      {in("transmission_weight", "float", "1"), "transmission", "transmission_weight"},
+      {in("subsurface_weight", "float", "1"), "subsurface", "subsurface_weight"},
+      {in("emission_luminance", "float", "100"), "emission", "emission_luminance"},
+      {in("specular_roughness_anisotropy", "float", "0.5"), "anisotropy", "specular_roughness_anisotropy"},
+      {in("geometry_opacity", "float", "0.5"), "opacity", "geometry_opacity"},
+      {in("geometry_thin_walled", "boolean", "true"), "thin_walled", "geometry_thin_walled"},
+      {in("base_metalness", "float", "1"), "metal", "base_metalness"},
+      {in("transmission_weight", "float", "1") + in("transmission_dispersion_scale", "float", "0.5"), "dispersion",
+       "transmission_dispersion_scale"},
+      {in("transmission_weight", "float", "1") + in("transmission_depth", "float", "1") +
+           in("transmission_color", "color3", "0.5, 0.7, 0.9"),
+       "volume", "transmission_color"},
+  };
+  for (const Case& c : cases) {
+    const std::string text = openPbr(c.inputs);
+    Lowered l = lower(text);
+    const ir::Effect* e = l.effect(c.effect);
+    ASSERT_NE(e, nullptr) << c.effect << " in " << fmt::format("{}", fmt::join(l.effects(), ","));
+    EXPECT_EQ(e->origin.input, c.input) << c.effect;
+    // The origin is the line of that input in the document.
+    const size_t at = text.find("name=\"" + c.input + "\"");
+    const auto line = static_cast<uint32_t>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n') + 1);
+    EXPECT_EQ(e->origin.location.line(), line) << c.effect;
+  }
+}
+
+TEST(OpenPbrLowering, FullTreeWhenEveryWeightIsATexture) {
+  // With weights that are not constants nothing is pruned: the OpenPBR model tree in full,
+  // distributed into slab stacks (OpenPBR "Model").
+  std::string inputs;
+  for (const char* w : {"base_metalness", "transmission_weight", "subsurface_weight", "coat_weight", "fuzz_weight",
+                        "geometry_opacity"}) {
+    inputs += std::string("    <input name=\"") + w + "\" type=\"float\" nodename=\"w\"/>\n";
+  }
+  inputs += "    <input name=\"emission_luminance\" type=\"float\" value=\"1\"/>\n";
+  Lowered l = lower(mtlx("  <texcoord name=\"uv\" type=\"vector2\"/>\n  <extract name=\"w\" type=\"float\">\n"
+                         "    <input name=\"in\" type=\"vector2\" nodename=\"uv\"/>\n  </extract>\n"
+                         "  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n" +
+                         inputs + "  </open_pbr_surface>\n  <surfacematerial name=\"m\" type=\"material\">\n"
+                         "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"s\"/>\n  </surfacematerial>\n"));
+  std::string sig = ir::structureSignature(l.only());
+  EXPECT_EQ(sig,
+            "mix(ambient,"
+            "mix(mix(mix("
+            "slab(sheen,-,slab(dielectric:RT,-,emissive(slab(dielectric:RT,-,slab(diffuse,-,-))),cov),cov),"
+            "slab(sheen,-,slab(dielectric:RT,-,emissive(slab(dielectric:RT,bulk,-)),cov),cov)),"
+            "slab(sheen,-,slab(dielectric:RT,-,emissive(slab(dielectric:RT,bulk,-)),cov),cov)),"
+            "slab(sheen,-,slab(dielectric:RT,-,emissive(slab(schlick:R,-,-)),cov),cov)))")
+      << sig;
+}
+
+TEST(OpenPbrLowering, AnisotropicAlphaFollowsTheSpecFormula) {
+  // alpha_t = r^2 sqrt(2 / (1 + (1 - a)^2)), alpha_b = (1 - a) alpha_t (OpenPBR "Microfacet model").
+  Lowered l = lower(openPbr(in("specular_roughness", "float", "0.5") + in("specular_roughness_anisotropy", "float", "0.5")));
+  const ir::Interface* d = findInterface(l.only(), ir::InterfaceKind::Dielectric);
+  std::vector<float> alpha = constant(l.only(), d->slots.value(Slot::Alpha));
+  ASSERT_EQ(alpha.size(), 2u);
+  EXPECT_NEAR(alpha[0], 0.25f * std::sqrt(2.0f / 1.25f), 1e-6);
+  EXPECT_NEAR(alpha[1], 0.5f * alpha[0], 1e-6);
+  EXPECT_NEAR(alpha[0] * alpha[0] + alpha[1] * alpha[1], 2 * std::pow(0.5f, 4.0f), 1e-6);
+}
+
+TEST(OpenPbrLowering, SubsurfaceMediumFromColourAndRadius) {
+  Lowered l = lower(openPbr(in("subsurface_weight", "float", "1") + in("subsurface_color", "color3", "0.8, 0.5, 0.2") +
+                            in("subsurface_radius", "float", "2") + in("subsurface_radius_scale", "color3", "1, 1, 1")));
+  const ir::Medium* sss = findMedium(l.only(), ir::Medium::Extent::Bulk);
+  ASSERT_NE(sss, nullptr);
+  std::vector<float> absorption = constant(l.only(), sss->slots.value(Slot::Absorption));
+  std::vector<float> scattering = constant(l.only(), sss->slots.value(Slot::Scattering));
+  for (int c = 0; c < 3; ++c) {
+    // mu_t = 1 / r, and van de Hulst's single-scattering albedo for C (OpenPBR "Subsurface").
+    const float C = std::vector<float>{0.8f, 0.5f, 0.2f}[c];
+    const float s = 4.09712f + 4.20863f * C - std::sqrt(9.59217f + 41.6808f * C + 17.7126f * C * C);
+    const float albedo = 1 - s * s;
+    EXPECT_NEAR(absorption[c] + scattering[c], 0.5f, 1e-5) << c;
+    EXPECT_NEAR(scattering[c] / 0.5f, albedo, 1e-5) << c;
+  }
+}
+
+TEST(OpenPbrLowering, TransmissionMediumFromColourAndDepth) {
+  Lowered l = lower(openPbr(in("transmission_weight", "float", "1") + in("transmission_color", "color3", "0.5, 0.5, 0.5") +
+                            in("transmission_depth", "float", "2") + in("transmission_scatter", "color3", "0.1, 0.2, 0.4")));
+  const ir::Medium* bulk = findMedium(l.only(), ir::Medium::Extent::Bulk);
+  ASSERT_NE(bulk, nullptr);
+  std::vector<float> mua = constant(l.only(), bulk->slots.value(Slot::Absorption));
+  std::vector<float> mus = constant(l.only(), bulk->slots.value(Slot::Scattering));
+  // mu_t = -ln(0.5)/2 = 0.3466, mu_s = S/2; mu_a = mu_t - mu_s is positive here, so no grey shift.
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(mua[c] + mus[c], -std::log(0.5f) / 2, 1e-6) << c;
+  EXPECT_NEAR(mus[2], 0.2f, 1e-6);
+  // With scattering above the extinction, mu_a is shifted by grey so that it stays >= 0.
+  Lowered shifted = lower(openPbr(in("transmission_weight", "float", "1") + in("transmission_color", "color3", "0.9, 0.9, 0.9") +
+                                  in("transmission_depth", "float", "1") + in("transmission_scatter", "color3", "1, 0, 0")));
+  std::vector<float> mua2 = constant(shifted.only(), findMedium(shifted.only(), ir::Medium::Extent::Bulk)->slots.value(Slot::Absorption));
+  EXPECT_NEAR(*std::min_element(mua2.begin(), mua2.end()), 0.0f, 1e-6);
+}
+
+TEST(OpenPbrLowering, TexturedCoverageStaysAParameter) {
+  Lowered l = lower(mtlx("  <texcoord name=\"uv\" type=\"vector2\"/>\n  <extract name=\"w\" type=\"float\">\n"
+                         "    <input name=\"in\" type=\"vector2\" nodename=\"uv\"/>\n  </extract>\n"
+                         "  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n"
+                         "    <input name=\"coat_weight\" type=\"float\" nodename=\"w\"/>\n  </open_pbr_surface>\n"
+                         "  <surfacematerial name=\"m\" type=\"material\">\n"
+                         "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"s\"/>\n  </surfacematerial>\n"));
+  EXPECT_EQ(ir::structureSignature(l.only()), "slab(dielectric:RT,-,slab(dielectric:RT,-,slab(diffuse,-,-)),cov)");
+  const ir::ScatterNode& coat = l.only().nodes[l.only().root];
+  EXPECT_EQ(coat.coverage.origin.input, "coat_weight");
+  EXPECT_EQ(l.only().exprs[coat.coverage.value].op, ir::Op::Clamp);
+}
+
+TEST(StandardSurfaceLowering, SheenAndMetalAndCoat) {
+  Lowered l = lowerFile("corpus/materialx/examples/StandardSurface/standard_surface_velvet.mtlx");
+  EXPECT_NE(l.effect("sheen"), nullptr);
+  const ir::Interface* sheen = findInterface(l.only(), ir::InterfaceKind::Sheen);
+  ASSERT_NE(sheen, nullptr);
+  EXPECT_EQ(sheen->sheenModel, ir::SheenModel::ContyKulla);
+  Lowered gold = lowerFile("corpus/materialx/examples/StandardSurface/standard_surface_gold.mtlx");
+  const ir::Interface* metal = findInterface(gold.only(), ir::InterfaceKind::Conductor);
+  ASSERT_NE(metal, nullptr);
+  // The conductor's complex IOR comes from the artistic colours (Gulbrandsen 2014): n, k > 0.
+  EXPECT_GT(constant(gold.only(), metal->slots.value(Slot::ComplexIor))[0], 0.0f);
+  EXPECT_NE(gold.effect("metal"), nullptr);
+}
+
+TEST(PbrlibLowering, LayerAndMixBuildStacks) {
+  Lowered l = lower(mtlx(
+      "  <oren_nayar_diffuse_bsdf name=\"d\" type=\"BSDF\"/>\n"
+      "  <dielectric_bsdf name=\"coat\" type=\"BSDF\"><input name=\"weight\" type=\"float\" value=\"0.7\"/></dielectric_bsdf>\n"
+      "  <conductor_bsdf name=\"metal\" type=\"BSDF\"/>\n"
+      "  <mix name=\"base\" type=\"BSDF\">\n    <input name=\"fg\" type=\"BSDF\" nodename=\"metal\"/>\n"
+      "    <input name=\"bg\" type=\"BSDF\" nodename=\"d\"/>\n    <input name=\"mix\" type=\"float\" value=\"0.25\"/>\n  </mix>\n"
+      "  <layer name=\"coated\" type=\"BSDF\">\n    <input name=\"top\" type=\"BSDF\" nodename=\"coat\"/>\n"
+      "    <input name=\"base\" type=\"BSDF\" nodename=\"base\"/>\n  </layer>\n"
+      "  <surface name=\"surf\" type=\"surfaceshader\"><input name=\"bsdf\" type=\"BSDF\" nodename=\"coated\"/></surface>\n"
+      "  <surfacematerial name=\"m\" type=\"material\">\n"
+      "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"surf\"/>\n  </surfacematerial>\n"));
+  // layer(coat weighted 0.7, mix(d, metal, 0.25)): the weight is the coat slab's coverage, and
+  // the slab distributes over the mix (mix(fg, bg, w) has bg on the weight-0 side).
+  EXPECT_EQ(ir::structureSignature(l.only()),
+            "mix(slab(dielectric:RT,-,slab(diffuse,-,-),cov),slab(dielectric:RT,-,slab(conductor,-,-),cov))");
+  // The dielectric is a coat over the metal and the gloss of the plastic part.
+  EXPECT_EQ(l.effects(), (std::vector<std::string>{"coat", "diffuse", "metal", "specular"}));
+}
+
+TEST(PbrlibLowering, AddIsFlaggedAsNotEnergyBounded) {
+  Lowered l = lower(mtlx(
+      "  <oren_nayar_diffuse_bsdf name=\"a\" type=\"BSDF\"/>\n  <sheen_bsdf name=\"b\" type=\"BSDF\"/>\n"
+      "  <add name=\"sum\" type=\"BSDF\">\n    <input name=\"in1\" type=\"BSDF\" nodename=\"a\"/>\n"
+      "    <input name=\"in2\" type=\"BSDF\" nodename=\"b\"/>\n  </add>\n"
+      "  <surface name=\"surf\" type=\"surfaceshader\"><input name=\"bsdf\" type=\"BSDF\" nodename=\"sum\"/></surface>\n"));
+  EXPECT_EQ(ir::structureSignature(l.only()), "add(slab(diffuse,-,-),slab(sheen,-,-))");
+  ASSERT_FALSE(l.only().notes.empty());
+  EXPECT_NE(l.only().notes[0].message.find("not energy-bounded"), std::string::npos);
+  EXPECT_NE(l.effect("unbounded_sum"), nullptr);
+}
+
+TEST(PbrlibLowering, ThinFilmMixAndVolumeLayer) {
+  Lowered l = lowerFile("corpus/materialx/testsuite/pbrlib/bsdf/thin_film_bsdf.mtlx");
+  ASSERT_GE(l.materials.size(), 1u);
+  EXPECT_EQ(ir::structureSignature(l.materials[0]), "slab(dielectric:R+film,-,-)");
+  EXPECT_NE(l.effect("thin_film"), nullptr);
+}
+
+TEST(Lowering, NodeGraphImplementationsAreInlined) {
+  Lowered l = lower(mtlx(
+      "  <nodedef name=\"ND_half\" node=\"half\">\n    <input name=\"in\" type=\"color3\" value=\"1, 1, 1\"/>\n"
+      "    <output name=\"out\" type=\"color3\"/>\n  </nodedef>\n"
+      "  <nodegraph name=\"NG_half\" nodedef=\"ND_half\">\n    <multiply name=\"h\" type=\"color3\">\n"
+      "      <input name=\"in1\" type=\"color3\" interfacename=\"in\"/>\n      <input name=\"in2\" type=\"float\" value=\"0.5\"/>\n"
+      "    </multiply>\n    <output name=\"out\" type=\"color3\" nodename=\"h\"/>\n  </nodegraph>\n"
+      "  <half name=\"c\" type=\"color3\"><input name=\"in\" type=\"color3\" value=\"0.6, 0.4, 0.2\"/></half>\n" +
+      std::string("  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n"
+                  "    <input name=\"base_color\" type=\"color3\" nodename=\"c\"/>\n  </open_pbr_surface>\n"
+                  "  <surfacematerial name=\"m\" type=\"material\">\n"
+                  "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"s\"/>\n  </surfacematerial>\n")));
+  const ir::Interface* diffuse = findInterface(l.only(), ir::InterfaceKind::Diffuse);
+  ASSERT_NE(diffuse, nullptr);
+  std::vector<float> color = constant(l.only(), diffuse->slots.value(Slot::Color));
+  ASSERT_EQ(color.size(), 3u);
+  EXPECT_FLOAT_EQ(color[0], 0.3f);
+  EXPECT_FLOAT_EQ(color[2], 0.1f);
+}
+
+TEST(Lowering, UnsupportedNodeIsAnErrorAtItsElement) {
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(mtlx(
+      "  <chiang_hair_bsdf name=\"hair\" type=\"BSDF\"/>\n"
+      "  <surface name=\"surf\" type=\"surfaceshader\"><input name=\"bsdf\" type=\"BSDF\" nodename=\"hair\"/></surface>\n"));
+  ASSERT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  lower::lowerDocument(r, {}, context.diagnostics);
+  Diagnostic e = context.firstError();
+  EXPECT_NE(e.message.find("<chiang_hair_bsdf> (nodedef ND_chiang_hair_bsdf) is not supported"), std::string::npos)
+      << e.message;
+  EXPECT_EQ(e.location.line(), 3u);
+  EXPECT_EQ(e.location.lineColumn().column, 3u);
+}
+
+TEST(Lowering, EveryCorpusMaterialLowers) {
+  // The acceptance walk: every corpus document lowers without error, and every material has
+  // a root and an effect list (at least one effect unless it is black).
+  size_t materials = 0;
+  for (const char* dir : {"corpus/materialx/examples/OpenPbr", "corpus/materialx/examples/StandardSurface",
+                          "corpus/openpbr-presets", "corpus/materialx/testsuite/pbrlib/bsdf"}) {
+    for (const auto& e : std::filesystem::directory_iterator(sharedDir() / dir)) {
+      if (e.path().extension() != ".mtlx") continue;
+      Lowered l = lowerFile(std::filesystem::relative(e.path(), sharedDir()).string());
+      for (const ir::Material& m : l.materials) {
+        EXPECT_NE(m.root, ir::kNone) << e.path();
+        ++materials;
+      }
+    }
+  }
+  EXPECT_GE(materials, 90u);
+}
+
+}  // namespace
+}  // namespace mxc::test
