@@ -187,5 +187,48 @@ TEST(InspectCommand, IncludesAndLooksAreReported) {
   EXPECT_NE(r.out.find("material Tiled_Wood"), std::string::npos);
 }
 
+TEST(InspectCommand, IrTreeAndJson) {
+  CommandRun text = mxc("inspect --ir " + corpus("materialx/examples/OpenPbr/open_pbr_glass.mtlx"));
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("material Glass (open_pbr_surface, line 6)"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("effects: dispersion (transmission_dispersion_scale line 11), specular"), std::string::npos);
+  EXPECT_NE(text.out.find("top: #0 dielectric RT ior=1.52"), std::string::npos);
+  EXPECT_NE(text.out.find("medium: bulk ior=1.52 abbe_number=64"), std::string::npos) << text.out;
+
+  CommandRun json = mxc("inspect --ir --json " + corpus("materialx/examples/OpenPbr/open_pbr_carpaint.mtlx"));
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  nlohmann::json j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["schema"], "mxc-ir-1");
+  ASSERT_EQ(j["materials"].size(), 1u);
+  const nlohmann::json& m = j["materials"][0];
+  EXPECT_EQ(m["name"], "Car_Paint");
+  std::vector<std::string> effects;
+  for (const auto& e : m["effects"]) effects.push_back(e["name"]);
+  EXPECT_EQ(effects, (std::vector<std::string>{"coat", "diffuse", "specular"}));
+  EXPECT_EQ(m["effects"][0]["input"], "coat_weight");
+  // slab(coat) over slab(gloss) over slab(diffuse): each slab has top, medium, base, coverage.
+  const nlohmann::json& coat = m["root"];
+  EXPECT_EQ(coat["kind"], "slab");
+  EXPECT_EQ(coat["top"]["kind"], "bsdf");
+  EXPECT_EQ(coat["top"]["bsdf"], "dielectric");
+  EXPECT_EQ(coat["top"]["scatter"], "RT");
+  EXPECT_EQ(coat["top"]["params"]["ior"]["value"], 1.6f);
+  EXPECT_TRUE(coat["medium"].is_null());
+  EXPECT_TRUE(coat.contains("coverage"));
+  EXPECT_EQ(coat["base"]["base"]["top"]["bsdf"], "diffuse");
+  EXPECT_EQ(coat["base"]["base"]["top"]["model"], "eon");
+  EXPECT_TRUE(coat["base"]["base"]["base"].is_null());
+}
+
+TEST(InspectCommand, IrThroughMaterialXGraphsNeedsTheirLibrary) {
+  const std::string mx = (sharedDir() / "reference/materialx/libraries").string();
+  CommandRun r = mxc("inspect --ir --shading-model-graphs --library " + mx + " " +
+                     corpus("materialx/examples/OpenPbr/open_pbr_default.mtlx"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("[dielectric_reflection "), std::string::npos) << r.out;  // from MaterialX's graph
+  EXPECT_EQ(mxc("inspect --shading-model-graphs " + corpus("materialx/examples/OpenPbr/open_pbr_default.mtlx")).exitCode,
+            2);  // needs --ir
+}
+
 }  // namespace
 }  // namespace mxc::test
