@@ -1,0 +1,137 @@
+#include "compiler/spirv/SpirvCompiler.h"
+
+#include <mutex>
+#include <regex>
+
+#include <fmt/format.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+#include <spirv-tools/libspirv.hpp>
+#include <spirv-tools/optimizer.hpp>
+
+namespace mxc::spirv {
+
+namespace {
+
+EShLanguage language(Stage stage) {
+  switch (stage) {
+    case Stage::Vertex: return EShLangVertex;
+    case Stage::Fragment: return EShLangFragment;
+    case Stage::Compute: return EShLangCompute;
+  }
+  return EShLangFragment;
+}
+
+/// glslang's process-wide state is initialised once (it is reference counted, never finalised
+/// here: the process ends first).
+void initialise() {
+  static std::once_flag once;
+  std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+/// Maps glslang's "ERROR: 0:LINE: message" lines to diagnostics at the generated line's origin.
+void reportLog(const GlslSource& source, const std::string& log, Diagnostics& diagnostics) {
+  static const std::regex line(R"((ERROR|WARNING): (?:\d+|[^:]*):(\d+): (.*))");
+  bool reported = false;
+  size_t start = 0;
+  while (start < log.size()) {
+    size_t end = log.find('\n', start);
+    if (end == std::string::npos) end = log.size();
+    std::string text = log.substr(start, end - start);
+    start = end + 1;
+    std::smatch m;
+    if (!std::regex_match(text, m, line) || m[1] != "ERROR") continue;
+    const size_t number = std::stoul(m[2]);
+    SourceLocation where = number >= 1 && number <= source.origins.size() ? source.origins[number - 1] : SourceLocation{};
+    diagnostics.error(where, fmt::format("GLSL for {} does not compile (generated line {}): {}", source.name, number,
+                                         m[3].str()));
+    reported = true;
+  }
+  if (!reported && !log.empty()) diagnostics.error({}, fmt::format("GLSL for {} does not compile: {}", source.name, log));
+}
+
+}  // namespace
+
+std::string_view stageName(Stage stage) {
+  switch (stage) {
+    case Stage::Vertex: return "vertex";
+    case Stage::Fragment: return "fragment";
+    case Stage::Compute: return "compute";
+  }
+  return "?";
+}
+
+std::optional<std::vector<uint32_t>> compile(const GlslSource& source, const CompileOptions& options,
+                                             Diagnostics& diagnostics) {
+  initialise();
+  const EShLanguage stage = language(source.stage);
+  glslang::TShader shader(stage);
+  const char* text = source.text.c_str();
+  shader.setStrings(&text, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
+  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
+  const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+  if (!shader.parse(GetDefaultResources(), 450, false, messages)) {
+    reportLog(source, shader.getInfoLog(), diagnostics);
+    return std::nullopt;
+  }
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages)) {
+    reportLog(source, program.getInfoLog(), diagnostics);
+    return std::nullopt;
+  }
+  std::vector<uint32_t> words;
+  spv::SpvBuildLogger logger;
+  glslang::SpvOptions spvOptions;
+  spvOptions.disableOptimizer = true;  // SPIRV-Tools' optimiser below, when asked for
+  glslang::GlslangToSpv(*program.getIntermediate(stage), words, &logger, &spvOptions);
+  if (std::string problems = logger.getAllMessages(); !problems.empty() && words.empty()) {
+    diagnostics.error({}, fmt::format("SPIR-V generation for {} failed: {}", source.name, problems));
+    return std::nullopt;
+  }
+  if (options.optimize) {
+    spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_1);
+    optimizer.RegisterPerformancePasses();
+    std::vector<uint32_t> optimized;
+    if (optimizer.Run(words.data(), words.size(), &optimized)) words = std::move(optimized);
+  }
+  if (std::string error = validate(words); !error.empty()) {
+    diagnostics.error({}, fmt::format("the SPIR-V of {} is not valid: {}", source.name, error));
+    return std::nullopt;
+  }
+  return words;
+}
+
+std::string validate(const std::vector<uint32_t>& words) {
+  spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
+  std::string message;
+  tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t& position, const char* text) {
+    message += fmt::format("{}{}", message.empty() ? "" : "; ", text);
+    (void)position;
+  });
+  if (tools.Validate(words)) return {};
+  return message.empty() ? "invalid module" : message;
+}
+
+size_t instructionCount(const std::vector<uint32_t>& words) {
+  size_t count = 0;
+  for (size_t i = 5; i < words.size();) {
+    const uint32_t wordCount = words[i] >> 16;
+    if (wordCount == 0) break;  // malformed: stop rather than loop
+    ++count;
+    i += wordCount;
+  }
+  return count;
+}
+
+std::string disassemble(const std::vector<uint32_t>& words) {
+  spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_1);
+  std::string text;
+  tools.Disassemble(words, &text, SPV_BINARY_TO_TEXT_OPTION_INDENT | SPV_BINARY_TO_TEXT_OPTION_FRIENDLY_NAMES);
+  return text;
+}
+
+}  // namespace mxc::spirv

@@ -1,0 +1,49 @@
+#pragma once
+/// \file
+/// GLSL to SPIR-V with glslang (used as a library), SPIR-V validation and optimisation with
+/// SPIRV-Tools. Errors in generated GLSL are mapped back to the document element that produced
+/// the failing line.
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/common/Diagnostic.h"
+
+namespace mxc::spirv {
+
+enum class Stage : uint8_t { Vertex, Fragment, Compute };
+
+std::string_view stageName(Stage stage);
+
+/// GLSL source with, for error mapping, the document location each generated line came from.
+struct GlslSource {
+  std::string text;
+  Stage stage = Stage::Fragment;
+  std::string name;  ///< for messages: "material Glass (fragment)"
+  /// origins[i] is where line i + 1 of `text` came from (invalid for library code).
+  std::vector<SourceLocation> origins;
+};
+
+struct CompileOptions {
+  bool optimize = false;  ///< run SPIRV-Tools' performance passes
+};
+
+/// Compiles GLSL 4.50 for Vulkan 1.1 / SPIR-V 1.3 and validates the module. On failure the
+/// errors go to `diagnostics` (at the document element behind the failing line when known)
+/// and nullopt is returned.
+std::optional<std::vector<uint32_t>> compile(const GlslSource& source, const CompileOptions& options,
+                                             Diagnostics& diagnostics);
+
+/// Validates a SPIR-V module for Vulkan 1.1; returns the validator's message, or "" when valid.
+std::string validate(const std::vector<uint32_t>& words);
+
+/// Number of instructions of a module (every word count/opcode header after the 5-word header).
+size_t instructionCount(const std::vector<uint32_t>& words);
+
+/// Disassembles a module (for --spirv-asm output and for tests).
+std::string disassemble(const std::vector<uint32_t>& words);
+
+}  // namespace mxc::spirv

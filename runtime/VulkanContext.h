@@ -1,0 +1,107 @@
+#pragma once
+/// \file
+/// The Vulkan device the harness runs on: instance, device selection (Mesa lavapipe by
+/// default), one queue for graphics and compute, validation-layer messages, and the few
+/// resource helpers the renderer and the evaluator share.
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace mxc::rt {
+
+/// A Vulkan call failed, or no usable device was found.
+class VulkanError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Throws VulkanError naming the call when `result` is not VK_SUCCESS.
+void check(VkResult result, const char* what);
+
+struct DeviceOptions {
+  /// A device by index or by a part of its name ("llvmpipe", "NVIDIA"); empty picks lavapipe
+  /// when present, else the first device.
+  std::string device;
+  /// Enable VK_LAYER_KHRONOS_validation and collect its messages (tests fail on any).
+  bool validation = false;
+};
+
+/// A host-visible, coherent buffer.
+struct Buffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkDeviceSize size = 0;
+  void* mapped = nullptr;
+};
+
+/// A 2D image with its view (and, for sampled images, a sampler).
+struct Image {
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+  VkSampler sampler = VK_NULL_HANDLE;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  uint32_t width = 0;
+  uint32_t height = 0;
+};
+
+class VulkanContext {
+ public:
+  explicit VulkanContext(const DeviceOptions& options = {});
+  ~VulkanContext();
+  VulkanContext(const VulkanContext&) = delete;
+  VulkanContext& operator=(const VulkanContext&) = delete;
+
+  VkDevice device() const { return device_; }
+  VkPhysicalDevice physicalDevice() const { return physical_; }
+  VkQueue queue() const { return queue_; }
+  uint32_t queueFamily() const { return queueFamily_; }
+  const std::string& deviceName() const { return deviceName_; }
+  /// Every device the loader sees, "index: name (type)".
+  static std::vector<std::string> listDevices();
+
+  /// Validation messages received so far (errors and warnings), and a way to clear them.
+  const std::vector<std::string>& validationMessages() const { return *messages_; }
+  void clearValidationMessages() { messages_->clear(); }
+
+  Buffer createBuffer(VkDeviceSize size, VkBufferUsageFlags usage);
+  void destroy(Buffer& buffer);
+  Image createImage(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage);
+  void destroy(Image& image);
+
+  /// Records commands with `record` into a one-time command buffer, submits and waits.
+  template <typename F>
+  void submit(F record) {
+    VkCommandBuffer cmd = begin();
+    record(cmd);
+    end(cmd);
+  }
+
+  /// An image layout transition barrier on a whole single-mip colour image.
+  static void transition(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImageLayout to,
+                         VkAccessFlags srcAccess, VkAccessFlags dstAccess, VkPipelineStageFlags srcStage,
+                         VkPipelineStageFlags dstStage);
+
+ private:
+  uint32_t memoryType(uint32_t typeBits, VkMemoryPropertyFlags properties) const;
+  VkCommandBuffer begin();
+  void end(VkCommandBuffer cmd);
+
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  uint32_t queueFamily_ = 0;
+  VkCommandPool pool_ = VK_NULL_HANDLE;
+  VkFence fence_ = VK_NULL_HANDLE;
+  std::string deviceName_;
+  std::unique_ptr<std::vector<std::string>> messages_ = std::make_unique<std::vector<std::string>>();
+};
+
+}  // namespace mxc::rt
