@@ -24,6 +24,15 @@ struct Note {
   Origin origin;
 };
 
+/// A shader input the user keeps variable (`--param`): a uniform of the generated shader, read
+/// by Op::Parameter expressions of the same name, with the input's value as its default.
+struct Parameter {
+  std::string name;          ///< the Op::Parameter payload (a GLSL identifier)
+  Type type = Type::Float;
+  std::vector<float> value;  ///< default, componentCount(type) floats (1 for Bool and Int)
+  Origin origin;
+};
+
 struct Material {
   std::string name;          ///< the material node's name (or a graph output's, for pbrlib graphs)
   std::string shader;        ///< the shading node's category (open_pbr_surface, standard_surface, surface)
@@ -38,6 +47,7 @@ struct Material {
   Param thinWalled;  ///< bool: the surface is a two-sided sheet (OpenPBR "Thin-walled mode")
   std::vector<Effect> effects;
   std::vector<Note> notes;
+  std::vector<Parameter> parameters;
 
   Index addNode(ScatterNode node) {
     nodes.push_back(std::move(node));

@@ -128,7 +128,54 @@ ir::ExprId Context::value(const ResolvedInput& in, Env& env) {
     case InputSource::Unset:
       break;
   }
+  if (shaderNode && &in >= shaderNode->inputs.data() && &in < shaderNode->inputs.data() + shaderNode->inputs.size()) {
+    v = userInput(in, v);
+  }
   return v;
+}
+
+ir::ExprId Context::userInput(const ResolvedInput& in, ir::ExprId v) {
+  for (const auto& [name, text] : options.overrides) {
+    if (name != in.name) continue;
+    doc::ValueError why;
+    std::optional<doc::Value> parsed = doc::tryParseValue(doc::valueTypeOf(in.type), text, &why);
+    if (!parsed) {
+      error(shaderNode->node->location, fmt::format("--set {}={}: not a valid {} value ({})", name, text, in.type, why.message));
+    } else {
+      v = material.exprs.constant(*parsed);
+    }
+  }
+  for (const std::string& name : options.parameters) {
+    if (name != in.name || v == ir::kNoExpr) continue;
+    if (!material.exprs.isConstant(v)) {
+      error(shaderNode->node->location,
+            fmt::format("--param {}: the input is connected to a node graph; only an input with a value can be a parameter", name));
+      continue;
+    }
+    ir::Type type = b.type(v);
+    const std::string id = "p_" + name;
+    bool known = false;
+    for (const ir::Parameter& p : material.parameters) known = known || p.name == id;
+    if (!known) {
+      std::vector<float> value = material.exprs.constantComponents(v);
+      material.parameters.push_back({id, type, value, {in.location, in.name}});
+    }
+    v = material.exprs.named(ir::Op::Parameter, type, id);
+  }
+  return v;
+}
+
+std::string Context::colorspace(const NodeRef& n, std::string_view name) {
+  const ResolvedInput* in = n.node->findInput(name);
+  Env* env = n.env;
+  for (int depth = 0; in && depth < 64; ++depth) {  // interface chains are short; the bound stops a cycle
+    if (in->instance && !in->instance->colorspace.empty()) return std::string(in->instance->colorspace);
+    if (in->source != InputSource::Interface) break;
+    Env* where = nullptr;
+    in = interfaceInput(*env, in->interfaceName, where);
+    env = where;
+  }
+  return {};
 }
 
 ir::ExprId Context::input(const NodeRef& n, std::string_view name) {

@@ -54,6 +54,8 @@ class Context {
   const lib::NodeLibrary& library;
   const LoweringOptions& options;
   Diagnostics& diagnostics;
+  /// The material's shading node: the node `--set` and `--param` apply to (null for none).
+  const resolve::ResolvedNode* shaderNode = nullptr;
 
   /// The environment of the document level and of each document-level node graph.
   Env& topEnv() { return top_; }
@@ -66,6 +68,9 @@ class Context {
   ir::Param param(const NodeRef& n, std::string_view name);
   /// A uniform string or filename input's value ("" when unset or connected).
   std::string stringInput(const NodeRef& n, std::string_view name);
+  /// The colour space of a filename input, following interface connections to where it is set
+  /// ("" when none is given).
+  std::string colorspace(const NodeRef& n, std::string_view name);
   /// The value feeding a resolved input (of a node, a graph interface, or a graph output).
   ir::ExprId value(const resolve::ResolvedInput& input, Env& env);
   /// The output of a value-typed node.
@@ -94,6 +99,9 @@ class Context {
 
  private:
   const resolve::ResolvedInput* interfaceInput(Env& env, std::string_view name, Env*& where);
+  /// The value of a shading-node input with `--set` and `--param` applied; kNoExpr when neither
+  /// names it.
+  ir::ExprId userInput(const resolve::ResolvedInput& input, ir::ExprId documentValue);
   ir::ExprId applyChannels(ir::ExprId value, std::string_view channels, ir::Type to);
 
   Env top_;

@@ -8,6 +8,21 @@ namespace mxc::lower {
 
 namespace {
 
+/// `--set` and `--param` must name inputs of the shading node.
+void checkUserInputs(Context& c, const LoweringOptions& options, const std::string& material) {
+  std::vector<std::string> names;
+  for (const auto& o : options.overrides) names.push_back(o.first);
+  names.insert(names.end(), options.parameters.begin(), options.parameters.end());
+  for (const std::string& name : names) {
+    if (!c.shaderNode) {
+      c.error({}, fmt::format("--set/--param {}: material '{}' has no shading node to set it on", name, material));
+    } else if (!c.shaderNode->findInput(name)) {
+      c.error(c.shaderNode->node->location,
+              fmt::format("--set/--param {}: <{}> has no input named '{}'", name, c.shaderNode->category(), name));
+    }
+  }
+}
+
 /// Lowers the closure feeding `input` in `env` as the whole material.
 ir::Material lowerShader(const resolve::ResolvedDocument& document, const LoweringOptions& options,
                          Diagnostics& diagnostics, std::string name, const resolve::ResolvedNode* shader,
@@ -16,6 +31,11 @@ ir::Material lowerShader(const resolve::ResolvedDocument& document, const Loweri
   material.name = std::move(name);
   Context c(material, document, options, diagnostics);
   Closure root;
+  c.shaderNode = shader;
+  if (!shader && graphOutput && graphOutput->source == resolve::InputSource::Connection) {
+    c.shaderNode = graphOutput->upstream.node;
+  }
+  checkUserInputs(c, options, material.name);
   if (shader) {
     material.shader = std::string(shader->category());
     material.origin = {shader->node->location, shader->name()};

@@ -3,6 +3,7 @@
 /// Lowering: from the resolved graph of a document to IR materials (compiler/ir).
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "compiler/common/Diagnostic.h"
@@ -16,6 +17,13 @@ struct LoweringOptions {
   /// in the library (for example MaterialX's own graphs, with --library), instead of mxc's
   /// lowering from the specifications. Used to compare the two.
   bool useShadingModelGraphs = false;
+  /// `--set INPUT=VALUE`: inputs of each material's shading node replaced by these values
+  /// (written as in a document's `value` attribute), so a user can try a value without editing
+  /// the document.
+  std::vector<std::pair<std::string, std::string>> overrides;
+  /// `--param NAME`: inputs of the shading node that stay variable in the shader (a uniform with
+  /// the input's value as its default) instead of being folded as constants.
+  std::vector<std::string> parameters;
 };
 
 /// Every material of the document, in document order: each surfacematerial's surface shader.

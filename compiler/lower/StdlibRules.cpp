@@ -231,8 +231,9 @@ ExprId sample(Context& c, const NodeRef& n, ExprId uv, Type type, std::string_vi
   const std::string file = c.stringInput(n, "file");
   ExprId texture = c.material.exprs.named(Op::Texture, Type::String, file);
   std::string filter = c.stringInput(n, "filtertype");
-  return c.material.exprs.opWithString(Op::ImageSample, type, {texture, uv, in(c, n, "default")},
-                                       fmt::format("{},{},{}", uaddress, vaddress, filter.empty() ? "linear" : filter));
+  return c.material.exprs.opWithString(
+      Op::ImageSample, type, {texture, uv, in(c, n, "default")},
+      fmt::format("{},{},{},{}", uaddress, vaddress, filter.empty() ? "linear" : filter, c.colorspace(n, "file")));
 }
 ExprId image(Context& c, const NodeRef& n, std::string_view, Type type) {
   std::string u = c.stringInput(n, "uaddressmode");
@@ -253,7 +254,8 @@ ExprId hextiledimage(Context& c, const NodeRef& n, std::string_view, Type type) 
   std::vector<ExprId> args{texture, uv, in(c, n, "default"), in(c, n, "rotation"), in(c, n, "rotationrange"),
                            in(c, n, "scale"), in(c, n, "scalerange"), in(c, n, "offset"), in(c, n, "offsetrange"),
                            in(c, n, "falloff"), in(c, n, "falloffcontrast"), in(c, n, "lumacoeffs")};
-  return c.material.exprs.opWithString(Op::ImageSample, type, args, "hex,hex,linear");
+  return c.material.exprs.opWithString(Op::ImageSample, type, args,
+                                       fmt::format("hex,hex,linear,{}", c.colorspace(n, "file")));
 }
 ExprId place2d(Context& c, const NodeRef& n, std::string_view, Type) {
   // operationorder 0 (SRT): rotate((uv - pivot) / scale) - offset + pivot;
