@@ -1,0 +1,26 @@
+#pragma once
+/// \file
+/// The descriptor bindings (set 0) shared by every generated shader and the Vulkan harness that
+/// runs it. The harness binds what a stage declares; unused bindings are simply absent.
+
+#include <cstdint>
+
+namespace mxc::glsl {
+
+enum Binding : uint32_t {
+  kTablesBinding = 0,      ///< sampler2D: albedo tables (computed by the tables stage)
+  kStageBinding = 1,       ///< uniform block of the stage (camera and lights, or batch sizes)
+  kParameterBinding = 2,   ///< uniform block of the material's parameters (`--param`, frame, time)
+  kInputBinding = 3,       ///< storage buffer read by compute stages
+  kOutputBinding = 4,      ///< storage buffer written by compute stages
+  kFirstTextureBinding = 5 ///< sampler2D per image file, in ExprEmitter order
+};
+
+/// Texels per axis of each albedo table (view cosine across, roughness down).
+constexpr uint32_t kTableSize = 32;
+/// Number of dielectric reflection tables, one per sqrt(F0) step (stages/mxc_tables.comp).
+constexpr uint32_t kTableSlices = 16;
+/// The tables image: kTableSize wide, the split-sum/sheen table then the dielectric slices below.
+constexpr uint32_t kTableHeight = kTableSize * (1 + kTableSlices);
+
+}  // namespace mxc::glsl

@@ -1,0 +1,70 @@
+#pragma once
+/// \file
+/// Assembles whole GLSL shaders: the shader library (compiler/glsl/library/*.glsl), the material's
+/// closure function generated from the IR, and a stage main (compiler/glsl/stages/*). Only the
+/// library parts the material uses are compiled in (lobe kinds, thin film, procedural nodes).
+
+#include <string>
+#include <vector>
+
+#include "compiler/glsl/Bindings.h"
+#include "compiler/glsl/ClosureEmitter.h"
+#include "compiler/glsl/ExprEmitter.h"
+#include "compiler/spirv/SpirvCompiler.h"
+
+namespace mxc::glsl {
+
+/// What a material shader is for.
+enum class ShaderKind : uint8_t {
+  Raster,   ///< fragment shader of the sphere renderer (lights, environment, accumulation)
+  Eval,     ///< compute: f(wo, wi) |cos theta_i| for a batch of direction pairs
+  Furnace,  ///< compute: directional albedo (reflected and transmitted) by Monte Carlo
+};
+
+std::string_view shaderKindName(ShaderKind kind);
+
+/// One member of the material's parameter block (binding kParameterBinding), std140 layout.
+struct UniformField {
+  std::string name;
+  ir::Type type = ir::Type::Float;
+  uint32_t offset = 0;
+  std::vector<float> value;  ///< its default (componentCount floats; 1 for Bool, Int)
+};
+
+/// What the harness must provide to run a material shader.
+struct MaterialInterface {
+  std::vector<TextureBinding> textures;
+  std::vector<UniformField> parameters;  ///< always has missing_textures, frame and time first
+  uint32_t parameterBytes = 0;
+  ClosureFeatures features;
+  std::vector<std::string> geomprops;
+};
+
+struct MaterialShader {
+  spirv::GlslSource glsl;
+  MaterialInterface interface;
+};
+
+struct BuildOptions {
+  /// Paste the shader library files in (a standalone shader, what glslang compiles). When
+  /// false, each library file is an `#include` line instead: the material-specific part only,
+  /// which is what the golden files under generated/glsl hold.
+  bool expandLibrary = true;
+};
+
+/// The shader of a material for a use. Its GLSL lines map back to the document elements that
+/// produced them (GlslSource::origins).
+MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind, const BuildOptions& options = {});
+
+/// The vertex shader of the raster renderer (the same for every material).
+spirv::GlslSource buildVertexShader();
+/// The compute shader that fills the albedo tables the lobes read (kTableSize^2 texels).
+spirv::GlslSource buildTablesShader();
+
+}  // namespace mxc::glsl
+
+namespace mxc::glsl {
+/// The bytes of the parameter block: each field's value at its std140 offset (matrices given
+/// row by row, as ExprGraph::constantComponents lists them, are stored as padded columns).
+std::vector<uint8_t> packParameters(const std::vector<UniformField>& fields, uint32_t bytes);
+}  // namespace mxc::glsl

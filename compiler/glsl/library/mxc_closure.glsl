@@ -1,0 +1,114 @@
+// A material at a shading point, reduced to a weighted mixture of lobes (OpenPBR 1.1
+// "Reduction to a mixture of lobes"): the generated code fills an MxcClosure for a view
+// direction; these functions evaluate and sample it. World-space directions.
+
+struct MxcClosure {
+  MxcLobe lobes[MXC_MAX_LOBES];
+  int count;
+  float choice[MXC_MAX_LOBES];  // how often each lobe is sampled (mxc_closure_prepare), for this wo
+  float choiceTotal;
+  vec3 emission;      // radiance leaving towards wo
+  vec3 transparency;  // weight of light passing straight through (opacity < 1)
+};
+
+struct MxcSample {
+  vec3 wi;       // world space
+  vec3 weight;   // f |cos| / pdf (for a delta lobe: its discrete weight / probability)
+  float pdf;
+  bool delta;
+  bool valid;
+};
+
+// Transmittance of absorbing media (optical depth tau at normal incidence) along a direction
+// with cosine mu outside, refracted into a medium of IOR eta (OpenPBR "View-dependent
+// absorption": T^(1/mu_t)). mu_t >= 0.05 bounds the path length at grazing angles.
+vec3 mxc_absorption(vec3 tau, float eta, float mu) {
+  if (tau == vec3(0.0)) return vec3(1.0);
+  float mut = mxc_safe_sqrt(1.0 - (1.0 - mu * mu) / (eta * eta));  // eta >= 1e-3 (set by the generator)
+  return exp(-tau / max(mut, 0.05));
+}
+
+// How often each lobe is chosen: in proportion to the luminance of what it can return.
+float mxc_lobe_choice(MxcLobe l, vec3 woLocal) {
+  return max(mxc_luminance(l.weight * mxc_lobe_albedo(l, woLocal)), 0.0) + 1e-4;
+}
+
+// Fills the lobe choice weights for the closure's view direction; the generated closure
+// function calls it last, so that sampling and pdfs do not recompute lobe albedos.
+void mxc_closure_prepare(inout MxcClosure c, vec3 wo) {
+  c.choiceTotal = 0.0;
+  for (int k = 0; k < c.count; ++k) {
+    MxcLobe l = c.lobes[k];
+    c.choice[k] = mxc_lobe_choice(l, mxc_to_local(mxc_frame(l.N, l.T), wo));
+    c.choiceTotal += c.choice[k];
+  }
+}
+
+vec3 mxc_closure_eval(MxcClosure c, vec3 wo, vec3 wi) {
+  vec3 f = vec3(0.0);
+  for (int k = 0; k < c.count; ++k) {
+    MxcLobe l = c.lobes[k];
+    mat3 frame = mxc_frame(l.N, l.T);
+    vec3 o = mxc_to_local(frame, wo);
+    vec3 i = mxc_to_local(frame, wi);
+    f += l.weight * mxc_absorption(l.tau, l.tauEta, abs(i.z)) * mxc_lobe_eval(l, o, i);
+  }
+  return f;
+}
+
+float mxc_closure_pdf(MxcClosure c, vec3 wo, vec3 wi) {
+  float pdf = 0.0;
+  for (int k = 0; k < c.count; ++k) {
+    MxcLobe l = c.lobes[k];
+    mat3 frame = mxc_frame(l.N, l.T);
+    pdf += c.choice[k] * mxc_lobe_pdf(l, mxc_to_local(frame, wo), mxc_to_local(frame, wi));
+  }
+  return c.choiceTotal > 0.0 ? pdf / c.choiceTotal : 0.0;
+}
+
+// One-sample multiple importance sampling over the lobes (Veach 1997, s. 9.2.4): a lobe is
+// chosen, sampled, and the sample weighted by the whole mixture's f and pdf; a delta lobe's
+// sample is weighted by that lobe alone (no other lobe reaches its direction).
+MxcSample mxc_closure_sample(MxcClosure c, vec3 wo, vec3 u) {
+  MxcSample s;
+  s.valid = false;
+  s.delta = false;
+  s.pdf = 0.0;
+  s.weight = vec3(0.0);
+  s.wi = wo;
+  if (c.count == 0) return s;
+  float total = c.choiceTotal;  // >= 1e-4 per lobe: not zero
+  // Pick lobe k with probability choice_k / total, reusing u.z for the lobe's own choice.
+  float x = u.z * total;
+  int chosen = c.count - 1;
+  float before = 0.0;
+  float p = 0.0;
+  for (int k = 0; k < c.count; ++k) {
+    float pk = c.choice[k];
+    if (x < before + pk || k == c.count - 1) {
+      chosen = k;
+      p = pk;
+      break;
+    }
+    before += pk;
+  }
+  float uz = clamp((x - before) / p, 0.0, 0.99999994);  // p >= 1e-4 > 0
+  MxcLobe l = c.lobes[chosen];
+  mat3 frame = mxc_frame(l.N, l.T);
+  vec3 o = mxc_to_local(frame, wo);
+  MxcLobeSample ls = mxc_lobe_sample(l, o, vec3(u.xy, uz));
+  if (!ls.valid) return s;
+  s.wi = mxc_to_world(frame, ls.wi);
+  if (ls.delta) {
+    s.delta = true;
+    s.pdf = ls.pdf * p / total;
+    s.weight = l.weight * mxc_absorption(l.tau, l.tauEta, abs(ls.wi.z)) * ls.value / s.pdf;
+    s.valid = s.pdf > 0.0;
+    return s;
+  }
+  s.pdf = mxc_closure_pdf(c, wo, s.wi);
+  if (!(s.pdf > 0.0)) return s;
+  s.weight = mxc_closure_eval(c, wo, s.wi) / s.pdf;
+  s.valid = true;
+  return s;
+}

@@ -1,0 +1,156 @@
+// Fresnel factors: exact dielectric and conductor reflectance, Schlick and the F82-tint model,
+// OpenPBR's specular_weight modulation, and thin-film interference.
+
+// Unpolarised reflectance of a dielectric interface (Born & Wolf 1999, s. 1.5.2), for the cosine
+// `cosi` >= 0 on the incident side and the relative IOR eta = n_transmitted / n_incident > 0.
+// Total internal reflection gives 1. An index-matched interface (eta = 1) reflects nothing at
+// any angle (physics notes, case 11).
+float mxc_fresnel_dielectric(float cosi, float eta) {
+  if (abs(eta - 1.0) < 1e-6) return 0.0;
+  float sin2t = (1.0 - cosi * cosi) / (eta * eta);  // eta > 0
+  if (sin2t >= 1.0) return 1.0;
+  float cost = sqrt(1.0 - sin2t);
+  // Both denominators are > 0: cosi >= 0, cost > 0 (cost = 0 only under TIR, handled above).
+  float rs = (cosi - eta * cost) / (cosi + eta * cost);
+  float rp = (eta * cosi - cost) / (eta * cosi + cost);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
+// Complex helpers for conductors: vec2 = (re, im).
+vec2 mxc_cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
+vec2 mxc_cdiv(vec2 a, vec2 b) {
+  float d = dot(b, b);  // callers divide by sums with positive real part: d > 0
+  return vec2(a.x * b.x + a.y * b.y, a.y * b.x - a.x * b.y) / d;
+}
+vec2 mxc_csqrt(vec2 z) {  // principal square root
+  float r = length(z);
+  float re = mxc_safe_sqrt(0.5 * (r + z.x));
+  float im = mxc_safe_sqrt(0.5 * (r - z.x));
+  return vec2(re, z.y < 0.0 ? -im : im);
+}
+
+// Complex reflection amplitudes rs, rp at an interface into a medium of complex relative IOR
+// eta = n + ik (Born & Wolf 1999, s. 14.2), for the incident cosine `cosi` >= 0.
+void mxc_fresnel_complex_amplitudes(float cosi, vec2 eta, out vec2 rs, out vec2 rp) {
+  float sin2i = 1.0 - cosi * cosi;
+  vec2 eta2 = mxc_cmul(eta, eta);
+  // cos_t = sqrt(1 - sin2i / eta^2)
+  vec2 cost = mxc_csqrt(vec2(1.0, 0.0) - mxc_cdiv(vec2(sin2i, 0.0), eta2));
+  vec2 etaCost = mxc_cmul(eta, cost);
+  vec2 ci = vec2(cosi, 0.0);
+  rs = mxc_cdiv(ci - etaCost, ci + etaCost);
+  vec2 etaCosi = eta * cosi;
+  rp = mxc_cdiv(etaCosi - cost, etaCosi + cost);
+}
+
+// Unpolarised reflectance of a conductor with complex IOR n + ik per channel.
+vec3 mxc_fresnel_conductor(float cosi, vec3 n, vec3 k) {
+  vec3 f;
+  for (int c = 0; c < 3; ++c) {
+    vec2 rs, rp;
+    mxc_fresnel_complex_amplitudes(max(cosi, 0.0), vec2(n[c], k[c]), rs, rp);
+    f[c] = 0.5 * (dot(rs, rs) + dot(rp, rp));
+  }
+  return clamp(f, 0.0, 1.0);
+}
+
+// Generalised Schlick: F0 + (F90 - F0)(1 - mu)^exponent (Schlick 1994). pow of a value in [0, 1].
+vec3 mxc_fresnel_schlick(float mu, vec3 f0, vec3 f90, float exponent) {
+  return f0 + (f90 - f0) * pow(clamp(1.0 - mu, 0.0, 1.0), exponent);
+}
+
+// F82-tint (Kutz et al. 2021; OpenPBR 1.1 "Metal"): the Schlick curve corrected so that at
+// mu_bar = 1/7 (about 82 degrees) it equals tint * F_Schlick(mu_bar):
+//   F(mu) = F_s(mu) - mu (1 - mu)^6 / (mu_bar (1 - mu_bar)^6) * F_s(mu_bar) (1 - tint).
+vec3 mxc_fresnel_f82(float mu, vec3 f0, vec3 f90, float exponent, vec3 tint) {
+  const float muBar = 1.0 / 7.0;
+  const float denominator = muBar * 0.396569;  // (1 - 1/7)^6 = 0.396569...
+  vec3 fs = mxc_fresnel_schlick(mu, f0, f90, exponent);
+  vec3 fsBar = mxc_fresnel_schlick(muBar, f0, f90, exponent);
+  float m = clamp(mu, 0.0, 1.0);
+  float shape = m * pow(1.0 - m, 6.0) / denominator;
+  return clamp(fs - shape * fsBar * (1.0 - tint), 0.0, 1.0);
+}
+
+// OpenPBR 1.1 eq. modulated_ior: the relative IOR whose normal-incidence reflectance is
+// xi * F_s, F_s = ((1 - eta) / (1 + eta))^2, with xi clamped to [0, 1 / F_s].
+float mxc_modulated_eta(float eta, float xi) {
+  float fs = mxc_sqr((1.0 - eta) / (1.0 + eta));  // eta > 0: 1 + eta > 1
+  if (fs <= 0.0) return 1.0;
+  float x = clamp(xi, 0.0, 1.0 / fs);
+  // epsilon = sgn(eta - 1) sqrt(xi F_s) in [-1, 1]; kept inside (-1, 1) so 1 - eps > 0.
+  float e = clamp(sign(eta - 1.0) * sqrt(x * fs), -0.9999, 0.9999);
+  return (1.0 + e) / (1.0 - e);
+}
+
+#ifdef MXC_THIN_FILM
+// Thin-film interference (Belcour & Barla 2017, "A Practical Extension to Microfacet Theory for
+// the Modeling of Varying Iridescence"): the Airy series truncated after two orders, with the
+// spectral integration done by their Gaussian fit of the CIE XYZ sensitivities, and the grey
+// incoherent term kept apart so that a thick film averages to the incoherent limit.
+
+// Their fit of the XYZ sensitivity at optical path difference `opd` (nm), phase shift `shift`,
+// normalised so that a zero difference gives (1, 1, 1); one component c (0: X, 1: Y, 2: Z),
+// since each channel's interference has its own base phase.
+float mxc_film_sensitivity(float opd, float shift, int c) {
+  float phase = 2.0 * MXC_PI * opd * 1e-9;
+  const vec3 val = vec3(5.4856e-13, 4.4201e-13, 5.2481e-13);
+  const vec3 pos = vec3(1.6810e+06, 1.7953e+06, 2.2084e+06);
+  const vec3 var = vec3(4.3278e+09, 9.3046e+09, 6.6121e+09);
+  float v = val[c] * sqrt(2.0 * MXC_PI * var[c]) * cos(pos[c] * phase + shift) * exp(-phase * phase * var[c]);
+  if (c == 0) {
+    v += 9.7470e-14 * sqrt(2.0 * MXC_PI * 4.5282e+09) * cos(2.2399e+06 * phase + shift) * exp(-4.5282e+09 * phase * phase);
+  }
+  return v / 1.0685e-7;
+}
+
+// XYZ to linear RGB with the equal-energy white point (CIE RGB), so that a grey stays grey
+// (each row sums to 1). GLSL matrices are given column by column: these are the columns.
+const mat3 MXC_XYZ_TO_RGB = mat3(2.3706743, -0.5138850, 0.0052982,
+                                 -0.9000405, 1.4253036, -0.0146949,
+                                 -0.4706338, 0.0885814, 1.0093968);
+
+// Reflectance of a film of IOR eta2 and thickness d (nm) between a medium of IOR eta1 above and
+// a base of complex IOR eta3 + i kappa3 (per channel; kappa 0 for a dielectric), at the incident
+// cosine `cosi`. All IORs are relative to the medium above the film.
+vec3 mxc_thin_film(float cosi, float eta2, vec3 eta3, vec3 kappa3, float d) {
+  const float eta1 = 1.0;
+  float sin2t = mxc_sqr(eta1 / eta2) * (1.0 - cosi * cosi);  // eta2 > 0
+  if (sin2t >= 1.0) return vec3(1.0);  // total internal reflection at the film's top
+  float cos2 = sqrt(1.0 - sin2t);
+  float opd = 2.0 * eta2 * d * cos2;
+  // Interface 1-2, both polarisations: real amplitudes; reflection from inside the film flips
+  // the sign (a phase of pi).
+  vec2 r12 = vec2((eta1 * cosi - eta2 * cos2) / (eta1 * cosi + eta2 * cos2),
+                  (eta2 * cosi - eta1 * cos2) / (eta2 * cosi + eta1 * cos2));
+  vec2 R12 = r12 * r12;
+  vec2 T121 = 1.0 - R12;
+  vec2 phi21 = vec2(r12.x < 0.0 ? 0.0 : MXC_PI, r12.y < 0.0 ? 0.0 : MXC_PI);
+  vec3 grey = vec3(0.0);
+  vec3 xyz = vec3(0.0);
+  vec2 rs, rp;
+  for (int c = 0; c < 3; ++c) {
+    // Interface 2-3 seen from the film: complex amplitudes, phases from their arguments. A
+    // dielectric base has the same IOR in every channel: computed once.
+    if (c == 0 || eta3[c] != eta3[c - 1] || kappa3[c] != kappa3[c - 1]) {
+      mxc_fresnel_complex_amplitudes(cos2, vec2(eta3[c], kappa3[c]) / eta2, rs, rp);
+    }
+    for (int pol = 0; pol < 2; ++pol) {
+      vec2 r23 = pol == 0 ? rs : rp;
+      float R23 = dot(r23, r23);
+      float phi23 = atan(r23.y, r23.x);
+      float R123 = R12[pol] * R23;
+      float r123 = sqrt(R123);
+      // 1 - R123 > 0: R12 < 1 away from grazing incidence; guarded for the grazing limit.
+      float Rs = T121[pol] * T121[pol] * R23 / max(1.0 - R123, 1e-6);
+      grey[c] += R12[pol] + Rs;
+      float cm = Rs - T121[pol];
+      for (int m = 1; m <= 2; ++m) {
+        cm *= r123;
+        xyz[c] += cm * 2.0 * mxc_film_sensitivity(float(m) * opd, float(m) * (phi21[pol] + phi23), c);
+      }
+    }
+  }
+  return clamp(0.5 * (grey + MXC_XYZ_TO_RGB * xyz), 0.0, 1.0);
+}
+#endif

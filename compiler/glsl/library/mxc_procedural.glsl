@@ -1,0 +1,126 @@
+// Procedural and texture functions of the MaterialX standard library, written for mxc from the
+// MaterialX 1.39 specification's node descriptions: gradient noise, fractal noise, cell and
+// Worley noise, HSV conversion, rotations, normal mapping, image addressing.
+
+// Integer hash of a lattice point (PCG, as mxc_pcg), to [0, 1).
+float mxc_hash(ivec3 p) {
+  uint h = mxc_pcg(uint(p.x) + mxc_pcg(uint(p.y) + mxc_pcg(uint(p.z))));
+  return float(h >> 8) * (1.0 / 16777216.0);
+}
+vec3 mxc_hash3(ivec3 p) {
+  return vec3(mxc_hash(p), mxc_hash(p + ivec3(1549, 0, 0)), mxc_hash(p + ivec3(0, 3571, 0)));
+}
+
+// Gradient (Perlin) noise in [-1, 1] approximately (Perlin 2002, "Improving Noise"): a
+// pseudo-random unit gradient at each lattice point, blended with the quintic fade.
+float mxc_gradient_noise(vec3 p, int channel) {
+  ivec3 i = ivec3(floor(p));
+  vec3 f = p - floor(p);
+  vec3 u = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
+  float n[8];
+  for (int k = 0; k < 8; ++k) {
+    ivec3 o = ivec3(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+    vec3 g = mxc_hash3(i + o + ivec3(channel * 7919)) * 2.0 - 1.0;
+    n[k] = dot(mxc_safe_normalize(g, vec3(1.0, 0.0, 0.0)), f - vec3(o));
+  }
+  float x0 = mix(mix(n[0], n[1], u.x), mix(n[2], n[3], u.x), u.y);
+  float x1 = mix(mix(n[4], n[5], u.x), mix(n[6], n[7], u.x), u.y);
+  return mix(x0, x1, u.z) * 1.7;  // scaled so the range is about [-1, 1]
+}
+float mxc_noise_float(vec3 p) { return mxc_gradient_noise(p, 0); }
+vec3 mxc_noise_vec3(vec3 p) { return vec3(mxc_gradient_noise(p, 0), mxc_gradient_noise(p, 1), mxc_gradient_noise(p, 2)); }
+
+// Fractal sum of octaves: amplitude times diminish, frequency times lacunarity per octave.
+float mxc_fractal_float(vec3 p, int octaves, float lacunarity, float diminish) {
+  float sum = 0.0;
+  float amplitude = 1.0;
+  for (int k = 0; k < clamp(octaves, 0, 16); ++k) {
+    sum += amplitude * mxc_noise_float(p);
+    amplitude *= diminish;
+    p *= lacunarity;
+  }
+  return sum;
+}
+vec3 mxc_fractal_vec3(vec3 p, int octaves, float lacunarity, float diminish) {
+  vec3 sum = vec3(0.0);
+  float amplitude = 1.0;
+  for (int k = 0; k < clamp(octaves, 0, 16); ++k) {
+    sum += amplitude * mxc_noise_vec3(p);
+    amplitude *= diminish;
+    p *= lacunarity;
+  }
+  return sum;
+}
+
+// Cell noise: one random value in [0, 1) per unit cell.
+float mxc_cellnoise(vec3 p) { return mxc_hash(ivec3(floor(p))); }
+
+// Worley noise: distance to the nearest jittered feature point in the 27 neighbouring cells.
+float mxc_worley(vec3 p, float jitter) {
+  ivec3 cell = ivec3(floor(p));
+  float best = 1e10;
+  for (int k = 0; k < 27; ++k) {
+    ivec3 o = ivec3(k % 3 - 1, (k / 3) % 3 - 1, k / 9 - 1);
+    vec3 feature = vec3(cell + o) + 0.5 + (mxc_hash3(cell + o) - 0.5) * clamp(jitter, 0.0, 1.0);
+    best = min(best, length(p - feature));
+  }
+  return best;
+}
+
+// HSV with hue in [0, 1) (Smith 1978).
+vec3 mxc_rgb_to_hsv(vec3 c) {
+  float maxc = max(c.r, max(c.g, c.b));
+  float minc = min(c.r, min(c.g, c.b));
+  float delta = maxc - minc;
+  float h = 0.0;
+  if (delta > 0.0) {  // guards the three divisions by delta
+    if (maxc == c.r) h = (c.g - c.b) / delta;
+    else if (maxc == c.g) h = 2.0 + (c.b - c.r) / delta;
+    else h = 4.0 + (c.r - c.g) / delta;
+    h = fract(h / 6.0);
+  }
+  return vec3(h, maxc > 0.0 ? delta / maxc : 0.0, maxc);
+}
+vec3 mxc_hsv_to_rgb(vec3 hsv) {
+  vec3 k = clamp(abs(fract(hsv.x + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0, 0.0, 1.0);
+  return hsv.z * mix(vec3(1.0), k, hsv.y);
+}
+
+// Counter-clockwise rotation by degrees.
+vec2 mxc_rotate2d(vec2 v, float degrees) {
+  float a = radians(degrees);
+  float s = sin(a), c = cos(a);
+  return vec2(c * v.x - s * v.y, s * v.x + c * v.y);
+}
+// Rotation about an axis (Rodrigues' formula); a zero axis leaves v unchanged.
+vec3 mxc_rotate3d(vec3 v, float degrees, vec3 axis) {
+  vec3 k = mxc_safe_normalize(axis, vec3(0.0));
+  if (k == vec3(0.0)) return v;
+  float a = radians(degrees);
+  return v * cos(a) + cross(k, v) * sin(a) + k * dot(k, v) * (1.0 - cos(a));
+}
+
+// A tangent-space normal map sample in [0, 1]^3 to a world normal (MaterialX "normalmap"):
+// xy scaled, in the frame (T, B, N); a degenerate result falls back to N.
+vec3 mxc_normalmap(vec3 sampleValue, vec2 scale, vec3 N, vec3 T, vec3 B) {
+  vec3 v = sampleValue * 2.0 - 1.0;
+  v.xy *= scale;
+  return mxc_safe_normalize(T * v.x + B * v.y + N * v.z, N);
+}
+
+// MaterialX address modes along one axis: 0 constant (outside: use the default), 1 clamp,
+// 2 periodic, 3 mirror. Returns false when the coordinate is outside in constant mode.
+bool mxc_address(inout float x, int mode) {
+  if (mode == 0) return x >= 0.0 && x <= 1.0;
+  if (mode == 1) x = clamp(x, 0.0, 1.0);
+  else if (mode == 2) x = fract(x);
+  else x = 1.0 - abs(mod(x, 2.0) - 1.0);
+  return true;
+}
+vec4 mxc_sample_image(sampler2D image, vec2 uv, vec4 fallback, int uaddress, int vaddress, bool missing) {
+  vec2 st = uv;
+  if (missing) return fallback;
+  if (!mxc_address(st.x, uaddress) || !mxc_address(st.y, vaddress)) return fallback;
+  // MaterialX texture coordinates have v up; images are stored top row first.
+  return textureLod(image, vec2(st.x, 1.0 - st.y), 0.0);
+}
