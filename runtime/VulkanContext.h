@@ -73,6 +73,11 @@ class VulkanContext {
   void destroy(Buffer& buffer);
   Image createImage(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage);
   void destroy(Image& image);
+  /// Fills an RGBA32F image created with TRANSFER_DST and SAMPLED usage from `rgba`
+  /// (width * height * 4 floats, top row first) and leaves it ready for sampling.
+  void upload(Image& image, const float* rgba);
+  /// Reads back an RGBA32F image created with TRANSFER_SRC usage, currently in `layout`.
+  std::vector<float> download(const Image& image, VkImageLayout layout);
 
   /// Records commands with `record` into a one-time command buffer, submits and waits.
   template <typename F>

@@ -1,0 +1,99 @@
+#include "runtime/Evaluator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace mxc::rt {
+
+namespace {
+
+/// The MxcBatch block of compiler/glsl/stages/mxc_batch.glsl (std140).
+struct BatchBlock {
+  uint32_t counts[4];
+  float uv[4];
+};
+
+constexpr uint32_t kGroup = 64;  // local_size_x of the compute stages
+
+}  // namespace
+
+MaterialKernel::MaterialKernel(VulkanContext& context, const AlbedoTables& tables, const MaterialResources& resources,
+                               const glsl::MaterialInterface& material, const std::vector<uint32_t>& spirv)
+    : context_(context) {
+  kernel_ = std::make_unique<ComputeKernel>(context, spirv, MaterialResources::layout(material), 0);
+  batch_ = context.createBuffer(sizeof(BatchBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  resources.bind(kernel_->descriptors(), tables);
+  kernel_->descriptors().bind(glsl::kStageBinding, batch_);
+}
+
+MaterialKernel::~MaterialKernel() {
+  kernel_.reset();
+  context_.destroy(batch_);
+}
+
+void MaterialKernel::run(const Buffer& in, const Buffer& out, uint32_t groups, uint32_t rows, uint32_t samples,
+                         uint32_t seed) {
+  BatchBlock block{{rows, samples, seed, 0}, {0.5f, 0.5f, 0.0f, 0.0f}};
+  std::memcpy(batch_.mapped, &block, sizeof(block));
+  kernel_->descriptors().bind(glsl::kInputBinding, in);
+  kernel_->descriptors().bind(glsl::kOutputBinding, out);
+  kernel_->dispatch(groups, 1, nullptr);
+}
+
+std::vector<glm::vec4> MaterialEvaluator::evaluate(const std::vector<DirectionPair>& pairs) {
+  if (pairs.empty()) return {};
+  const size_t n = pairs.size();
+  Buffer in = context_.createBuffer(n * 2 * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  Buffer out = context_.createBuffer(n * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  auto* dirs = static_cast<glm::vec4*>(in.mapped);
+  for (size_t i = 0; i < n; ++i) {
+    dirs[2 * i] = glm::vec4(pairs[i].wo, 0.0f);
+    dirs[2 * i + 1] = glm::vec4(pairs[i].wi, 0.0f);
+  }
+  run(in, out, static_cast<uint32_t>((n + kGroup - 1) / kGroup), static_cast<uint32_t>(n), 1, 1);
+  std::vector<glm::vec4> result(n);
+  std::memcpy(result.data(), out.mapped, n * sizeof(glm::vec4));
+  context_.destroy(in);
+  context_.destroy(out);
+  return result;
+}
+
+std::vector<Albedo> FurnaceEstimator::estimate(const std::vector<glm::vec3>& views, uint32_t samples, uint32_t seed) {
+  if (views.empty()) return {};
+  const size_t n = views.size();
+  const uint32_t perInvocation = std::max<uint32_t>((samples + kGroup - 1) / kGroup, 1);
+  Buffer in = context_.createBuffer(n * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  Buffer out = context_.createBuffer(n * kGroup * 4 * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  auto* dirs = static_cast<glm::vec4*>(in.mapped);
+  for (size_t i = 0; i < n; ++i) dirs[i] = glm::vec4(views[i], 0.0f);
+  run(in, out, static_cast<uint32_t>(n), static_cast<uint32_t>(n), perInvocation, seed);
+  const auto* sums = static_cast<const glm::vec4*>(out.mapped);
+  std::vector<Albedo> result(n);
+  const double count = double(perInvocation) * kGroup;
+  for (size_t a = 0; a < n; ++a) {
+    glm::dvec3 r(0.0), t(0.0), r2(0.0), t2(0.0);
+    for (uint32_t i = 0; i < kGroup; ++i) {
+      const glm::vec4* s = &sums[4 * (a * kGroup + i)];
+      r += glm::dvec3(s[0]);
+      t += glm::dvec3(s[1]);
+      r2 += glm::dvec3(s[2]);
+      t2 += glm::dvec3(s[3]);
+    }
+    // Mean and standard error of the mean: sqrt((E[x^2] - E[x]^2) / (N - 1)); count >= 64.
+    auto error = [&](glm::dvec3 sum, glm::dvec3 squares) {
+      glm::dvec3 mean = sum / count;
+      glm::dvec3 variance = glm::max(squares / count - mean * mean, glm::dvec3(0.0));
+      return glm::vec3(glm::sqrt(variance / (count - 1.0)));
+    };
+    result[a].reflected = glm::vec3(r / count);
+    result[a].transmitted = glm::vec3(t / count);
+    result[a].reflectedError = error(r, r2);
+    result[a].transmittedError = error(t, t2);
+  }
+  context_.destroy(in);
+  context_.destroy(out);
+  return result;
+}
+
+}  // namespace mxc::rt

@@ -1,0 +1,42 @@
+#pragma once
+/// \file
+/// What a material shader reads besides the stage's own data: its parameter block and its
+/// textures (read through OpenImageIO), bound at the bindings of compiler/glsl/Bindings.h.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "compiler/glsl/ShaderBuilder.h"
+#include "runtime/AlbedoTables.h"
+#include "runtime/Descriptors.h"
+
+namespace mxc::rt {
+
+class MaterialResources {
+ public:
+  /// Reads the material's textures, relative paths from `folder`. A texture that cannot be read
+  /// is reported in `warnings` and the shader uses the image node's default instead.
+  MaterialResources(VulkanContext& context, const glsl::MaterialInterface& material, const std::filesystem::path& folder,
+                    std::vector<std::string>& warnings);
+  ~MaterialResources();
+  MaterialResources(const MaterialResources&) = delete;
+  MaterialResources& operator=(const MaterialResources&) = delete;
+
+  /// The descriptor types of set 0 for this material: tables, stage block, parameters, input,
+  /// output, then one sampler per texture.
+  static std::vector<VkDescriptorType> layout(const glsl::MaterialInterface& material);
+
+  /// Sets a parameter (`--param`, frame, time) to new values; false when it does not exist.
+  bool setParameter(const std::string& name, const std::vector<float>& value);
+  /// Binds the tables, the parameters and the textures into `set`.
+  void bind(DescriptorSet& set, const AlbedoTables& tables) const;
+
+ private:
+  VulkanContext& context_;
+  glsl::MaterialInterface material_;
+  Buffer parameters_;
+  std::vector<Image> textures_;
+};
+
+}  // namespace mxc::rt

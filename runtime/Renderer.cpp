@@ -1,0 +1,323 @@
+#include "runtime/Renderer.h"
+
+#include <chrono>
+#include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
+
+#include "runtime/Descriptors.h"
+
+namespace mxc::rt {
+
+namespace {
+
+static_assert(sizeof(Vertex) == 48, "Vertex must be tightly packed for the vertex input layout");
+
+constexpr uint32_t kMaxLights = 8;  // MXC_MAX_LIGHTS of stages/mxc_view.glsl
+
+/// The MxcView block of compiler/glsl/stages/mxc_view.glsl (std140: every member 16-aligned).
+struct ViewBlock {
+  glm::mat4 objectToWorld;
+  glm::mat4 normalToWorld;
+  glm::mat4 worldToClip;
+  glm::vec4 eye;
+  glm::vec4 jitter;
+  glm::vec4 lightVector[kMaxLights];
+  glm::vec4 lightRadiance[kMaxLights];
+  glm::ivec4 counts;
+  glm::vec4 environment;
+};
+
+/// The radical inverse in base b (Halton 1964): well-spread sub-pixel offsets over frames.
+float halton(uint32_t index, uint32_t base) {
+  float f = 1.0f, r = 0.0f;
+  for (; index > 0; index /= base) {
+    f /= static_cast<float>(base);
+    r += f * static_cast<float>(index % base);
+  }
+  return r;
+}
+
+/// Vulkan objects of one render, destroyed together.
+struct Frame {
+  VulkanContext& context;
+  Image color, depth;
+  Buffer vertices, indices, view, dummy;
+  VkRenderPass renderPass = VK_NULL_HANDLE;
+  VkFramebuffer framebuffer = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkPipeline depthPipeline = VK_NULL_HANDLE;
+  VkPipeline shadePipeline = VK_NULL_HANDLE;
+  explicit Frame(VulkanContext& c) : context(c) {}
+  ~Frame() {
+    VkDevice d = context.device();
+    vkDeviceWaitIdle(d);
+    if (shadePipeline) vkDestroyPipeline(d, shadePipeline, nullptr);
+    if (depthPipeline) vkDestroyPipeline(d, depthPipeline, nullptr);
+    if (layout) vkDestroyPipelineLayout(d, layout, nullptr);
+    if (framebuffer) vkDestroyFramebuffer(d, framebuffer, nullptr);
+    if (renderPass) vkDestroyRenderPass(d, renderPass, nullptr);
+    for (Buffer* b : {&vertices, &indices, &view, &dummy}) context.destroy(*b);
+    context.destroy(color);
+    context.destroy(depth);
+  }
+};
+
+VkRenderPass createRenderPass(VkDevice device) {
+  VkAttachmentDescription attachments[2]{};
+  attachments[0].format = VK_FORMAT_R32G32B32A32_SFLOAT;
+  attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
+  attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;  // frames accumulate
+  attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachments[0].initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  attachments[0].finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  attachments[1].format = VK_FORMAT_D32_SFLOAT;
+  attachments[1].samples = VK_SAMPLE_COUNT_1_BIT;
+  attachments[1].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachments[1].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  attachments[1].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachments[1].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &colorRef;
+  subpass.pDepthStencilAttachment = &depthRef;
+  // The previous frame's blending and depth writes complete before this frame's.
+  VkSubpassDependency dependency{};
+  dependency.srcSubpass = VK_SUBPASS_EXTERNAL;
+  dependency.dstSubpass = 0;
+  dependency.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  dependency.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT;
+  dependency.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  dependency.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                             VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = 2;
+  info.pAttachments = attachments;
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = 1;
+  info.pDependencies = &dependency;
+  VkRenderPass pass = VK_NULL_HANDLE;
+  check(vkCreateRenderPass(device, &info, nullptr, &pass), "vkCreateRenderPass");
+  return pass;
+}
+
+/// The depth pre-pass (no fragment shader, no colour writes) or the shading pass (EQUAL depth,
+/// additive blending).
+VkPipeline createPipeline(VkDevice device, VkRenderPass pass, VkPipelineLayout layout, VkShaderModule vertex,
+                          VkShaderModule fragment, uint32_t width, uint32_t height) {
+  const bool shading = fragment != VK_NULL_HANDLE;
+  VkPipelineShaderStageCreateInfo stages[2]{};
+  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stages[0].module = vertex;
+  stages[0].pName = "main";
+  stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  stages[1].module = fragment;
+  stages[1].pName = "main";
+  VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+  VkVertexInputAttributeDescription attributes[4] = {
+      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
+      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
+      {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
+      {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}};
+  VkPipelineVertexInputStateCreateInfo input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  input.vertexBindingDescriptionCount = 1;
+  input.pVertexBindingDescriptions = &binding;
+  input.vertexAttributeDescriptionCount = 4;
+  input.pVertexAttributeDescriptions = attributes;
+  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+  VkRect2D scissor{{0, 0}, {width, height}};
+  VkPipelineViewportStateCreateInfo viewportState{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewportState.viewportCount = 1;
+  viewportState.pViewports = &viewport;
+  viewportState.scissorCount = 1;
+  viewportState.pScissors = &scissor;
+  VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.cullMode = VK_CULL_MODE_NONE;  // open meshes and planes are seen from both sides
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  raster.lineWidth = 1.0f;
+  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  depth.depthTestEnable = VK_TRUE;
+  depth.depthWriteEnable = shading ? VK_FALSE : VK_TRUE;
+  depth.depthCompareOp = shading ? VK_COMPARE_OP_EQUAL : VK_COMPARE_OP_LESS;
+  VkPipelineColorBlendAttachmentState blend{};
+  if (shading) {
+    blend.blendEnable = VK_TRUE;
+    blend.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
+    blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
+    blend.colorBlendOp = VK_BLEND_OP_ADD;
+    blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    blend.alphaBlendOp = VK_BLEND_OP_ADD;
+    blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                           VK_COLOR_COMPONENT_A_BIT;
+  }
+  VkPipelineColorBlendStateCreateInfo blendState{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  blendState.attachmentCount = 1;
+  blendState.pAttachments = &blend;
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+  info.stageCount = shading ? 2 : 1;
+  info.pStages = stages;
+  info.pVertexInputState = &input;
+  info.pInputAssemblyState = &assembly;
+  info.pViewportState = &viewportState;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pDepthStencilState = &depth;
+  info.pColorBlendState = &blendState;
+  info.layout = layout;
+  info.renderPass = pass;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline), "vkCreateGraphicsPipelines");
+  return pipeline;
+}
+
+}  // namespace
+
+Renderer::Renderer(VulkanContext& context, const AlbedoTables& tables) : context_(context), tables_(tables) {
+  Diagnostics diagnostics;
+  auto words = spirv::compile(glsl::buildVertexShader(), {}, diagnostics);
+  if (!words) throw VulkanError("the renderer's vertex shader does not compile:\n" + diagnostics.format());
+  vertexSpirv_ = std::move(*words);
+}
+
+Renderer::~Renderer() = default;
+
+RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resources,
+                              const glsl::MaterialInterface& material, const std::vector<uint32_t>& fragmentSpirv,
+                              const RenderSettings& s, const std::function<void(uint32_t)>& progress) {
+  VkDevice device = context_.device();
+  Frame f(context_);
+  f.color = context_.createImage(s.width, s.height, VK_FORMAT_R32G32B32A32_SFLOAT,
+                                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                     VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+  f.depth = context_.createImage(s.width, s.height, VK_FORMAT_D32_SFLOAT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+  f.vertices = context_.createBuffer(mesh.vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  std::memcpy(f.vertices.mapped, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex));
+  f.indices = context_.createBuffer(mesh.indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  std::memcpy(f.indices.mapped, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
+  f.view = context_.createBuffer(sizeof(ViewBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  f.dummy = context_.createBuffer(16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+
+  DescriptorSet set(context_, MaterialResources::layout(material), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+  resources.bind(set, tables_);
+  set.bind(glsl::kStageBinding, f.view);
+  // The storage bindings belong to the compute stages; they are written anyway so that every
+  // descriptor of the set is valid.
+  set.bind(glsl::kInputBinding, f.dummy);
+  set.bind(glsl::kOutputBinding, f.dummy);
+
+  ShaderModule vertex(context_, vertexSpirv_);
+  ShaderModule fragment(context_, fragmentSpirv);
+  f.renderPass = createRenderPass(device);
+  VkImageView views[2] = {f.color.view, f.depth.view};
+  VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+  fb.renderPass = f.renderPass;
+  fb.attachmentCount = 2;
+  fb.pAttachments = views;
+  fb.width = s.width;
+  fb.height = s.height;
+  fb.layers = 1;
+  check(vkCreateFramebuffer(device, &fb, nullptr, &f.framebuffer), "vkCreateFramebuffer");
+  VkDescriptorSetLayout setLayout = set.layout();
+  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layoutInfo.setLayoutCount = 1;
+  layoutInfo.pSetLayouts = &setLayout;
+  check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &f.layout), "vkCreatePipelineLayout");
+  f.depthPipeline = createPipeline(device, f.renderPass, f.layout, vertex.get(), VK_NULL_HANDLE, s.width, s.height);
+  f.shadePipeline = createPipeline(device, f.renderPass, f.layout, vertex.get(), fragment.get(), s.width, s.height);
+
+  context_.submit([&](VkCommandBuffer cmd) {
+    VulkanContext::transition(cmd, f.color.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+                              VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                              VK_PIPELINE_STAGE_TRANSFER_BIT);
+    VkClearColorValue zero{};
+    VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdClearColorImage(cmd, f.color.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
+    VulkanContext::transition(cmd, f.color.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                              VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                              VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                              VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT);
+  });
+
+  // Camera: a right-handed view, Vulkan's clip space (depth 0..1, y down, hence the flip).
+  const float aspect = float(s.width) / float(s.height);
+  glm::mat4 projection = glm::perspectiveRH_ZO(glm::radians(s.camera.fovDegrees), aspect, 0.05f, 100.0f);
+  projection[1][1] *= -1.0f;
+  const glm::mat4 viewMatrix = glm::lookAtRH(s.camera.eye, s.camera.target, s.camera.up);
+  ViewBlock block{};
+  block.objectToWorld = s.objectToWorld;
+  block.normalToWorld = glm::transpose(glm::inverse(s.objectToWorld));
+  block.worldToClip = projection * viewMatrix;
+  block.eye = glm::vec4(s.camera.eye, 1.0f);
+  const uint32_t lights = std::min<uint32_t>(static_cast<uint32_t>(s.lights.size()), kMaxLights);
+  for (uint32_t k = 0; k < lights; ++k) {
+    const Light& l = s.lights[k];
+    block.lightVector[k] = glm::vec4(l.vector, l.kind == Light::Kind::Point ? 1.0f : 0.0f);
+    block.lightRadiance[k] = glm::vec4(l.color * l.intensity, 0.0f);
+  }
+  block.environment = glm::vec4(s.environmentIntensity, s.emissionScale, 0.0f, 0.0f);
+
+  RenderResult result;
+  double totalMs = 0.0;
+  const uint32_t frames = std::max(s.frames, 1u);
+  for (uint32_t frame = 0; frame < frames; ++frame) {
+    // Sub-pixel offset in [-0.5, 0.5) pixels, in normalised device units (2 / size per pixel);
+    // the first frame samples pixel centres.
+    const float jx = frame == 0 ? 0.0f : halton(frame, 2) - 0.5f;
+    const float jy = frame == 0 ? 0.0f : halton(frame, 3) - 0.5f;
+    block.jitter = glm::vec4(2.0f * jx / float(s.width), 2.0f * jy / float(s.height), 0.0f, 0.0f);
+    block.counts = glm::ivec4(int(lights), int(s.environment), int(frame), int(std::max(s.samplesPerFrame, 1u)));
+    std::memcpy(f.view.mapped, &block, sizeof(block));
+    const auto start = std::chrono::steady_clock::now();
+    context_.submit([&](VkCommandBuffer cmd) {
+      VkClearValue clears[2]{};
+      clears[1].depthStencil = {1.0f, 0};
+      VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+      begin.renderPass = f.renderPass;
+      begin.framebuffer = f.framebuffer;
+      begin.renderArea = {{0, 0}, {s.width, s.height}};
+      begin.clearValueCount = 2;
+      begin.pClearValues = clears;
+      vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+      VkDescriptorSet ds = set.set();
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.layout, 0, 1, &ds, 0, nullptr);
+      VkDeviceSize offset = 0;
+      vkCmdBindVertexBuffers(cmd, 0, 1, &f.vertices.buffer, &offset);
+      vkCmdBindIndexBuffer(cmd, f.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.depthPipeline);
+      vkCmdDrawIndexed(cmd, static_cast<uint32_t>(mesh.indices.size()), 1, 0, 0, 0);
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.shadePipeline);
+      vkCmdDrawIndexed(cmd, static_cast<uint32_t>(mesh.indices.size()), 1, 0, 0, 0);
+      vkCmdEndRenderPass(cmd);
+    });
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (frame > 0 || frames == 1) totalMs += ms;  // the first frame also warms caches up
+    if (progress) progress(frame + 1);
+  }
+  result.msPerFrame = totalMs / double(frames > 1 ? frames - 1 : 1);
+  std::vector<float> sum = context_.download(f.color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  result.image.width = s.width;
+  result.image.height = s.height;
+  result.image.pixels.resize(sum.size());
+  const float inv = 1.0f / float(frames);  // frames >= 1
+  for (size_t i = 0; i < sum.size(); ++i) result.image.pixels[i] = sum[i] * inv;
+  return result;
+}
+
+}  // namespace mxc::rt

@@ -1,0 +1,76 @@
+#pragma once
+/// \file
+/// The raster renderer: a mesh (sphere, plane, OBJ) with a material's fragment shader, a
+/// camera, directional and point lights, and an environment (white furnace or analytic sky)
+/// integrated by Monte Carlo over frames. Frames are drawn depth first, then shaded with an
+/// EQUAL depth test and added into an RGBA32F image; the result is their average.
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "runtime/ImageIO.h"
+#include "runtime/MaterialResources.h"
+#include "runtime/Mesh.h"
+
+namespace mxc::rt {
+
+struct Light {
+  enum class Kind : uint8_t { Directional, Point };
+  Kind kind = Kind::Directional;
+  glm::vec3 vector{0.0f, 1.0f, 0.0f};  ///< towards a directional light; a point light's position
+  glm::vec3 color{1.0f};               ///< times intensity: irradiance (directional) or W/sr (point)
+  float intensity = 1.0f;
+};
+
+enum class Environment : uint8_t { None, White, Sky };
+
+struct Camera {
+  glm::vec3 eye{0.0f, 0.0f, 3.4f};
+  glm::vec3 target{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fovDegrees = 45.0f;
+};
+
+struct RenderSettings {
+  uint32_t width = 512;
+  uint32_t height = 512;
+  uint32_t frames = 64;           ///< accumulated frames, each with its own sub-pixel jitter
+  uint32_t samplesPerFrame = 1;   ///< environment samples per pixel and frame
+  Environment environment = Environment::Sky;
+  float environmentIntensity = 1.0f;
+  float emissionScale = 1.0f;     ///< radiance per unit of the material's emission
+  std::vector<Light> lights;
+  Camera camera;
+  glm::mat4 objectToWorld{1.0f};
+};
+
+struct RenderResult {
+  RgbaImage image;      ///< average of the frames; alpha is the coverage
+  double msPerFrame = 0.0;  ///< wall time per frame (draw, submit and wait), after the first
+};
+
+class Renderer {
+ public:
+  Renderer(VulkanContext& context, const AlbedoTables& tables);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  /// Renders `mesh` with a material's fragment shader (glsl::ShaderKind::Raster). `progress`,
+  /// when given, is called after each frame with the number done.
+  RenderResult render(const Mesh& mesh, const MaterialResources& resources, const glsl::MaterialInterface& material,
+                      const std::vector<uint32_t>& fragmentSpirv, const RenderSettings& settings,
+                      const std::function<void(uint32_t)>& progress = {});
+
+ private:
+  VulkanContext& context_;
+  const AlbedoTables& tables_;
+  std::vector<uint32_t> vertexSpirv_;
+};
+
+}  // namespace mxc::rt
