@@ -36,4 +36,16 @@ std::optional<std::string> writeFileAtomically(const std::filesystem::path& path
   return std::nullopt;
 }
 
+bool writeReport(const std::string& path, std::string_view contents) {
+  if (path.empty() || path == "-") {
+    std::fwrite(contents.data(), 1, contents.size(), stdout);
+    return true;
+  }
+  if (auto error = writeFileAtomically(path, contents)) {
+    std::fprintf(stderr, "error: %s\n", error->c_str());
+    return false;
+  }
+  return true;
+}
+
 }  // namespace mxc::cli

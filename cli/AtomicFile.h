@@ -14,4 +14,8 @@ namespace mxc::cli {
 /// Returns an error message on failure.
 std::optional<std::string> writeFileAtomically(const std::filesystem::path& path, std::string_view contents);
 
+/// A command's report: to stdout when `path` is empty or "-", else atomically to the file.
+/// Returns false (with the error printed) when the file could not be written.
+bool writeReport(const std::string& path, std::string_view contents);
+
 }  // namespace mxc::cli

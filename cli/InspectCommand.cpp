@@ -76,12 +76,7 @@ int runInspect(const InspectOptions& options) {
              : options.dot ? inspect::inspectDot(input)
                            : inspect::inspectText(input);
   }
-  if (options.output.empty() || options.output == "-") {
-    std::fwrite(report.data(), 1, report.size(), stdout);
-  } else if (auto error = writeFileAtomically(options.output, report)) {
-    std::fprintf(stderr, "error: %s\n", error->c_str());
-    return kOutputFailed;
-  }
+  if (!writeReport(options.output, report)) return kOutputFailed;
   return failed || session.diagnostics.hasErrors() ? kInvalidDocument : kOk;
 }
 

@@ -5,7 +5,10 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/ExitCode.h"
+#include "cli/CompileCommand.h"
+#include "cli/EvalCommand.h"
 #include "cli/InspectCommand.h"
+#include "cli/RenderCommand.h"
 
 int main(int argc, char** argv) {
   using namespace mxc::cli;
@@ -17,6 +20,10 @@ int main(int argc, char** argv) {
       "3 an output could not be written.\nRun 'mxc COMMAND --help' for the options of a command.");
   int exitCode = kOk;
   registerInspect(app, exitCode);
+  registerCompile(app, exitCode);
+  registerEval(app, exitCode);
+  registerFurnace(app, exitCode);
+  registerRender(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

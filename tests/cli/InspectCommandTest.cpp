@@ -9,44 +9,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "support/TestSupport.h"
+#include "support/CommandSupport.h"
 
 namespace mxc::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CommandRun {
-  int exitCode = -1;
-  std::string out;  // stdout
-  std::string err;  // stderr
-};
-
-/// Runs mxc with arguments (shell-quoted by the caller), capturing both streams.
-CommandRun mxc(const std::string& arguments) {
-  const fs::path errFile = fs::temp_directory_path() / ("mxc_cli_err_" + std::to_string(::getpid()));
-  std::string command = std::string(MXC_BINARY) + " " + arguments + " 2>" + errFile.string();
-  CommandRun run;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return run;
-  std::array<char, 4096> buffer;
-  size_t n;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.out.append(buffer.data(), n);
-  int status = ::pclose(pipe);
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream err(errFile);
-  run.err.assign(std::istreambuf_iterator<char>(err), {});
-  fs::remove(errFile);
-  return run;
-}
-
-std::string corpus(const std::string& rel) { return (sharedDir() / "corpus" / rel).string(); }
-
-fs::path writeTemp(const std::string& name, const std::string& text) {
-  fs::path path = fs::temp_directory_path() / ("mxc_cli_" + std::to_string(::getpid()) + "_" + name);
-  std::ofstream(path) << text;
-  return path;
-}
 
 TEST(InspectCommand, TextReportShowsMaterialsInputsAndSources) {
   CommandRun r = mxc("inspect " + corpus("materialx/examples/OpenPbr/open_pbr_carpaint.mtlx"));

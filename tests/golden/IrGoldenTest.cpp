@@ -21,16 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Corpus documents, relative to the shared folder (so dumps hold no machine paths).
-std::vector<std::string> corpusDocuments() {
-  std::vector<std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(sharedDir() / "corpus")) {
-    if (e.path().extension() == ".mtlx") files.push_back(fs::relative(e.path(), sharedDir()).string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 /// The IR dump of a document: each material's tree, or the errors that stopped it.
 std::string dump(const std::string& relative) {
   Context context;
@@ -59,35 +49,15 @@ class IrGolden : public ::testing::TestWithParam<std::string> {
 TEST_P(IrGolden, MatchesCommittedDump) {
   const std::string relative = GetParam();
   fs::path golden = sourceDir() / "generated/ir" / fs::path(relative).replace_extension(".txt");
-  const std::string actual = dump(relative);
-  if (const char* update = std::getenv("MXC_UPDATE_GOLDENS"); update && std::string(update) == "1") {
-    fs::create_directories(golden.parent_path());
-    std::ofstream(golden, std::ios::binary) << actual;
-    GTEST_SKIP() << "updated " << golden;
-  }
-  std::ifstream in(golden, std::ios::binary);
-  ASSERT_TRUE(in) << "no golden dump " << golden << ": run scripts/update-goldens";
-  std::stringstream expected;
-  expected << in.rdbuf();
-  EXPECT_EQ(actual, expected.str()) << "the IR of " << relative << " changed; if that is intended, run "
-                                    << "scripts/update-goldens and review the diff of generated/ir/";
+  matchGolden(golden, dump(relative), "generated/ir/");
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, IrGolden, ::testing::ValuesIn(corpusDocuments()),
-                         [](const ::testing::TestParamInfo<std::string>& param) {
-                           std::string name = fs::path(param.param).replace_extension("").string();
-                           for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-                           return name;
-                         });
+                         corpusTestName);
 
 TEST(IrGoldenFiles, NoStaleDumps) {
-  // Every committed dump belongs to a corpus document (a renamed document leaves none behind).
-  std::set<std::string> expected;
-  for (const std::string& doc : corpusDocuments()) expected.insert(fs::path(doc).replace_extension(".txt").string());
-  for (const auto& e : fs::recursive_directory_iterator(sourceDir() / "generated/ir")) {
-    if (!e.is_regular_file()) continue;
-    std::string rel = fs::relative(e.path(), sourceDir() / "generated/ir").string();
-    EXPECT_TRUE(expected.count(rel)) << "stale golden dump generated/ir/" << rel;
+  for (const std::string& rel : staleGoldens(sourceDir() / "generated/ir", ".txt")) {
+    ADD_FAILURE() << "stale golden dump generated/ir/" << rel;
   }
 }
 

@@ -2,9 +2,16 @@
 // Helpers shared by the tests: load a document from text against the built-in library and
 // look at what was reported.
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "compiler/common/Diagnostic.h"
 #include "compiler/document/DocumentLoader.h"
@@ -16,6 +23,55 @@ namespace mxc::test {
 /// The shared reference data (corpus, MaterialX libraries), at ../shared from the source tree.
 inline std::filesystem::path sharedDir() { return std::filesystem::path(MXC_SHARED_DIR); }
 inline std::filesystem::path sourceDir() { return std::filesystem::path(MXC_SOURCE_DIR); }
+
+/// Every .mtlx under ../shared/corpus, relative to the shared folder (so outputs hold no machine
+/// paths), sorted.
+inline std::vector<std::string> corpusDocuments() {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(sharedDir() / "corpus")) {
+    if (e.path().extension() == ".mtlx") files.push_back(std::filesystem::relative(e.path(), sharedDir()).string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+/// A GoogleTest parameter name for a corpus document: its path without extension, [A-Za-z0-9_].
+inline std::string corpusTestName(const ::testing::TestParamInfo<std::string>& param) {
+  std::string name = std::filesystem::path(param.param).replace_extension("").string();
+  for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return name;
+}
+
+/// Compares `actual` with the committed golden file, or rewrites it (and skips) when
+/// MXC_UPDATE_GOLDENS=1 (scripts/update-goldens). `what` names the golden folder for the hint.
+inline void matchGolden(const std::filesystem::path& golden, const std::string& actual, const std::string& what) {
+  if (const char* update = std::getenv("MXC_UPDATE_GOLDENS"); update && std::string(update) == "1") {
+    std::filesystem::create_directories(golden.parent_path());
+    std::ofstream(golden, std::ios::binary) << actual;
+    GTEST_SKIP() << "updated " << golden;
+  }
+  std::ifstream in(golden, std::ios::binary);
+  ASSERT_TRUE(in) << "no golden file " << golden << ": run scripts/update-goldens";
+  std::stringstream expected;
+  expected << in.rdbuf();
+  EXPECT_EQ(actual, expected.str()) << golden << " differs; if the change is intended, run scripts/update-goldens and "
+                                    << "review the diff of " << what;
+}
+
+/// Golden files under `folder` that belong to no corpus document (a renamed document leaves
+/// none behind), for goldens named after the document with extension `extension`.
+inline std::vector<std::string> staleGoldens(const std::filesystem::path& folder, const std::string& extension) {
+  std::vector<std::string> expected, stale;
+  for (const std::string& doc : corpusDocuments()) {
+    expected.push_back(std::filesystem::path(doc).replace_extension(extension).string());
+  }
+  for (const auto& e : std::filesystem::recursive_directory_iterator(folder)) {
+    if (!e.is_regular_file()) continue;
+    std::string rel = std::filesystem::relative(e.path(), folder).string();
+    if (std::find(expected.begin(), expected.end(), rel) == expected.end()) stale.push_back(rel);
+  }
+  return stale;
+}
 
 /// One compilation context: sources, diagnostics, the built-in library, and a loader.
 struct Context {

@@ -1,0 +1,109 @@
+#include "cli/CompileCommand.h"
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "cli/AtomicFile.h"
+#include "cli/ExitCode.h"
+#include "cli/MaterialPipeline.h"
+#include "compiler/glsl/ShaderBuilder.h"
+#include "compiler/spirv/SpirvCompiler.h"
+
+namespace mxc::cli {
+
+namespace {
+
+struct CompileOptions {
+  std::string file;
+  std::string output;
+  std::string glsl;
+  std::string stage = "frag";
+  bool optimize = false;
+  bool quiet = false;
+  MaterialOptions materials;
+};
+
+glsl::ShaderKind kindOf(const std::string& stage) {
+  if (stage == "comp") return glsl::ShaderKind::Eval;
+  if (stage == "furnace") return glsl::ShaderKind::Furnace;
+  return glsl::ShaderKind::Raster;
+}
+
+int runCompile(const CompileOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  Session session;
+  MaterialPipeline pipeline(session);
+  if (int code = pipeline.run(options.file, options.materials); code != kOk) return code;
+  const bool several = pipeline.materials.size() > 1;
+  int result = kOk;
+  for (const ir::Material& material : pipeline.materials) {
+    glsl::MaterialShader shader = glsl::buildMaterialShader(material, kindOf(options.stage));
+    spirv::CompileOptions compile;
+    compile.optimize = options.optimize;
+    std::optional<std::vector<uint32_t>> words = spirv::compile(shader.glsl, compile, session.diagnostics);
+    session.printDiagnostics();
+    if (!options.glsl.empty()) {
+      // The GLSL is written even when glslang rejects it, so that the failing line can be read.
+      const auto path = perMaterialPath(options.glsl, material.name, several);
+      if (auto error = writeFileAtomically(path, shader.glsl.text)) {
+        std::fprintf(stderr, "error: %s\n", error->c_str());
+        return kOutputFailed;
+      }
+    }
+    if (!words) {
+      result = kInvalidDocument;
+      continue;
+    }
+    if (!options.output.empty()) {
+      const auto path = perMaterialPath(options.output, material.name, several);
+      std::string_view bytes(reinterpret_cast<const char*>(words->data()), words->size() * sizeof(uint32_t));
+      if (auto error = writeFileAtomically(path, bytes)) {
+        std::fprintf(stderr, "error: %s\n", error->c_str());
+        return kOutputFailed;
+      }
+    }
+    if (!options.quiet) {
+      std::vector<std::string> lobes;
+      for (const std::string& k : shader.interface.features.lobeKinds) lobes.push_back(k.substr(9));
+      std::printf("%s: %s shader, %zu GLSL lines, %zu SPIR-V instructions; lobes %d (%s)%s%s\n", material.name.c_str(),
+                  std::string(glsl::shaderKindName(kindOf(options.stage))).c_str(),
+                  shader.glsl.origins.size(), spirv::instructionCount(*words), shader.interface.features.lobes,
+                  fmt::format("{}", fmt::join(lobes, ", ")).c_str(),
+                  shader.interface.textures.empty() ? "" : fmt::format("; {} texture(s)", shader.interface.textures.size()).c_str(),
+                  shader.interface.parameters.size() > 3
+                      ? fmt::format("; {} parameter(s)", shader.interface.parameters.size() - 3).c_str()
+                      : "");
+    }
+  }
+  if (!options.quiet) {
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::printf("compiled %zu material(s) in %.1f ms\n", pipeline.materials.size(), ms);
+  }
+  return result;
+}
+
+}  // namespace
+
+void registerCompile(CLI::App& app, int& exitCode) {
+  auto options = std::make_shared<CompileOptions>();
+  CLI::App* command = app.add_subcommand(
+      "compile",
+      "Compile the materials of a document to GLSL 4.50 and SPIR-V (validated by SPIRV-Tools). With several "
+      "materials, output names get _<material> before their extension");
+  command->add_option("file", options->file, "The .mtlx document")->required();
+  command->add_option("-o,--output", options->output, "Write the SPIR-V module here");
+  command->add_option("--glsl", options->glsl, "Write the GLSL here");
+  command->add_option("--stage", options->stage,
+                      "frag: fragment shader of the renderer; comp: compute shader evaluating f cos; furnace: compute "
+                      "shader of the directional albedo")
+      ->check(CLI::IsMember({"frag", "comp", "furnace"}));
+  command->add_flag("-O,--optimize", options->optimize, "Optimise the module with SPIRV-Tools' performance passes");
+  command->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");
+  addMaterialOptions(*command, options->materials);
+  command->callback([options, &exitCode] { exitCode = runCompile(*options); });
+}
+
+}  // namespace mxc::cli

@@ -1,0 +1,198 @@
+#include "cli/EvalCommand.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/AtomicFile.h"
+#include "cli/ExitCode.h"
+#include "cli/Harness.h"
+#include "cli/MaterialPipeline.h"
+#include "runtime/Evaluator.h"
+
+namespace mxc::cli {
+
+namespace {
+
+struct EvalOptions {
+  std::string file;
+  std::string dirs;
+  std::string output;
+  MaterialOptions materials;
+  DeviceOptions device;
+};
+
+/// Reads rows "wo_x,wo_y,wo_z,wi_x,wi_y,wi_z" (blank lines, '#' comments and one header line of
+/// names allowed). Errors name file:line:column.
+bool readDirections(const std::string& path, std::vector<rt::DirectionPair>& rows) {
+  std::ifstream in(path);
+  if (!in) {
+    std::fprintf(stderr, "%s: error: cannot read the file\n", path.c_str());
+    return false;
+  }
+  std::string line;
+  for (int lineNo = 1; std::getline(in, line); ++lineNo) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const size_t first = line.find_first_not_of(" \t");
+    if (first == std::string::npos || line[first] == '#') continue;
+    if (rows.empty() && std::isalpha(static_cast<unsigned char>(line[first]))) continue;  // a header
+    float v[6];
+    size_t pos = 0;
+    for (int k = 0; k < 6; ++k) {
+      const size_t end = std::min(line.find(',', pos), line.size());
+      const std::string field = line.substr(pos, end - pos);
+      size_t used = 0;
+      bool ok = true;
+      try {
+        v[k] = std::stof(field, &used);
+      } catch (const std::exception&) {
+        ok = false;
+      }
+      ok = ok && std::isfinite(v[k]) && field.find_first_not_of(" \t", used) == std::string::npos;
+      if (!ok) {
+        std::fprintf(stderr, "%s:%d:%zu: error: expected a number as value %d of 6 (wo_x,wo_y,wo_z,wi_x,wi_y,wi_z)\n",
+                     path.c_str(), lineNo, pos + 1, k + 1);
+        return false;
+      }
+      if (k < 5 && end == line.size()) {
+        std::fprintf(stderr, "%s:%d:%zu: error: expected 6 values, found %d\n", path.c_str(), lineNo, line.size() + 1,
+                     k + 1);
+        return false;
+      }
+      pos = end + 1;
+    }
+    if (pos <= line.size()) {
+      std::fprintf(stderr, "%s:%d:%zu: error: more than 6 values\n", path.c_str(), lineNo, pos);
+      return false;
+    }
+    glm::vec3 wo(v[0], v[1], v[2]), wi(v[3], v[4], v[5]);
+    // Directions are normalised here; a zero vector has none.
+    if (glm::dot(wo, wo) < 1e-12f || glm::dot(wi, wi) < 1e-12f) {
+      std::fprintf(stderr, "%s:%d:1: error: a direction of zero length\n", path.c_str(), lineNo);
+      return false;
+    }
+    rows.push_back({glm::normalize(wo), glm::normalize(wi)});
+  }
+  return true;
+}
+
+int runEval(const EvalOptions& options) {
+  std::vector<rt::DirectionPair> rows;
+  if (!readDirections(options.dirs, rows)) return kInvalidDocument;
+  Session session;
+  MaterialPipeline pipeline(session);
+  if (int code = pipeline.run(options.file, options.materials); code != kOk) return code;
+  Device device(options.device);
+  rt::AlbedoTables* tables = device.tables();
+  if (!tables) return kInvalidDocument;
+  std::string csv = "material,row,fcos_r,fcos_g,fcos_b,pdf\n";
+  for (const ir::Material& material : pipeline.materials) {
+    auto program = prepareMaterial(session, *device.context(), material, glsl::ShaderKind::Eval, pipeline.documentFolder);
+    if (!program) return kInvalidDocument;
+    rt::MaterialEvaluator evaluator(*device.context(), *tables, *program->resources, program->shader.interface,
+                                    program->spirv);
+    std::vector<glm::vec4> values = evaluator.evaluate(rows);
+    for (size_t i = 0; i < values.size(); ++i) {
+      csv += fmt::format("{},{},{:.7g},{:.7g},{:.7g},{:.7g}\n", material.name, i + 1, values[i].x, values[i].y,
+                         values[i].z, values[i].w);
+    }
+  }
+  if (!device.checkValidation()) return kInvalidDocument;
+  return writeReport(options.output, csv) ? kOk : kOutputFailed;
+}
+
+struct FurnaceOptions {
+  std::string file;
+  int angles = 8;
+  int samples = 65536;
+  int seed = 1;
+  std::string output;
+  MaterialOptions materials;
+  DeviceOptions device;
+};
+
+nlohmann::json vec(glm::vec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+int runFurnace(const FurnaceOptions& options) {
+  Session session;
+  MaterialPipeline pipeline(session);
+  if (int code = pipeline.run(options.file, options.materials); code != kOk) return code;
+  Device device(options.device);
+  rt::AlbedoTables* tables = device.tables();
+  if (!tables) return kInvalidDocument;
+  // View angles theta_k = 90 deg * k / N, k = 0..N-1: normal incidence first, never exactly grazing.
+  std::vector<glm::vec3> views;
+  std::vector<double> thetas;
+  for (int k = 0; k < options.angles; ++k) {
+    const double theta = 0.5 * M_PI * k / options.angles;
+    thetas.push_back(theta);
+    views.emplace_back(static_cast<float>(std::sin(theta)), 0.0f, static_cast<float>(std::cos(theta)));
+  }
+  nlohmann::json report{{"document", options.file},
+                        {"samples", options.samples},
+                        {"device", device.context()->deviceName()},
+                        {"materials", nlohmann::json::array()}};
+  Progress progress(pipeline.materials.size());
+  for (const ir::Material& material : pipeline.materials) {
+    progress.step(material.name);
+    auto program = prepareMaterial(session, *device.context(), material, glsl::ShaderKind::Furnace, pipeline.documentFolder);
+    if (!program) return kInvalidDocument;
+    rt::FurnaceEstimator furnace(*device.context(), *tables, *program->resources, program->shader.interface,
+                                 program->spirv);
+    std::vector<rt::Albedo> albedo =
+        furnace.estimate(views, static_cast<uint32_t>(options.samples), static_cast<uint32_t>(options.seed));
+    nlohmann::json m{{"name", material.name}, {"angles", nlohmann::json::array()}};
+    for (size_t k = 0; k < albedo.size(); ++k) {
+      m["angles"].push_back({{"theta_deg", thetas[k] * 180.0 / M_PI},
+                             {"mu", std::cos(thetas[k])},
+                             {"reflected", vec(albedo[k].reflected)},
+                             {"transmitted", vec(albedo[k].transmitted)},
+                             {"total", vec(albedo[k].total())},
+                             {"reflected_error", vec(albedo[k].reflectedError)},
+                             {"transmitted_error", vec(albedo[k].transmittedError)}});
+    }
+    report["materials"].push_back(std::move(m));
+  }
+  if (!device.checkValidation()) return kInvalidDocument;
+  return writeReport(options.output, report.dump(2) + "\n") ? kOk : kOutputFailed;
+}
+
+}  // namespace
+
+void registerEval(CLI::App& app, int& exitCode) {
+  auto options = std::make_shared<EvalOptions>();
+  CLI::App* command = app.add_subcommand(
+      "eval",
+      "Evaluate each material's BSDF on the device: for every row wo_x,wo_y,wo_z,wi_x,wi_y,wi_z of a CSV file "
+      "(directions in a frame with normal +z, tangent +x; normalised), print f(wo, wi) |cos theta_i| and the "
+      "sampling pdf as CSV");
+  command->add_option("file", options->file, "The .mtlx document")->required();
+  command->add_option("--dirs", options->dirs, "CSV file of direction pairs")->required();
+  command->add_option("-o,--output", options->output, "Write the CSV here (atomically) instead of stdout");
+  addMaterialOptions(*command, options->materials);
+  addDeviceOptions(*command, options->device);
+  command->callback([options, &exitCode] { exitCode = runEval(*options); });
+}
+
+void registerFurnace(CLI::App& app, int& exitCode) {
+  auto options = std::make_shared<FurnaceOptions>();
+  CLI::App* command = app.add_subcommand(
+      "furnace",
+      "The white furnace: each material's directional albedo (reflected, transmitted, total, with Monte Carlo "
+      "standard errors) at N view angles from normal incidence, as JSON");
+  command->add_option("file", options->file, "The .mtlx document")->required();
+  command->add_option("--angles", options->angles, "Number of view angles, 90 deg * k / N")
+      ->check(CLI::Range(1, 4096));
+  command->add_option("--samples", options->samples, "Samples per angle")->check(CLI::Range(64, 1 << 26));
+  command->add_option("--seed", options->seed, "Random seed")->check(CLI::NonNegativeNumber);
+  command->add_option("-o,--output", options->output, "Write the JSON here (atomically) instead of stdout");
+  addMaterialOptions(*command, options->materials);
+  addDeviceOptions(*command, options->device);
+  command->callback([options, &exitCode] { exitCode = runFurnace(*options); });
+}
+
+}  // namespace mxc::cli

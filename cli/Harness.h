@@ -1,0 +1,73 @@
+#pragma once
+/// \file
+/// What the commands that run shaders share: device options, compiling a material for a use,
+/// and progress on a terminal.
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/Session.h"
+#include "compiler/glsl/ShaderBuilder.h"
+#include "runtime/AlbedoTables.h"
+#include "runtime/MaterialResources.h"
+#include "runtime/VulkanContext.h"
+
+namespace mxc::cli {
+
+struct DeviceOptions {
+  std::string device;       ///< --device: index or part of a name
+  bool validation = false;  ///< --validation: Khronos validation layer on; a message fails the run
+  bool listDevices = false;
+};
+
+void addDeviceOptions(CLI::App& command, DeviceOptions& options);
+
+/// The device and the albedo tables, created on first use. Vulkan errors become a message and
+/// a non-zero exit instead of an exception escaping.
+class Device {
+ public:
+  explicit Device(const DeviceOptions& options) : options_(options) {}
+  /// Null (with the error printed) when no device can be created.
+  rt::VulkanContext* context();
+  rt::AlbedoTables* tables();
+  /// Prints validation messages; true when there were none.
+  bool checkValidation();
+
+ private:
+  DeviceOptions options_;
+  std::unique_ptr<rt::VulkanContext> context_;
+  std::unique_ptr<rt::AlbedoTables> tables_;
+};
+
+/// A material ready to run: its shader of one kind, the SPIR-V, and its resources on the device.
+struct MaterialProgram {
+  glsl::MaterialShader shader;
+  std::vector<uint32_t> spirv;
+  std::unique_ptr<rt::MaterialResources> resources;
+};
+
+/// Builds and compiles the material's shader of `kind` and loads its textures (relative paths
+/// from `folder`; warnings printed). Nullopt when it does not compile (diagnostics printed).
+std::optional<MaterialProgram> prepareMaterial(Session& session, rt::VulkanContext& context, const ir::Material& material,
+                                               glsl::ShaderKind kind, const std::filesystem::path& folder);
+
+/// "[k/n] what" on stderr, rewritten in place, only when stderr is a terminal.
+class Progress {
+ public:
+  explicit Progress(size_t total);
+  void step(const std::string& what);
+  ~Progress();
+
+ private:
+  size_t total_;
+  size_t done_ = 0;
+  bool tty_;
+};
+
+}  // namespace mxc::cli

@@ -1,0 +1,228 @@
+#include "cli/RenderCommand.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "cli/ExitCode.h"
+#include "cli/Harness.h"
+#include "cli/MaterialPipeline.h"
+#include "runtime/Renderer.h"
+
+namespace mxc::cli {
+
+namespace {
+
+struct RenderOptions {
+  std::string file;
+  std::vector<std::string> outputs;
+  int size = 512;
+  int spp = 64;
+  std::vector<std::string> lights;
+  std::string environment = "sky";
+  float environmentIntensity = 1.0f;
+  float emissionScale = 1.0f;
+  float exposure = 0.0f;
+  std::string background = "0.05,0.05,0.05";
+  std::string mesh = "sphere";
+  MaterialOptions materials;
+  DeviceOptions device;
+};
+
+/// "a,b,c" to numbers; false when it is not `count` finite numbers.
+bool parseNumbers(const std::string& text, size_t count, std::vector<float>& out) {
+  out.clear();
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, ',')) {
+    try {
+      size_t used = 0;
+      float v = std::stof(part, &used);
+      if (!std::isfinite(v) || part.find_first_not_of(" \t", used) != std::string::npos) return false;
+      out.push_back(v);
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
+  return out.size() == count;
+}
+
+/// KIND:X,Y,Z[:INTENSITY[:R,G,B]], KIND dir or point.
+bool parseLight(const std::string& text, rt::Light& light, std::string& why) {
+  std::vector<std::string> parts;
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, ':')) parts.push_back(part);
+  if (parts.size() < 2 || parts.size() > 4 || (parts[0] != "dir" && parts[0] != "point")) {
+    why = "expected dir:X,Y,Z[:INTENSITY[:R,G,B]] or point:X,Y,Z[:INTENSITY[:R,G,B]]";
+    return false;
+  }
+  light.kind = parts[0] == "dir" ? rt::Light::Kind::Directional : rt::Light::Kind::Point;
+  std::vector<float> v;
+  if (!parseNumbers(parts[1], 3, v)) {
+    why = "the position or direction must be three numbers X,Y,Z";
+    return false;
+  }
+  light.vector = {v[0], v[1], v[2]};
+  if (light.kind == rt::Light::Kind::Directional) {
+    if (glm::dot(light.vector, light.vector) < 1e-12f) {
+      why = "a directional light needs a non-zero direction";
+      return false;
+    }
+    light.vector = glm::normalize(light.vector);
+  }
+  if (parts.size() > 2) {
+    if (!parseNumbers(parts[2], 1, v) || v[0] < 0.0f) {
+      why = "the intensity must be a number >= 0";
+      return false;
+    }
+    light.intensity = v[0];
+  }
+  if (parts.size() > 3) {
+    if (!parseNumbers(parts[3], 3, v) || v[0] < 0.0f || v[1] < 0.0f || v[2] < 0.0f) {
+      why = "the colour must be three numbers >= 0";
+      return false;
+    }
+    light.color = {v[0], v[1], v[2]};
+  }
+  return true;
+}
+
+int runRender(const RenderOptions& options) {
+  rt::RenderSettings settings;
+  settings.width = settings.height = static_cast<uint32_t>(options.size);
+  settings.frames = static_cast<uint32_t>(options.spp);
+  settings.environment = options.environment == "none"    ? rt::Environment::None
+                         : options.environment == "white" ? rt::Environment::White
+                                                          : rt::Environment::Sky;
+  settings.environmentIntensity = options.environmentIntensity;
+  settings.emissionScale = options.emissionScale;
+  if (options.lights.empty()) {
+    // The default key light: from the upper left, in front.
+    settings.lights.push_back({rt::Light::Kind::Directional, glm::normalize(glm::vec3(-1.0f, 1.2f, 1.5f)), glm::vec3(1.0f), 2.0f});
+  }
+  for (const std::string& text : options.lights) {
+    if (text == "none") continue;
+    rt::Light light;
+    std::string why;
+    if (!parseLight(text, light, why)) {
+      std::fprintf(stderr, "error: --light %s: %s\n", text.c_str(), why.c_str());
+      return kUsage;
+    }
+    settings.lights.push_back(light);
+  }
+  if (settings.lights.size() > 8) {
+    std::fprintf(stderr, "error: at most 8 lights\n");
+    return kUsage;
+  }
+  std::vector<float> background;
+  if (!parseNumbers(options.background, 3, background)) {
+    std::fprintf(stderr, "error: --background %s: expected R,G,B\n", options.background.c_str());
+    return kUsage;
+  }
+  rt::Mesh mesh;
+  if (options.mesh == "sphere") {
+    mesh = rt::makeSphere();
+  } else if (options.mesh == "plane") {
+    mesh = rt::makePlane();
+    settings.camera.eye = glm::vec3(0.0f, 2.6f, 2.6f);  // looking down at 45 degrees
+  } else {
+    auto loaded = rt::loadObj(options.mesh);
+    if (auto* error = std::get_if<std::string>(&loaded)) {
+      std::fprintf(stderr, "error: %s\n", error->c_str());
+      return kInvalidDocument;
+    }
+    mesh = std::move(std::get<rt::Mesh>(loaded));
+  }
+
+  Session session;
+  MaterialPipeline pipeline(session);
+  if (int code = pipeline.run(options.file, options.materials); code != kOk) return code;
+  Device device(options.device);
+  rt::AlbedoTables* tables = device.tables();
+  if (!tables) return kInvalidDocument;
+  int result = kOk;
+  try {
+    rt::Renderer renderer(*device.context(), *tables);
+    const bool several = pipeline.materials.size() > 1;
+    for (const ir::Material& material : pipeline.materials) {
+      auto program = prepareMaterial(session, *device.context(), material, glsl::ShaderKind::Raster, pipeline.documentFolder);
+      if (!program) {
+        result = kInvalidDocument;
+        continue;
+      }
+      Progress progress(settings.frames);
+      rt::RenderResult image = renderer.render(mesh, *program->resources, program->shader.interface, program->spirv,
+                                               settings, [&](uint32_t frame) {
+                                                 progress.step(fmt::format("{}: frame {}", material.name, frame));
+                                               });
+      size_t bad = 0;
+      for (float v : image.image.pixels) bad += std::isfinite(v) ? 0 : 1;
+      std::vector<std::string> written;
+      for (const std::string& output : options.outputs) {
+        const auto path = perMaterialPath(output, material.name, several);
+        rt::RgbaImage pixels = image.image;
+        if (path.extension() != ".exr") {
+          // 8-bit outputs get the background under what the surface does not cover.
+          for (size_t i = 0; i < pixels.pixels.size(); i += 4) {
+            const float uncovered = 1.0f - std::clamp(pixels.pixels[i + 3], 0.0f, 1.0f);
+            for (int c = 0; c < 3; ++c) pixels.pixels[i + c] += uncovered * background[c];
+          }
+        }
+        if (auto error = rt::writeImage(path, pixels, options.exposure)) {
+          std::fprintf(stderr, "error: %s\n", error->c_str());
+          return kOutputFailed;
+        }
+        written.push_back(path.string());
+      }
+      if (bad > 0) {
+        std::fprintf(stderr, "error: %s: %zu pixel values are NaN or infinite (written for inspection)\n",
+                     material.name.c_str(), bad);
+        result = kInvalidDocument;
+      }
+      std::printf("%s: wrote %s (%ux%u, %u spp, %.2f ms per frame on %s)\n", material.name.c_str(),
+                  fmt::format("{}", fmt::join(written, ", ")).c_str(),
+                  settings.width, settings.height, settings.frames, image.msPerFrame,
+                  device.context()->deviceName().c_str());
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return kInvalidDocument;
+  }
+  if (!device.checkValidation()) return kInvalidDocument;
+  return result;
+}
+
+}  // namespace
+
+void registerRender(CLI::App& app, int& exitCode) {
+  auto options = std::make_shared<RenderOptions>();
+  CLI::App* command = app.add_subcommand(
+      "render",
+      "Render each material on a sphere: lights evaluated exactly, the environment integrated by Monte Carlo "
+      "over --spp frames. .exr: linear radiance with coverage alpha; .png (and other 8-bit formats): tone-mapped "
+      "(ACES fit), sRGB, over --background. With several materials, file names get _<material>");
+  command->add_option("file", options->file, "The .mtlx document")->required();
+  command->add_option("-o,--output", options->outputs, "Output image (.png, .exr, .jpg, ...); repeatable")->required();
+  command->add_option("--size", options->size, "Width and height in pixels")->check(CLI::Range(8, 8192));
+  command->add_option("--spp", options->spp, "Samples (frames) per pixel")->check(CLI::Range(1, 1 << 20));
+  command->add_option("--light", options->lights,
+                      "dir:X,Y,Z[:INTENSITY[:R,G,B]] (towards the light) or point:X,Y,Z[:INTENSITY[:R,G,B]]; "
+                      "repeatable, up to 8; 'none' for no light (default: dir:-1,1.2,1.5:2)");
+  command->add_option("--env", options->environment, "Environment: none, white (the furnace) or sky")
+      ->check(CLI::IsMember({"none", "white", "sky"}));
+  command->add_option("--env-intensity", options->environmentIntensity, "Environment radiance scale")
+      ->check(CLI::NonNegativeNumber);
+  command->add_option("--emission-scale", options->emissionScale, "Radiance per unit of emission")
+      ->check(CLI::NonNegativeNumber);
+  command->add_option("--exposure", options->exposure, "Exposure of 8-bit outputs, in stops");
+  command->add_option("--background", options->background, "Background of 8-bit outputs, linear R,G,B");
+  command->add_option("--mesh", options->mesh, "sphere, plane, or an .obj file");
+  addMaterialOptions(*command, options->materials);
+  addDeviceOptions(*command, options->device);
+  command->callback([options, &exitCode] { exitCode = runRender(*options); });
+}
+
+}  // namespace mxc::cli

@@ -1,0 +1,149 @@
+// Shader compile and render cost: for open_pbr_default and open_pbr_carpaint, the time from
+// the .mtlx file to a validated SPIR-V module (front end, GLSL, glslang, SPIRV-Tools), the
+// module's instruction count (plain and optimised), and the frame time of the sphere renderer,
+// against a flat-colour fragment shader measured in the same run on the same device.
+//
+//   build/tests/bench/shader_bench [--size N] [--frames N] [--repeat N]
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "compiler/document/DocumentLoader.h"
+#include "compiler/glsl/ShaderBuilder.h"
+#include "compiler/ir/Effects.h"
+#include "compiler/ir/passes/Pass.h"
+#include "compiler/library/LibraryStack.h"
+#include "compiler/lower/Lowering.h"
+#include "compiler/resolve/Resolver.h"
+#include "runtime/Renderer.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+struct Compiled {
+  mxc::glsl::MaterialShader shader;
+  std::vector<uint32_t> words;
+  double frontEndMs = 0.0;  // parse, resolve, lower, passes, GLSL
+  double spirvMs = 0.0;     // glslang and SPIRV-Tools validation
+};
+
+/// One compile from the file, with the library already loaded (as in a running tool).
+Compiled compileFile(mxc::lib::LibraryStack& libraries, mxc::SourceManager& sources, const fs::path& file) {
+  Compiled out;
+  const auto start = Clock::now();
+  mxc::Diagnostics diagnostics;
+  mxc::doc::DocumentLoader loader(sources, diagnostics);
+  const mxc::doc::Document* d = loader.loadFile(file);
+  auto resolved = mxc::resolve::resolveDocument(*d, libraries.top(), diagnostics);
+  std::vector<mxc::ir::Material> materials = mxc::lower::lowerDocument(resolved, {}, diagnostics);
+  mxc::ir::runPasses(materials.at(0));
+  mxc::ir::summarizeEffects(materials.at(0));
+  out.shader = mxc::glsl::buildMaterialShader(materials.at(0), mxc::glsl::ShaderKind::Raster);
+  out.frontEndMs = msSince(start);
+  const auto glslang = Clock::now();
+  auto words = mxc::spirv::compile(out.shader.glsl, {}, diagnostics);
+  out.spirvMs = msSince(glslang);
+  if (!words) {
+    std::fprintf(stderr, "%s", diagnostics.format().c_str());
+    std::exit(1);
+  }
+  out.words = std::move(*words);
+  return out;
+}
+
+/// The baseline: a fragment shader that writes one colour, with the renderer's interface.
+Compiled flatShader() {
+  Compiled out;
+  out.shader.glsl.stage = mxc::spirv::Stage::Fragment;
+  out.shader.glsl.name = "flat colour";
+  out.shader.glsl.text =
+      "#version 450\nlayout(location = 0) out vec4 outColor;\n"
+      "void main() { outColor = vec4(0.18, 0.18, 0.18, 1.0); }\n";
+  out.shader.interface.parameterBytes = 16;
+  mxc::Diagnostics diagnostics;
+  out.words = *mxc::spirv::compile(out.shader.glsl, {}, diagnostics);
+  return out;
+}
+
+size_t optimizedCount(const Compiled& c) {
+  mxc::Diagnostics diagnostics;
+  auto words = mxc::spirv::compile(c.shader.glsl, {true}, diagnostics);
+  return words ? mxc::spirv::instructionCount(*words) : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  uint32_t size = 512, frames = 16;
+  int repeat = 5;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--size")) size = static_cast<uint32_t>(std::atoi(argv[i + 1]));
+    if (!std::strcmp(argv[i], "--frames")) frames = static_cast<uint32_t>(std::atoi(argv[i + 1]));
+    if (!std::strcmp(argv[i], "--repeat")) repeat = std::max(1, std::atoi(argv[i + 1]));
+  }
+  const fs::path shared = MXC_SHARED_DIR;
+  const fs::path files[] = {shared / "corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx",
+                            shared / "corpus/materialx/examples/OpenPbr/open_pbr_carpaint.mtlx"};
+  mxc::SourceManager sources;
+  mxc::Diagnostics diagnostics;
+  mxc::lib::LibraryStack libraries(sources, diagnostics);
+  libraries.addBuiltin();
+
+  mxc::rt::VulkanContext context;
+  mxc::rt::AlbedoTables tables(context);
+  mxc::rt::Renderer renderer(context, tables);
+  const mxc::rt::Mesh sphere = mxc::rt::makeSphere();
+  mxc::rt::RenderSettings settings;
+  settings.width = settings.height = size;
+  settings.frames = frames;
+  settings.lights.push_back({mxc::rt::Light::Kind::Directional, glm::normalize(glm::vec3(-1, 1.2f, 1.5f)), glm::vec3(1), 2});
+  auto frameMs = [&](const Compiled& c) {
+    std::vector<std::string> warnings;
+    mxc::rt::MaterialResources resources(context, c.shader.interface, {}, warnings);
+    std::vector<double> times;
+    for (int r = 0; r < std::max(1, repeat / 2); ++r) {
+      times.push_back(renderer.render(sphere, resources, c.shader.interface, c.words, settings).msPerFrame);
+    }
+    return median(times);
+  };
+
+  std::printf("device: %s; %ux%u, %u frames of 1 sample, median of runs\n\n", context.deviceName().c_str(), size, size,
+              frames);
+  const Compiled flat = flatShader();
+  const double flatMs = frameMs(flat);
+  std::printf("%-18s %10s %10s %10s %12s %12s %12s %9s\n", "material", "front end", "glslang", "total", "SPIR-V ops",
+              "optimised", "ms/frame", "x flat");
+  std::printf("%-18s %10s %10s %10s %12zu %12zu %12.2f %9.2f\n", "flat colour", "-", "-", "-",
+              mxc::spirv::instructionCount(flat.words), optimizedCount(flat), flatMs, 1.0);
+  for (const fs::path& file : files) {
+    std::vector<double> front, spirv, total;
+    Compiled last;
+    for (int r = 0; r < repeat; ++r) {
+      last = compileFile(libraries, sources, file);
+      front.push_back(last.frontEndMs);
+      spirv.push_back(last.spirvMs);
+      total.push_back(last.frontEndMs + last.spirvMs);
+    }
+    const double ms = frameMs(last);
+    std::printf("%-18s %8.2fms %8.2fms %8.2fms %12zu %12zu %12.2f %9.2f\n", file.stem().string().c_str(), median(front),
+                median(spirv), median(total), mxc::spirv::instructionCount(last.words), optimizedCount(last), ms,
+                ms / flatMs);
+  }
+  return 0;
+}

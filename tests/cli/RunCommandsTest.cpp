@@ -1,0 +1,107 @@
+// The commands that compile and run materials: compile, render, eval, furnace. Their outputs,
+// their exit codes, and that nothing half-written is left behind on failure.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "runtime/ImageIO.h"
+#include "support/CommandSupport.h"
+
+namespace mxc::test {
+namespace {
+
+const std::string kDefault = "materialx/examples/OpenPbr/open_pbr_default.mtlx";
+
+std::string readAll(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(CompileCommand, WritesValidSpirvAndGlsl) {
+  const fs::path spv = writeTemp("out.spv", "");
+  const fs::path frag = writeTemp("out.frag", "");
+  CommandRun r = mxc("compile " + corpus(kDefault) + " -o " + spv.string() + " --glsl " + frag.string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("Default: raster shader"), std::string::npos) << r.out;
+  const std::string words = readAll(spv);
+  ASSERT_GE(words.size(), 20u);
+  EXPECT_EQ(static_cast<unsigned char>(words[0]), 0x03);  // SPIR-V magic 0x07230203, little-endian
+  EXPECT_EQ(static_cast<unsigned char>(words[3]), 0x07);
+  const std::string glsl = readAll(frag);
+  EXPECT_EQ(glsl.rfind("#version 450", 0), 0u);
+  EXPECT_NE(glsl.find("void mxc_material_closure("), std::string::npos);
+  fs::remove(spv);
+  fs::remove(frag);
+}
+
+TEST(CompileCommand, BadSetIsAnErrorAtTheShadingNode) {
+  const fs::path spv = fs::temp_directory_path() / ("mxc_cli_none_" + std::to_string(::getpid()) + ".spv");
+  CommandRun r = mxc("compile " + corpus(kDefault) + " --set nonsense=1 -o " + spv.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("open_pbr_default.mtlx:7:3:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("has no input named 'nonsense'"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(spv)) << "nothing is written for a failed compile";
+  r = mxc("compile " + corpus(kDefault) + " --set base_color");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("expected INPUT=VALUE"), std::string::npos) << r.err;
+  r = mxc("compile " + corpus(kDefault) + " --material Nope");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("has no material 'Nope' (it has: Default)"), std::string::npos) << r.err;
+}
+
+TEST(FurnaceCommand, PrintsAlbedoPerAngleAsJson) {
+  CommandRun r = mxc("furnace " + corpus(kDefault) + " --angles 3 --samples 4096 --set base_color=1,1,1");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["materials"].size(), 1u);
+  const auto& angles = j["materials"][0]["angles"];
+  ASSERT_EQ(angles.size(), 3u);
+  EXPECT_DOUBLE_EQ(angles[0]["theta_deg"].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(angles[1]["theta_deg"].get<double>(), 30.0);
+  for (const auto& a : angles) EXPECT_NEAR(a["total"][1].get<double>(), 1.0, 0.01);  // white base: lossless
+}
+
+TEST(EvalCommand, PrintsFCosPerRowAndReportsBadRows) {
+  const fs::path dirs = writeTemp("dirs.csv", "wo_x,wo_y,wo_z,wi_x,wi_y,wi_z\n0,0,1, 0,0,1\n# below\n0,0,1,0.6,0,-0.8\n");
+  CommandRun r = mxc("eval " + corpus(kDefault) + " --dirs " + dirs.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::stringstream lines(r.out);
+  std::string header, row1, row2;
+  std::getline(lines, header);
+  std::getline(lines, row1);
+  std::getline(lines, row2);
+  EXPECT_EQ(header, "material,row,fcos_r,fcos_g,fcos_b,pdf");
+  EXPECT_EQ(row1.rfind("Default,1,", 0), 0u) << row1;
+  float r1 = 0, g1 = 0, b1 = 0, p1 = 0;
+  ASSERT_EQ(std::sscanf(row1.c_str(), "Default,1,%f,%f,%f,%f", &r1, &g1, &b1, &p1), 4) << row1;
+  EXPECT_GT(r1, 0.2f);  // a diffuse base seen and lit from the normal
+  EXPECT_EQ(row2, "Default,2,0,0,0,0");  // an opaque surface does not transmit
+  const fs::path bad = writeTemp("bad.csv", "0,0,1,0,0,1\n0,0,1,0,x,1\n");
+  r = mxc("eval " + corpus(kDefault) + " --dirs " + bad.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find(bad.string() + ":2:9: error: expected a number as value 5 of 6"), std::string::npos) << r.err;
+  fs::remove(dirs);
+  fs::remove(bad);
+}
+
+TEST(RenderCommand, WritesAFiniteImage) {
+  const fs::path exr = fs::temp_directory_path() / ("mxc_cli_render_" + std::to_string(::getpid()) + ".exr");
+  CommandRun r = mxc("render " + corpus(kDefault) + " -o " + exr.string() + " --size 32 --spp 2 --env white --validation");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("32x32, 2 spp"), std::string::npos) << r.out;
+  auto image = rt::readImage(exr);
+  ASSERT_TRUE(std::holds_alternative<rt::RgbaImage>(image));
+  const rt::RgbaImage& img = std::get<rt::RgbaImage>(image);
+  EXPECT_EQ(img.width, 32u);
+  EXPECT_GT(img.at(16, 16)[3], 0.99f);  // the sphere covers the centre
+  EXPECT_EQ(img.at(0, 0)[3], 0.0f);     // and not the corner
+  fs::remove(exr);
+  r = mxc("render " + corpus(kDefault) + " -o " + exr.string() + " --light sun:1,1,1");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("--light sun:1,1,1: expected dir:"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(exr));
+}
+
+}  // namespace
+}  // namespace mxc::test

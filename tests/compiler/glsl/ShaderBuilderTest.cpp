@@ -1,0 +1,144 @@
+// The GLSL backend (compiler/glsl): only what the IR keeps is emitted, --param inputs become
+// uniforms, textures become bindings, and generated lines map back to the document.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "support/MaterialSupport.h"
+
+namespace mxc::test {
+namespace {
+
+std::string openPbr(const std::string& inputs = "") {
+  return mtlx("  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n" + inputs +
+              "  </open_pbr_surface>\n  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
+              "type=\"surfaceshader\" nodename=\"s\" /></surfacematerial>\n");
+}
+
+size_t count(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+glsl::MaterialShader shaderOf(const std::string& text, const lower::LoweringOptions& options = {}) {
+  Context context;
+  std::vector<ir::Material> materials = lowerText(context, text, options);
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  if (materials.size() != 1) {
+    ADD_FAILURE() << "expected one material";
+    return {};
+  }
+  return glsl::buildMaterialShader(materials[0], glsl::ShaderKind::Raster);
+}
+
+TEST(ShaderBuilder, CoatCodeOnlyWhenTheMaterialHasACoat) {
+  glsl::MaterialShader plain = shaderOf(openPbr());
+  glsl::MaterialShader coated = shaderOf(openPbr("    <input name=\"coat_weight\" type=\"float\" value=\"1\" />\n"));
+  EXPECT_EQ(plain.interface.features.lobes, 2);  // specular and diffuse
+  EXPECT_EQ(coated.interface.features.lobes, 3);
+  EXPECT_EQ(count(plain.glsl.text, "= MXC_LOBE_DIELECTRIC;"), 1u);
+  EXPECT_EQ(count(coated.glsl.text, "= MXC_LOBE_DIELECTRIC;"), 2u);
+  // coat_weight = 0 given explicitly folds away the same way.
+  glsl::MaterialShader zero = shaderOf(openPbr("    <input name=\"coat_weight\" type=\"float\" value=\"0\" />\n"));
+  EXPECT_EQ(zero.glsl.text, plain.glsl.text);
+}
+
+TEST(ShaderBuilder, ThinFilmAndLobeKindsCompiledOnlyWhenUsed) {
+  glsl::MaterialShader plain = shaderOf(openPbr());
+  EXPECT_EQ(count(plain.glsl.text, "#define MXC_THIN_FILM"), 0u);
+  EXPECT_EQ(count(plain.glsl.text, "#define MXC_HAS_SHEEN"), 0u);
+  EXPECT_EQ(count(plain.glsl.text, "#define MXC_HAS_EON"), 1u);
+  glsl::MaterialShader film = shaderOf(openPbr("    <input name=\"thin_film_weight\" type=\"float\" value=\"1\" />\n"
+                                               "    <input name=\"thin_film_thickness\" type=\"float\" value=\"0.5\" />\n"
+                                               "    <input name=\"fuzz_weight\" type=\"float\" value=\"1\" />\n"));
+  EXPECT_EQ(count(film.glsl.text, "#define MXC_THIN_FILM"), 1u);
+  EXPECT_EQ(count(film.glsl.text, "#define MXC_HAS_SHEEN"), 1u);
+  // Procedural library code only for procedural nodes.
+  EXPECT_EQ(count(plain.glsl.text, "mxc_noise_float("), 0u);
+}
+
+TEST(ShaderBuilder, ParamInputsBecomeUniformsWithTheirDefault) {
+  lower::LoweringOptions options;
+  options.parameters = {"base_color", "coat_weight"};
+  glsl::MaterialShader shader = shaderOf(openPbr("    <input name=\"base_color\" type=\"color3\" value=\"0.3, 0.5, 0.7\" />\n"),
+                                         options);
+  EXPECT_EQ(count(shader.glsl.text, "vec3 p_base_color;"), 1u);
+  EXPECT_GE(count(shader.glsl.text, "mxc_params.p_base_color"), 1u);
+  EXPECT_EQ(count(shader.glsl.text, "0.3, 0.5, 0.7"), 0u) << "the value must not be folded into the code";
+  // A coat weight that may change keeps the coat's code.
+  EXPECT_EQ(shader.interface.features.lobes, 3);
+  const glsl::UniformField* color = nullptr;
+  for (const glsl::UniformField& f : shader.interface.parameters) color = f.name == "p_base_color" ? &f : color;
+  ASSERT_NE(color, nullptr);
+  EXPECT_EQ(color->offset % 16, 0u);  // std140: a vec3 is 16-byte aligned
+  std::vector<uint8_t> bytes = glsl::packParameters(shader.interface.parameters, shader.interface.parameterBytes);
+  float packed[3];
+  std::memcpy(packed, bytes.data() + color->offset, sizeof(packed));
+  EXPECT_FLOAT_EQ(packed[0], 0.3f);
+  EXPECT_FLOAT_EQ(packed[2], 0.7f);
+}
+
+TEST(ShaderBuilder, SetOverridesAnInputAndReportsBadOnes) {
+  glsl::MaterialShader coated = shaderOf(openPbr(), withInputs({{"coat_weight", "1"}}));
+  EXPECT_EQ(coated.interface.features.lobes, 3);
+  {
+    Context context;
+    lowerText(context, openPbr(), withInputs({{"no_such_input", "1"}}));
+    ASSERT_TRUE(context.diagnostics.hasErrors());
+    EXPECT_NE(context.firstError().message.find("has no input named 'no_such_input'"), std::string::npos)
+        << context.firstError().message;
+    EXPECT_EQ(context.firstError().location.line(), 3u);  // the open_pbr_surface element
+  }
+  {
+    Context context;
+    lowerText(context, openPbr(), withInputs({{"base_color", "red"}}));
+    ASSERT_TRUE(context.diagnostics.hasErrors());
+    EXPECT_NE(context.firstError().message.find("--set base_color=red: not a valid color3 value"), std::string::npos)
+        << context.firstError().message;
+  }
+}
+
+TEST(ShaderBuilder, Std140LayoutOfParameters) {
+  std::vector<glsl::UniformField> fields{{"a", ir::Type::Float, 0, {1.0f}},
+                                         {"m", ir::Type::Mat3, 16, {1, 2, 3, 4, 5, 6, 7, 8, 9}}};
+  std::vector<uint8_t> bytes = glsl::packParameters(fields, 64);
+  float column1[3];
+  std::memcpy(column1, bytes.data() + 16 + 16, sizeof(column1));  // the second column, padded to 16 bytes
+  EXPECT_EQ(column1[0], 2.0f);  // row-major input: m[0][1] = 2 is column 1, row 0
+  EXPECT_EQ(column1[1], 5.0f);
+  EXPECT_EQ(column1[2], 8.0f);
+}
+
+TEST(ShaderBuilder, TexturesBecomeBindingsWithTheirColourSpace) {
+  Context context;
+  std::vector<ir::Material> materials =
+      lowerFile(context, sharedDir() / "corpus/materialx/examples/StandardSurface/standard_surface_wood_tiled.mtlx");
+  ASSERT_EQ(materials.size(), 1u);
+  glsl::MaterialShader shader = glsl::buildMaterialShader(materials[0], glsl::ShaderKind::Raster);
+  ASSERT_EQ(shader.interface.textures.size(), 2u);
+  std::vector<std::string> spaces;
+  for (const glsl::TextureBinding& t : shader.interface.textures) {
+    EXPECT_GE(t.binding, glsl::kFirstTextureBinding);
+    EXPECT_NE(t.path.find("../../../Images/wood_"), std::string::npos) << t.path;
+    spaces.push_back(t.path.find("color") != std::string::npos ? t.colorspace : "(roughness) " + t.colorspace);
+  }
+  EXPECT_NE(std::find(spaces.begin(), spaces.end(), "srgb_texture"), spaces.end());
+}
+
+TEST(ShaderBuilder, MaterialLinesMapToTheDocument) {
+  Context context;
+  std::vector<ir::Material> materials = lowerText(context, openPbr("    <input name=\"coat_weight\" type=\"float\" value=\"1\" />\n"));
+  ASSERT_EQ(materials.size(), 1u);
+  glsl::MaterialShader shader = glsl::buildMaterialShader(materials[0], glsl::ShaderKind::Eval);
+  ASSERT_EQ(shader.glsl.origins.size(), size_t(std::count(shader.glsl.text.begin(), shader.glsl.text.end(), '\n')));
+  size_t mapped = 0;
+  for (const SourceLocation& at : shader.glsl.origins) mapped += at.valid() ? 1 : 0;
+  EXPECT_GT(mapped, 20u);  // the lobes' lines come from the shading node
+  EXPECT_LT(mapped, shader.glsl.origins.size() / 4);  // library lines have no document origin
+}
+
+}  // namespace
+}  // namespace mxc::test

@@ -1,0 +1,105 @@
+// Golden images: rendered spheres of chosen corpus materials (both shading models, textured and
+// procedural ones included), committed under generated/images/ as EXR and compared with an
+// explicit per-pixel tolerance. A failing comparison writes the image and a difference image
+// to the build folder (test-output/). `scripts/update-goldens` rewrites them.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "runtime/ImageIO.h"
+#include "support/MaterialSupport.h"
+
+namespace mxc::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string> kGoldenMaterials = {
+    "corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx",
+    "corpus/materialx/examples/OpenPbr/open_pbr_carpaint.mtlx",
+    "corpus/materialx/examples/OpenPbr/open_pbr_glass.mtlx",
+    "corpus/materialx/examples/OpenPbr/open_pbr_soapbubble.mtlx",
+    "corpus/materialx/examples/OpenPbr/open_pbr_velvet.mtlx",
+    "corpus/materialx/examples/StandardSurface/standard_surface_gold.mtlx",
+    "corpus/materialx/examples/StandardSurface/standard_surface_wood_tiled.mtlx",
+    "corpus/materialx/examples/StandardSurface/standard_surface_brick_procedural.mtlx",
+    "corpus/materialx/examples/StandardSurface/standard_surface_marble_solid.mtlx",
+};
+
+// The tolerance: a pixel channel matches when |a - b| <= 0.02 + 0.05 |b| (linear radiance);
+// at most 0.5% of the channels may miss (Monte Carlo outliers move when a sample direction
+// changes by a rounding step), and the mean absolute difference must stay under 0.004.
+constexpr float kAbsolute = 0.02f;
+constexpr float kRelative = 0.05f;
+constexpr double kOutlierShare = 0.005;
+constexpr double kMeanDifference = 0.004;
+
+rt::RenderSettings goldenSettings() {
+  rt::RenderSettings s;
+  s.width = s.height = 96;
+  s.frames = 32;
+  s.lights.push_back({rt::Light::Kind::Directional, glm::normalize(glm::vec3(-1.0f, 1.2f, 1.5f)), glm::vec3(1.0f), 2.0f});
+  return s;
+}
+
+class ImageGolden : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ImageGolden, MatchesCommittedImage) {
+  const fs::path document = sharedDir() / GetParam();
+  Context context;
+  std::vector<ir::Material> materials = lowerFile(context, document);
+  ASSERT_EQ(materials.size(), 1u);
+  rt::RgbaImage actual = render(materials[0], goldenSettings(), document.parent_path());
+  ASSERT_FALSE(actual.pixels.empty());
+  const std::string name = fs::path(GetParam()).stem().string();
+  const fs::path golden = sourceDir() / "generated/images" / (name + ".exr");
+  if (const char* update = std::getenv("MXC_UPDATE_GOLDENS"); update && std::string(update) == "1") {
+    fs::create_directories(golden.parent_path());
+    ASSERT_FALSE(rt::writeImage(golden, actual).has_value());
+    ASSERT_FALSE(rt::writeImage(fs::path(golden).replace_extension(".png"), actual).has_value());
+    GTEST_SKIP() << "updated " << golden;
+  }
+  auto read = rt::readImage(golden);
+  ASSERT_TRUE(std::holds_alternative<rt::RgbaImage>(read))
+      << std::get<std::string>(read) << ": run scripts/update-goldens";
+  const rt::RgbaImage& expected = std::get<rt::RgbaImage>(read);
+  ASSERT_EQ(expected.width, actual.width);
+  ASSERT_EQ(expected.height, actual.height);
+  rt::RgbaImage diff{actual.width, actual.height, std::vector<float>(actual.pixels.size(), 0.0f)};
+  size_t outliers = 0, channels = 0;
+  double sum = 0.0;
+  for (size_t i = 0; i < actual.pixels.size(); ++i) {
+    if (i % 4 == 3) {
+      diff.pixels[i] = 1.0f;
+      continue;
+    }
+    const float a = actual.pixels[i], b = expected.pixels[i];
+    const float d = std::abs(a - b);
+    ++channels;
+    sum += d;
+    if (!(d <= kAbsolute + kRelative * std::abs(b))) ++outliers;  // also counts NaN
+    diff.pixels[i] = 10.0f * d;
+  }
+  const double share = double(outliers) / double(channels);
+  const double mean = sum / double(channels);
+  if (share > kOutlierShare || mean > kMeanDifference) {
+    const fs::path out = fs::current_path() / "test-output";
+    fs::create_directories(out);
+    rt::writeImage(out / (name + ".exr"), actual);
+    rt::writeImage(out / (name + ".diff.png"), diff);
+    ADD_FAILURE() << name << ": " << fmt::format("{:.3f}% of channels outside tolerance, mean difference {:.5f}", 100.0 * share, mean)
+                  << "; image and difference (x10) written to " << out;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, ImageGolden, ::testing::ValuesIn(kGoldenMaterials),
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           return fs::path(param.param).stem().string();
+                         });
+
+}  // namespace
+}  // namespace mxc::test

@@ -1,0 +1,134 @@
+#pragma once
+// Helpers for tests that run materials: lower a document to IR materials (after the passes),
+// and evaluate them on the shared Vulkan device (validation on).
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "compiler/glsl/ShaderBuilder.h"
+#include "compiler/ir/Effects.h"
+#include "compiler/ir/passes/Pass.h"
+#include "compiler/lower/Lowering.h"
+#include "runtime/Evaluator.h"
+#include "support/TestSupport.h"
+
+namespace mxc::test {
+
+/// The materials of a loaded document, lowered with `options` and run through the passes.
+inline std::vector<ir::Material> lowerLoaded(Context& context, const doc::Document* d,
+                                             const lower::LoweringOptions& options = {}) {
+  if (!d) return {};
+  resolve::ResolvedDocument r = resolve::resolveDocument(*d, context.libraries.top(), context.diagnostics);
+  std::vector<ir::Material> materials = lower::lowerDocument(r, options, context.diagnostics);
+  for (ir::Material& m : materials) {
+    ir::runPasses(m);
+    ir::summarizeEffects(m);
+  }
+  return materials;
+}
+
+inline std::vector<ir::Material> lowerText(Context& context, const std::string& text,
+                                           const lower::LoweringOptions& options = {}) {
+  return lowerLoaded(context, context.load(text), options);
+}
+
+inline std::vector<ir::Material> lowerFile(Context& context, const std::filesystem::path& path,
+                                           const lower::LoweringOptions& options = {}) {
+  return lowerLoaded(context, context.loader.loadFile(path), options);
+}
+
+/// `--set` overrides as lowering options.
+inline lower::LoweringOptions withInputs(std::vector<std::pair<std::string, std::string>> overrides) {
+  lower::LoweringOptions options;
+  options.overrides = std::move(overrides);
+  return options;
+}
+
+/// One Vulkan device and its albedo tables for the whole test program, validation on.
+struct Device {
+  static Device& get() {
+    static Device device;
+    return device;
+  }
+  rt::VulkanContext context{rt::DeviceOptions{"", true}};
+  rt::AlbedoTables tables{context};
+};
+
+/// Compiles a material's shader of `kind`; fails the test when it does not compile.
+inline std::vector<uint32_t> compileShader(const glsl::MaterialShader& shader) {
+  Diagnostics diagnostics;
+  auto words = spirv::compile(shader.glsl, {}, diagnostics);
+  EXPECT_TRUE(words.has_value()) << diagnostics.format();
+  return words.value_or(std::vector<uint32_t>{});
+}
+
+/// A material's shader of one kind, compiled, with its resources on the shared device.
+struct Prepared {
+  glsl::MaterialShader shader;
+  std::vector<uint32_t> words;
+  std::unique_ptr<rt::MaterialResources> resources;
+  bool ok() const { return !words.empty(); }
+};
+
+inline Prepared prepare(const ir::Material& material, glsl::ShaderKind kind, const std::filesystem::path& folder = {}) {
+  Prepared p;
+  p.shader = glsl::buildMaterialShader(material, kind);
+  p.words = compileShader(p.shader);
+  std::vector<std::string> warnings;
+  if (p.ok()) p.resources = std::make_unique<rt::MaterialResources>(Device::get().context, p.shader.interface, folder, warnings);
+  return p;
+}
+
+/// The directional albedo of a material at the given view directions.
+inline std::vector<rt::Albedo> furnace(const ir::Material& material, const std::vector<glm::vec3>& views,
+                                       uint32_t samples, const std::filesystem::path& folder = {}) {
+  Prepared p = prepare(material, glsl::ShaderKind::Furnace, folder);
+  if (!p.ok()) return {};
+  rt::FurnaceEstimator estimator(Device::get().context, Device::get().tables, *p.resources, p.shader.interface, p.words);
+  return estimator.estimate(views, samples, 7);
+}
+
+/// f(wo, wi) |cos| and the pdf for direction pairs.
+inline std::vector<glm::vec4> evaluate(const ir::Material& material, const std::vector<rt::DirectionPair>& pairs) {
+  Prepared p = prepare(material, glsl::ShaderKind::Eval);
+  if (!p.ok()) return {};
+  rt::MaterialEvaluator evaluator(Device::get().context, Device::get().tables, *p.resources, p.shader.interface, p.words);
+  return evaluator.evaluate(pairs);
+}
+
+/// A view direction at `degrees` from the normal, in the xz plane.
+inline glm::vec3 viewAt(double degrees) {
+  const double t = degrees * 3.14159265358979 / 180.0;
+  return glm::vec3(static_cast<float>(std::sin(t)), 0.0f, static_cast<float>(std::cos(t)));
+}
+
+/// A document with one BSDF node (given as XML) as its material's surface.
+inline std::string bsdfDocument(const std::string& bsdf, const std::string& name = "bsdf") {
+  return mtlx(bsdf + "  <surface name=\"surf\" type=\"surfaceshader\"><input name=\"bsdf\" type=\"BSDF\" nodename=\"" +
+              name +
+              "\" /></surface>\n  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
+              "type=\"surfaceshader\" nodename=\"surf\" /></surfacematerial>\n");
+}
+
+}  // namespace mxc::test
+
+#include "runtime/Renderer.h"
+
+namespace mxc::test {
+
+/// Renders a material on the default sphere with the shared device.
+inline rt::RgbaImage render(const ir::Material& material, const rt::RenderSettings& settings,
+                            const std::filesystem::path& folder = {}) {
+  Prepared p = prepare(material, glsl::ShaderKind::Raster, folder);
+  if (!p.ok()) return {};
+  static std::unique_ptr<rt::Renderer> renderer;  // its vertex shader is compiled once
+  if (!renderer) renderer = std::make_unique<rt::Renderer>(Device::get().context, Device::get().tables);
+  static const rt::Mesh sphere = rt::makeSphere();
+  return renderer->render(sphere, *p.resources, p.shader.interface, p.words, settings).image;
+}
+
+}  // namespace mxc::test
