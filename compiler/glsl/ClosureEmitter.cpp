@@ -215,6 +215,13 @@ void ClosureEmitter::slab(const ir::ScatterNode& n, const std::string& weight, c
       // "Thin-walled mode": transmission_color).
       lines_.add(fmt::format("  c.lobes[{}].c1 *= exp(-{});", features_.lobes - 1,
                              product(mediumSlot(Slot::Absorption, "vec3(0.0)"), mediumSlot(Slot::Thickness, "1.0"))));
+    } else if ((mode & 2) && medium->slots.find(Slot::Absorption)) {
+      // The bulk's absorption along the refracted path, taken as MXC_BULK_PATH (one scene unit,
+      // the radius of the test sphere): this closure sees one interface, not the object, so the
+      // path length inside is assumed (Beer's law; OpenPBR "Translucent base").
+      lines_.add(fmt::format("  c.lobes[{}].c1 *= exp(-{} * MXC_BULK_PATH);", features_.lobes - 1,
+                             mediumSlot(Slot::Absorption, "vec3(0.0)")),
+                 medium->origin.location);
     }
     if (below) {
       // OpenPBR "Layering": the layers below receive what the top does not reflect, 1 - E(wo).

@@ -52,11 +52,27 @@ inline lower::LoweringOptions withInputs(std::vector<std::pair<std::string, std:
 struct Device {
   static Device& get() {
     static Device device;
+    created() = true;
     return device;
+  }
+  static bool& created() {
+    static bool value = false;
+    return value;
   }
   rt::VulkanContext context{rt::DeviceOptions{"", true}};
   rt::AlbedoTables tables{context};
 };
+
+/// Fails the test program when the validation layer said anything while it ran.
+class ValidationEnvironment : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    if (!Device::created()) return;
+    for (const std::string& m : Device::get().context.validationMessages()) ADD_FAILURE() << "validation: " << m;
+  }
+};
+inline ::testing::Environment* const kValidationEnvironment =
+    ::testing::AddGlobalTestEnvironment(new ValidationEnvironment);
 
 /// Compiles a material's shader of `kind`; fails the test when it does not compile.
 inline std::vector<uint32_t> compileShader(const glsl::MaterialShader& shader) {

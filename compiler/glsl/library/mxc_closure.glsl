@@ -2,6 +2,10 @@
 // "Reduction to a mixture of lobes"): the generated code fills an MxcClosure for a view
 // direction; these functions evaluate and sample it. World-space directions.
 
+// The path length assumed inside a bulk medium under a transmitting interface, in scene units
+// (the radius of the renderer's sphere): a closure sees one interface, not the whole object.
+const float MXC_BULK_PATH = 1.0;
+
 struct MxcClosure {
   MxcLobe lobes[MXC_MAX_LOBES];
   int count;

@@ -31,6 +31,20 @@ vec3 mxc_environment(vec3 d) {
   return vec3(0.0);
 }
 
+// Light refracted into a solid object leaves it on the far side. For a sphere the exit
+// refraction deviates the ray by the same angle, in the same sense, as the entry did (the chord
+// is symmetric about the sphere's centre), so the environment is seen along the entry's
+// direction change applied twice: t rotated once more by the rotation that took d to t
+// (Rodrigues' formula). A thin sheet transmits along d itself, which this leaves unchanged.
+vec3 mxc_exit_direction(vec3 d, vec3 t) {
+  vec3 axis = cross(d, t);
+  float s = length(axis);
+  if (s < 1e-6) return t;  // no deviation
+  axis /= s;               // s > 0
+  float c = dot(d, t);
+  return t * c + cross(axis, t) * s + axis * dot(axis, t) * (1.0 - c);
+}
+
 void main() {
   MxcGeometry g;
   g.P = vPosition;
@@ -79,7 +93,9 @@ void main() {
     for (int s = 0; s < n; ++s) {
       vec3 u = vec3(mxc_uniform(seed), mxc_uniform(seed), mxc_uniform(seed));
       MxcSample smp = mxc_closure_sample(c, wo, u);
-      if (smp.valid) sum += smp.weight * mxc_environment(smp.wi);
+      if (!smp.valid) continue;
+      vec3 seen = dot(smp.wi, N) < 0.0 ? mxc_exit_direction(-wo, smp.wi) : smp.wi;
+      sum += smp.weight * mxc_environment(seen);
     }
     radiance += sum / float(n);  // n >= 1
   }

@@ -46,6 +46,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
   c.lobes[0] = lobe0;
+  c.lobes[0].c1 *= exp(-vec3(11.363141, 18.708027, 29.374632) * MXC_BULK_PATH);
   c.count = 1;
   mxc_closure_prepare(c, wo);
 }

@@ -178,6 +178,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.tau = vec3(0.0);
   lobe3.tauEta = 1.0;
   c.lobes[1] = lobe3;
+  c.lobes[1].c1 *= exp(-vec3(0.8, 0.8, 0.1) * MXC_BULK_PATH);
   c.count = 2;
   mxc_closure_prepare(c, wo);
 }
