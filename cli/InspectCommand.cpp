@@ -7,6 +7,7 @@
 
 #include "cli/AtomicFile.h"
 #include "cli/ExitCode.h"
+#include "cli/MaterialPipeline.h"
 #include "cli/Session.h"
 #include "compiler/document/DocumentLoader.h"
 #include "compiler/inspect/Inspect.h"
@@ -28,6 +29,7 @@ struct InspectOptions {
   bool partial = false;
   bool ir = false;
   bool shadingModelGraphs = false;
+  MaterialOptions inputs;  ///< --set and --param, for --ir
   LibraryOptions libraries;
 };
 
@@ -51,6 +53,7 @@ int runInspect(const InspectOptions& options) {
   std::string report;
   if (options.ir) {
     lower::LoweringOptions lowering;
+    if (!inputOptions(options.inputs, lowering)) return kUsage;
     lowering.useShadingModelGraphs = options.shadingModelGraphs;
     std::vector<ir::Material> materials = lower::lowerDocument(resolved, lowering, session.diagnostics);
     for (ir::Material& m : materials) {
@@ -103,6 +106,7 @@ void registerInspect(CLI::App& app, int& exitCode) {
   command->add_option("-o,--output", options->output, "Write the report to this file (atomically) instead of stdout");
   command->add_flag("--partial", options->partial,
                     "Write the report even when the document has errors (the exit code is still 1)");
+  addInputOptions(*command, options->inputs);
   addLibraryOptions(*command, options->libraries);
   command->callback([options, &exitCode] { exitCode = runInspect(*options); });
 }

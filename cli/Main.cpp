@@ -9,8 +9,11 @@
 #include "cli/EvalCommand.h"
 #include "cli/InspectCommand.h"
 #include "cli/RenderCommand.h"
+#include "compiler/common/LargeStack.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
   using namespace mxc::cli;
   CLI::App app{"mxc: compile MaterialX documents (Standard Surface, OpenPBR, pbrlib graphs) to shaders", "mxc"};
   app.require_subcommand(1);
@@ -32,5 +35,14 @@ int main(int argc, char** argv) {
     app.exit(e);  // prints the message
     return kUsage;
   }
+  return exitCode;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Deep node graphs recurse deeply in resolution and lowering: commands run on a large stack.
+  int exitCode = 0;
+  mxc::runWithLargeStack([&] { exitCode = run(argc, argv); });
   return exitCode;
 }

@@ -12,30 +12,42 @@
 
 namespace mxc::cli {
 
-void addMaterialOptions(CLI::App& command, MaterialOptions& options) {
+void addInputOptions(CLI::App& command, MaterialOptions& options) {
+  // One value per occurrence: `--set a=1 FILE` must not take FILE as a second override.
   command.add_option("--set", options.set,
                      "Override an input of the shading node: INPUT=VALUE, the value written as in a document "
                      "(--set base_color=0.8,0.2,0.1); repeatable")
-      ->type_name("INPUT=VALUE");
+      ->type_name("INPUT=VALUE")
+      ->allow_extra_args(false);
   command.add_option("--param", options.parameters,
                      "Keep an input of the shading node variable: a uniform of the shader, with the document's (or "
                      "--set's) value as its default; repeatable")
-      ->type_name("INPUT");
+      ->type_name("INPUT")
+      ->allow_extra_args(false);
+}
+
+bool inputOptions(const MaterialOptions& options, lower::LoweringOptions& lowering) {
+  for (const std::string& s : options.set) {
+    const size_t eq = s.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      std::fprintf(stderr, "error: --set %s: expected INPUT=VALUE\n", s.c_str());
+      return false;
+    }
+    lowering.overrides.emplace_back(s.substr(0, eq), s.substr(eq + 1));
+  }
+  lowering.parameters = options.parameters;
+  return true;
+}
+
+void addMaterialOptions(CLI::App& command, MaterialOptions& options) {
+  addInputOptions(command, options);
   command.add_option("--material", options.material, "Only the material of this name (default: every material)");
   addLibraryOptions(command, options.libraries);
 }
 
 int MaterialPipeline::run(const std::string& file, const MaterialOptions& options) {
   lower::LoweringOptions lowering;
-  for (const std::string& s : options.set) {
-    const size_t eq = s.find('=');
-    if (eq == std::string::npos || eq == 0) {
-      std::fprintf(stderr, "error: --set %s: expected INPUT=VALUE\n", s.c_str());
-      return kUsage;
-    }
-    lowering.overrides.emplace_back(s.substr(0, eq), s.substr(eq + 1));
-  }
-  lowering.parameters = options.parameters;
+  if (!inputOptions(options, lowering)) return kUsage;
   session_.loadLibraries(options.libraries);
   loader_ = std::make_unique<doc::DocumentLoader>(session_.sources, session_.diagnostics);
   document = session_.diagnostics.hasErrors() ? nullptr : loader_->loadFile(file);
@@ -44,8 +56,10 @@ int MaterialPipeline::run(const std::string& file, const MaterialOptions& option
     return kInvalidDocument;
   }
   documentFolder = std::filesystem::absolute(file).parent_path();
-  resolved_ = std::make_unique<resolve::ResolvedDocument>(
-      resolve::resolveDocument(*document, session_.libraries.top(), session_.diagnostics));
+  // Built in place (a prvalue initialising the new object is never moved): resolved nodes
+  // point at their document's `top` scope, so a ResolvedDocument must not be moved.
+  resolved_.reset(new resolve::ResolvedDocument(
+      resolve::resolveDocument(*document, session_.libraries.top(), session_.diagnostics)));
   if (!session_.diagnostics.hasErrors()) {
     materials = lower::lowerDocument(*resolved_, lowering, session_.diagnostics);
   }

@@ -13,6 +13,7 @@
 #include "cli/Session.h"
 #include "compiler/document/DocumentLoader.h"
 #include "compiler/ir/Material.h"
+#include "compiler/lower/Lowering.h"
 #include "compiler/resolve/ResolvedGraph.h"
 
 namespace mxc::cli {
@@ -25,6 +26,11 @@ struct MaterialOptions {
 };
 
 void addMaterialOptions(CLI::App& command, MaterialOptions& options);
+/// Only --set and --param (for commands that have no --material).
+void addInputOptions(CLI::App& command, MaterialOptions& options);
+
+/// --set and --param as lowering options; false (with the error printed) for a malformed --set.
+bool inputOptions(const MaterialOptions& options, lower::LoweringOptions& lowering);
 
 /// A document lowered to IR materials after the passes. Keeps the document alive (the IR's
 /// origins point into it).

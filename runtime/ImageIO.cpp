@@ -5,100 +5,50 @@
 #include <memory>
 #include <system_error>
 
+#include <dlfcn.h>
+
 #include <fmt/format.h>
-#include <OpenImageIO/imageio.h>
 
 namespace mxc::rt {
 
-float srgbToLinear(float v) {
-  // pow of a value >= 0.04045 > 0
-  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+namespace {
+
+/// The codec of the OpenImageIO module, loaded once; null with `error` set when it cannot be.
+const ImageCodec* codec(std::string& error) {
+  static std::string loadError;
+  static const ImageCodec* loaded = [] () -> const ImageCodec* {
+    // The module sits in the build tree (no install step): its path is compiled in.
+    void* module = dlopen(MXC_IMAGEIO_MODULE, RTLD_NOW | RTLD_LOCAL);
+    if (!module) {
+      const char* why = dlerror();
+      loadError = fmt::format("cannot load the image I/O module {}: {}", MXC_IMAGEIO_MODULE, why ? why : "unknown error");
+      return nullptr;
+    }
+    auto entry = reinterpret_cast<const ImageCodec* (*)()>(dlsym(module, "mxc_image_codec"));
+    if (!entry) {
+      loadError = fmt::format("{} has no mxc_image_codec", MXC_IMAGEIO_MODULE);
+      return nullptr;
+    }
+    return entry();
+  }();
+  error = loadError;
+  return loaded;
 }
 
-float linearToSrgb(float v) {
-  v = std::clamp(v, 0.0f, 1.0f);
-  return v <= 0.0031308f ? v * 12.92f : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;  // pow of v > 0
-}
-
-float tonemap(float v) {
-  // Narkowicz 2015, "ACES Filmic Tone Mapping Curve": x (a x + b) / (x (c x + d) + e). The
-  // denominator is >= e > 0 for x >= 0.
-  const float x = std::max(v, 0.0f);
-  return std::clamp(x * (2.51f * x + 0.03f) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
-}
+}  // namespace
 
 std::variant<RgbaImage, std::string> readImage(const std::filesystem::path& path) {
-  auto input = OIIO::ImageInput::open(path.string());
-  if (!input) {
-    std::string why = OIIO::geterror();
-    return fmt::format("cannot read image {}: {}", path.string(), why.empty() ? "unknown error" : why);
-  }
-  const OIIO::ImageSpec& spec = input->spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1) {
-    return fmt::format("cannot read image {}: unsupported size or channels", path.string());
-  }
-  const int channels = std::min(spec.nchannels, 4);
-  std::vector<float> data(size_t(spec.width) * spec.height * channels);
-  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data())) {
-    return fmt::format("cannot read image {}: {}", path.string(), input->geterror());
-  }
-  RgbaImage image;
-  image.width = static_cast<uint32_t>(spec.width);
-  image.height = static_cast<uint32_t>(spec.height);
-  image.pixels.resize(size_t(image.width) * image.height * 4);
-  for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
-    const float* s = &data[i * channels];
-    float* d = &image.pixels[i * 4];
-    if (channels <= 2) {
-      d[0] = d[1] = d[2] = s[0];
-      d[3] = channels == 2 ? s[1] : 1.0f;
-    } else {
-      d[0] = s[0];
-      d[1] = s[1];
-      d[2] = s[2];
-      d[3] = channels == 4 ? s[3] : 1.0f;
-    }
-  }
-  return image;
+  std::string error;
+  const ImageCodec* c = codec(error);
+  if (!c) return fmt::format("cannot read image {}: {}", path.string(), error);
+  return c->read(path);
 }
 
 std::optional<std::string> writeImage(const std::filesystem::path& path, const RgbaImage& image, float exposure) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  const bool linear = ext == ".exr";
-  // The temporary keeps the extension: OpenImageIO chooses the format by it.
-  std::filesystem::path temp = path;
-  temp.replace_filename(fmt::format(".{}.tmp{}", path.stem().string(), path.extension().string()));
-  auto output = OIIO::ImageOutput::create(temp.string());
-  if (!output) return fmt::format("cannot write {}: no image format for '{}'", path.string(), ext);
-  const size_t count = size_t(image.width) * image.height;
-  bool ok = false;
-  if (linear) {
-    OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::HALF);
-    spec.attribute("compression", "zip");
-    ok = output->open(temp.string(), spec) && output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
-  } else {
-    const float scale = std::exp2(exposure);
-    std::vector<uint8_t> bytes(count * 3);
-    for (size_t i = 0; i < count; ++i) {
-      for (int c = 0; c < 3; ++c) {
-        const float v = linearToSrgb(tonemap(image.pixels[i * 4 + c] * scale));
-        bytes[i * 3 + c] = static_cast<uint8_t>(std::lround(v * 255.0f));
-      }
-    }
-    OIIO::ImageSpec spec(int(image.width), int(image.height), 3, OIIO::TypeDesc::UINT8);
-    ok = output->open(temp.string(), spec) && output->write_image(OIIO::TypeDesc::UINT8, bytes.data());
-  }
-  std::string why = ok ? "" : output->geterror();
-  ok = output->close() && ok;
-  output.reset();
-  std::error_code ec;
-  if (ok) std::filesystem::rename(temp, path, ec);
-  if (!ok || ec) {
-    std::filesystem::remove(temp, ec);
-    return fmt::format("cannot write {}: {}", path.string(), why.empty() ? ec.message() : why);
-  }
-  return std::nullopt;
+  std::string error;
+  const ImageCodec* c = codec(error);
+  if (!c) return fmt::format("cannot write {}: {}", path.string(), error);
+  return c->write(path, image, exposure);
 }
 
 }  // namespace mxc::rt

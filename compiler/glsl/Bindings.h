@@ -18,8 +18,8 @@ enum Binding : uint32_t {
 
 /// Texels per axis of each albedo table (view cosine across, roughness down).
 constexpr uint32_t kTableSize = 32;
-/// Number of dielectric reflection tables, one per sqrt(F0) step (stages/mxc_tables.comp).
-constexpr uint32_t kTableSlices = 16;
+/// Number of dielectric reflection tables, one per IOR step (stages/mxc_tables.comp).
+constexpr uint32_t kTableSlices = 32;
 /// The tables image: kTableSize wide, the split-sum/sheen table then the dielectric slices below.
 constexpr uint32_t kTableHeight = kTableSize * (1 + kTableSlices);
 

@@ -83,6 +83,14 @@ ClosureEmitter::ClosureEmitter(const ir::Material& material, const ExprEmitter& 
   if (features_.lobes == 0) features_.lobeKinds.insert("MXC_LOBE_EON");  // the library needs one kind
 }
 
+std::string ClosureEmitter::unitNormal(const ir::Param* normal) const {
+  if (!normal || !normal->present()) return "g.N";
+  const std::string value = x_.param(*normal, "g.N");
+  const ir::Expr& e = m_.exprs[normal->value];
+  if (e.op == ir::Op::GeomProp && m_.exprs.text(normal->value) == "Nworld") return value;  // unit already
+  return fmt::format("mxc_safe_normalize({}, g.N)", value);
+}
+
 std::string ClosureEmitter::var(const std::string& prefix) { return fmt::format("{}{}", prefix, counter_++); }
 
 std::string ClosureEmitter::lobe(Index iface, const std::string& weight, const Above& above, int mode) {
@@ -100,7 +108,8 @@ std::string ClosureEmitter::lobe(Index iface, const std::string& weight, const A
       {"kind", kind},
       {"mode", std::to_string(mode)},
       {"weight", ""},
-      {"N", slot(Slot::Normal, "g.N")},
+      // A shading normal from the document may not be unit length (geometry_normal = 0.9,0,0.1).
+      {"N", unitNormal(f.slots.find(Slot::Normal))},
       {"T", slot(Slot::Tangent, "g.T")},
       {"alpha", slot(Slot::Alpha, "vec2(0.0)")},
       {"eta", "1.5"},

@@ -44,6 +44,8 @@ class ClosureEmitter {
   /// Emits the lobe of an interface; returns the GLSL variable holding the lobe.
   std::string lobe(ir::Index iface, const std::string& weight, const Above& above, int mode);
   std::string var(const std::string& prefix);
+  /// The GLSL of a lobe's normal, normalised unless it is the geometry's unit normal.
+  std::string unitNormal(const ir::Param* normal) const;
 
   const ir::Material& m_;
   const ExprEmitter& x_;

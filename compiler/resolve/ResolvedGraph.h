@@ -91,6 +91,9 @@ struct ResolvedMaterial {
 
 /// A whole document resolved against a library: its own definitions form a layer over the
 /// library, and its nodes and graphs (those of included documents too) are bound.
+/// Resolved nodes point at the graph that scopes them (`top` for document-level nodes), so a
+/// ResolvedDocument must stay where it was built: initialise it from resolveDocument()'s result
+/// (guaranteed copy elision), never move or copy it afterwards.
 struct ResolvedDocument {
   const doc::Document* document = nullptr;
   std::vector<const doc::Document*> documents;  ///< the document and everything it includes

@@ -44,27 +44,29 @@ struct MxcLobeSample {
 };
 
 // The albedo tables (computed by the harness with stages/mxc_tables.comp), MXC_TABLE_SIZE
-// texels per axis, view cosine mu across and roughness down:
+// texels per axis, sqrt of the view cosine mu across and roughness down:
 //   rows 0..n-1, at (mu, alpha): .x = A, .y = B of the GGX reflection with a Schlick Fresnel,
 //     E = F0 A + F90 B; at (mu, roughness): .z = albedo of the sheen lobe with colour 1;
 //   then MXC_TABLE_SLICES tables of the GGX reflection albedo with the exact dielectric Fresnel,
-//     slice s for sqrt(F0) = 0.98 s / (slices - 1), at (mu, alpha): .x.
+//     slice s for eta = 1 + 2 (s / (slices - 1))^2, at (mu, alpha): .x.
 layout(set = 0, binding = MXC_TABLE_BINDING) uniform sampler2D mxc_tables;
 vec4 mxc_table_at(float mu, float x, float firstRow) {
   const float n = float(MXC_TABLE_SIZE);
   const float rows = float(MXC_TABLE_SIZE * (1 + MXC_TABLE_SLICES));
   // Texel centres: sample i of a table is at (i + 0.5) / n across, so x = 0 and 1 hit the
-  // first and last samples and linear filtering never reaches a neighbouring table.
-  vec2 t = clamp(vec2(mu, x), 0.0, 1.0) * (n - 1.0) + 0.5;
+  // first and last samples and linear filtering never reaches a neighbouring table. The view
+  // axis holds sqrt(mu) (stages/mxc_tables.comp), dense near grazing.
+  vec2 t = vec2(sqrt(clamp(mu, 0.0, 1.0)), clamp(x, 0.0, 1.0)) * (n - 1.0) + 0.5;
   return textureLod(mxc_tables, vec2(t.x / n, (firstRow + t.y) / rows), 0.0);
 }
 vec4 mxc_table(float mu, float x) { return mxc_table_at(mu, x, 0.0); }
 
 // Reflection albedo of a GGX dielectric interface seen from the side of lower IOR (eta >= 1;
 // for eta < 1 the table of 1 / eta is used: same F0, without the total internal reflection).
+// IOR ratios above 3 use the table of 3.
 float mxc_dielectric_albedo(float mu, float alpha, float eta) {
   float e = eta >= 1.0 ? eta : 1.0 / max(eta, 1e-3);
-  float s = clamp((e - 1.0) / (e + 1.0) / 0.98, 0.0, 1.0) * float(MXC_TABLE_SLICES - 1);  // e + 1 >= 2
+  float s = sqrt(clamp(0.5 * (e - 1.0), 0.0, 1.0)) * float(MXC_TABLE_SLICES - 1);  // inverse of eta(s)
   float s0 = min(floor(s), float(MXC_TABLE_SLICES - 2));
   float a = mxc_table_at(mu, alpha, float(MXC_TABLE_SIZE) * (1.0 + s0)).x;
   float b = mxc_table_at(mu, alpha, float(MXC_TABLE_SIZE) * (2.0 + s0)).x;
@@ -206,8 +208,17 @@ vec3 mxc_lobe_albedo(MxcLobe l, vec3 wo) {
     // (E = F0 A + F90 B, the tables' split sum); a transmitting dielectric gives what it does
     // not reflect to the layers under it.
     float alpha = sqrt(l.alpha.x * l.alpha.y);  // the table's isotropic alpha: geometric mean
-    if (l.kind == MXC_LOBE_DIELECTRIC && !mxc_is_delta(l.alpha) && !(l.film.z > 0.0)) {
-      return clamp(mxc_dielectric_albedo(mu, alpha, l.eta) * l.c0, 0.0, 1.0);
+    if (l.kind == MXC_LOBE_DIELECTRIC && !mxc_is_delta(l.alpha)) {
+      vec3 e = vec3(mxc_dielectric_albedo(mu, alpha, l.eta));
+#ifdef MXC_THIN_FILM
+      if (l.film.z > 0.0) {
+        // With a film, the tabulated albedo of the bare interface scaled by how much the film
+        // changes the Fresnel factor at this view (exact for a smooth interface).
+        float f = mxc_fresnel_dielectric(mu, l.eta);
+        e *= f > 1e-6 ? mxc_lobe_fresnel(l, mu, true) / f : vec3(1.0);
+      }
+#endif
+      return clamp(e * l.c0, 0.0, 1.0);
     }
     vec2 ab = mxc_table(mu, alpha).xy;
     vec3 f0 = mxc_lobe_fresnel(l, 1.0, true);
@@ -216,7 +227,7 @@ vec3 mxc_lobe_albedo(MxcLobe l, vec3 wo) {
     if (mxc_is_delta(l.alpha)) return mxc_lobe_fresnel(l, mu, true) * tint;
     return clamp((f0 * ab.x + f90 * ab.y) * tint, 0.0, 1.0);
   }
-  if (l.kind == MXC_LOBE_SHEEN) return l.c0 * mxc_table(mu, l.p0).z;
+  if (l.kind == MXC_LOBE_SHEEN) return l.c0 * min(mxc_table(mu, l.p0).z, 1.0);
 #if defined(MXC_HAS_DIFFUSE) || defined(MXC_HAS_EON) || defined(MXC_HAS_SHEET)
   if (l.kind == MXC_LOBE_DIFFUSE) return l.c0 * mxc_fon_albedo(l.p0, mu);
 #endif
@@ -270,7 +281,9 @@ vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi) {
 #endif
 #ifdef MXC_HAS_SHEEN
     case MXC_LOBE_SHEEN:
-      return mxc_sheen(l.c0, l.p0, wo, wi);  // already f |cos|
+      // Estevez & Kulla's fitted shadowing lets the lobe reflect more than it receives near
+      // grazing at low roughness; the lobe is scaled down by its tabulated albedo there.
+      return mxc_sheen_unnormalized(l.c0, l.p0, wo, wi) / max(mxc_table(clamp(wo.z, 0.0, 1.0), l.p0).z, 1.0);
 #endif
     default:
       return vec3(0.0);
@@ -291,8 +304,10 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi) {
         vec3 h = normalize(o + i);
         float p = mxc_ggx_pdf_vndf(o, h, l.alpha) / (4.0 * max(dot(o, h), 1e-6));
         if (l.kind != MXC_LOBE_DIELECTRIC) return p;
+        // Reflection is chosen with probability F when the lobe also transmits (a thin sheet
+        // included: its transmission is the delta straight through).
         float fr = mxc_mean(mxc_lobe_fresnel(l, max(dot(o, h), 0.0), above));
-        return p * (((l.mode & MXC_TRANSMIT) != 0 && (l.mode & MXC_THIN_WALL) == 0) ? fr : 1.0);
+        return p * ((l.mode & MXC_TRANSMIT) != 0 && (l.mode & MXC_REFLECT) != 0 ? fr : 1.0);
       }
       if (l.kind != MXC_LOBE_DIELECTRIC || (l.mode & MXC_TRANSMIT) == 0 || (l.mode & MXC_THIN_WALL) != 0) return 0.0;
       float eta = mxc_lobe_eta(l, above);

@@ -8,9 +8,14 @@ const float MXC_DELTA_ALPHA = 1e-4;
 
 bool mxc_is_delta(vec2 alpha) { return max(alpha.x, alpha.y) < MXC_DELTA_ALPHA; }
 
-// D(m) for a micronormal m with m.z > 0. alpha >= MXC_DELTA_ALPHA here, so the divisions are safe.
+// A rough lobe may still have one alpha near 0 (anisotropy 1: alpha_b = 0, OpenPBR eq.
+// anisotropic_roughness); both are kept >= MXC_DELTA_ALPHA so that D and its sampling stay finite.
+vec2 mxc_rough_alpha(vec2 alpha) { return max(alpha, vec2(MXC_DELTA_ALPHA)); }
+
+// D(m) for a micronormal m with m.z > 0. alpha >= MXC_DELTA_ALPHA, so the divisions are safe.
 float mxc_ggx_d(vec3 m, vec2 alpha) {
   if (m.z <= 0.0) return 0.0;
+  alpha = mxc_rough_alpha(alpha);
   vec3 s = vec3(m.x / alpha.x, m.y / alpha.y, m.z);
   float d = dot(s, s);  // >= m.z^2 > 0
   return 1.0 / (MXC_PI * alpha.x * alpha.y * d * d);
@@ -18,6 +23,7 @@ float mxc_ggx_d(vec3 m, vec2 alpha) {
 
 // Smith Lambda (Heitz 2014, eq. 86) of a direction v.
 float mxc_ggx_lambda(vec3 v, vec2 alpha) {
+  alpha = mxc_rough_alpha(alpha);
   float z2 = v.z * v.z;
   if (z2 <= 0.0) return 1e10;  // grazing or below: fully masked
   float a2 = (mxc_sqr(alpha.x * v.x) + mxc_sqr(alpha.y * v.y)) / z2;
@@ -33,6 +39,7 @@ float mxc_ggx_g2(vec3 wo, vec3 wi, vec2 alpha) {
 
 // A visible normal for wo (wo.z > 0), Heitz 2018 listing 1.
 vec3 mxc_ggx_sample_vndf(vec3 wo, vec2 alpha, vec2 u) {
+  alpha = mxc_rough_alpha(alpha);
   vec3 vh = normalize(vec3(alpha.x * wo.x, alpha.y * wo.y, wo.z));  // wo.z > 0: not zero
   float lensq = vh.x * vh.x + vh.y * vh.y;
   vec3 t1 = lensq > 0.0 ? vec3(-vh.y, vh.x, 0.0) * inversesqrt(lensq) : vec3(1.0, 0.0, 0.0);

@@ -22,7 +22,9 @@ float mxc_sheen_l(float x, float r) {
 float mxc_sheen_lambda(float mu, float r) {
   return mu < 0.5 ? exp(mxc_sheen_l(mu, r)) : exp(2.0 * mxc_sheen_l(0.5, r) - mxc_sheen_l(1.0 - mu, r));
 }
-vec3 mxc_sheen(vec3 color, float r, vec3 wo, vec3 wi) {
+// f |cos theta_i| of the lobe as published (its albedo may exceed 1 near grazing; the lobe
+// interface in mxc_lobes.glsl normalises it).
+vec3 mxc_sheen_unnormalized(vec3 color, float r, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0 || wi.z <= 0.0) return vec3(0.0);
   vec3 h = normalize(wo + wi);
   float g = 1.0 / (1.0 + mxc_sheen_lambda(wo.z, r) + mxc_sheen_lambda(wi.z, r));

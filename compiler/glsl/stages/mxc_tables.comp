@@ -1,17 +1,20 @@
 // The albedo tables the lobes read (library/mxc_lobes.glsl, mxc_table_at). Texel (i, j) of a
-// table is at mu = i / (n - 1) and x = j / (n - 1). Rows 0..n-1:
+// table is at mu = (i / (n - 1))^2 (dense near grazing, where albedos change fastest) and
+// x = j / (n - 1). Rows 0..n-1:
 //   .x, .y: A and B of the GGX reflection albedo with a Schlick Fresnel, E = F0 A + F90 B
 //           (the split sum of Karis 2013), for alpha = x;
 //   .z:     the albedo of the sheen lobe (Estevez & Kulla 2017) with colour 1, for roughness x.
-// Then MXC_TABLE_SLICES tables, slice s for sqrt(F0) = 0.98 s / (slices - 1):
+// Then MXC_TABLE_SLICES tables, slice s for the relative IOR eta = 1 + 2 (s / (slices - 1))^2
+// (denser near 1, where the albedo changes fastest near grazing incidence):
 //   .x:     the GGX reflection albedo with the exact dielectric Fresnel, for alpha = x.
-// Integrated with 64 x 64 stratified samples per texel: GGX by visible normals (Heitz 2018),
-// whose reflection estimator is F G2 / G1; sheen by cosine sampling.
+// Integrated with stratified samples per texel (64 x 64 for the first table, 32 x 32 for the
+// slices): GGX by visible normals (Heitz 2018), whose reflection estimator is F G2 / G1; sheen
+// by half vectors drawn from its distribution, which keeps grazing views (where the lobe is
+// concentrated) accurate.
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0, std430) writeonly buffer MxcOutput { vec4 mxc_out[]; };
 
-const int MXC_STRATA = 64;
 
 void main() {
   uvec2 id = gl_GlobalInvocationID.xy;
@@ -19,18 +22,19 @@ void main() {
   if (id.x >= n || id.y >= n * uint(1 + MXC_TABLE_SLICES)) return;
   uint table = id.y / n;  // 0: split sum and sheen; s + 1: dielectric slice s
   uint row = id.y % n;
-  // mu = 0 is the limit of grazing view; 1e-3 keeps the frame and the estimators finite.
-  float mu = max(float(id.x) / float(n - 1u), 1e-3);
+  // mu = 0 is the limit of grazing view; 1e-4 keeps the frame and the estimators finite.
+  float mu = max(mxc_sqr(float(id.x) / float(n - 1u)), 1e-4);
   float x = float(row) / float(n - 1u);
   vec3 wo = vec3(mxc_safe_sqrt(1.0 - mu * mu), 0.0, mu);
-  float sqrtF0 = 0.98 * float(max(int(table) - 1, 0)) / float(MXC_TABLE_SLICES - 1);
-  float eta = (1.0 + sqrtF0) / (1.0 - sqrtF0);  // 1 - sqrtF0 >= 0.02
+  float slice = float(max(int(table) - 1, 0)) / float(MXC_TABLE_SLICES - 1);
+  float eta = 1.0 + 2.0 * slice * slice;
+  const int strata = table == 0u ? 64 : 32;
   float a = 0.0, b = 0.0, sheen = 0.0, dielectric = 0.0;
   vec2 alpha = vec2(x);
   bool delta = mxc_is_delta(alpha);
-  for (int i = 0; i < MXC_STRATA; ++i) {
-    for (int j = 0; j < MXC_STRATA; ++j) {
-      vec2 u = (vec2(i, j) + 0.5) / float(MXC_STRATA);
+  for (int i = 0; i < strata; ++i) {
+    for (int j = 0; j < strata; ++j) {
+      vec2 u = (vec2(i, j) + 0.5) / float(strata);
       if (!delta) {
         vec3 m = mxc_ggx_sample_vndf(wo, alpha, u);
         vec3 wi = reflect(-wo, m);
@@ -44,18 +48,30 @@ void main() {
         }
       }
       if (table == 0u) {
-        vec3 wi = mxc_sample_cosine(u);
-        if (wi.z > 1e-6) sheen += mxc_sheen(vec3(1.0), x, wo, wi).x * MXC_PI / wi.z;  // pdf = cos / pi
+        // Half vectors from D(h) cos(theta_h): with s = sin(theta_h), pdf(s) ~ s^(1/r + 1), so
+        // s = u^(1 / (1/r + 2)) (r as clamped in mxc_sheen_d). The reflection about h has
+        // pdf D cos(theta_h) / (4 |wo.h|), and the estimator f cos / pdf = D G / (4 mu_o) / pdf.
+        float inv = 1.0 / max(x, 0.01);
+        float sinh = pow(u.x, 1.0 / (inv + 2.0));
+        float cosh = mxc_safe_sqrt(1.0 - sinh * sinh);
+        float phi = 2.0 * MXC_PI * u.y;
+        vec3 h = vec3(sinh * cos(phi), sinh * sin(phi), cosh);
+        float oh = dot(wo, h);
+        vec3 wi = reflect(-wo, h);
+        if (wi.z > 0.0 && oh > 0.0 && cosh > 1e-6) {
+          float pdf = mxc_sheen_d(x, cosh) * cosh / (4.0 * oh);  // > 0: D > 0 for sin > 0
+          if (pdf > 0.0) sheen += mxc_sheen_unnormalized(vec3(1.0), x, wo, wi).x / pdf;
+        }
       }
     }
   }
-  float count = float(MXC_STRATA * MXC_STRATA);
+  float count = float(strata * strata);
   if (delta) {  // a mirror: E = F(mu) exactly
     float s = pow(1.0 - mu, 5.0);
     a = (1.0 - s) * count;
     b = s * count;
     dielectric = mxc_fresnel_dielectric(mu, eta) * count;
   }
-  vec4 value = table == 0u ? vec4(a / count, b / count, min(sheen / count, 1.0), 0.0) : vec4(dielectric / count, 0.0, 0.0, 0.0);
+  vec4 value = table == 0u ? vec4(a / count, b / count, sheen / count, 0.0) : vec4(dielectric / count, 0.0, 0.0, 0.0);
   mxc_out[id.y * n + id.x] = value;
 }

@@ -6,7 +6,7 @@
 #define MXC_HAS_DIELECTRIC
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
-#define MXC_TABLE_SLICES 16
+#define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
 
 #include "library/mxc_common.glsl"

@@ -7,7 +7,7 @@
 #define MXC_HAS_DIFFUSE
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
-#define MXC_TABLE_SLICES 16
+#define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
 
 #include "library/mxc_common.glsl"
@@ -73,7 +73,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;
   lobe0.weight = vec3(1.0);
-  lobe0.N = v52;
+  lobe0.N = mxc_safe_normalize(v52, g.N);
   lobe0.T = v50;
   lobe0.alpha = v57;
   lobe0.eta = 1.5;
@@ -92,7 +92,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.kind = MXC_LOBE_DIFFUSE;
   lobe3.mode = 1;
   lobe3.weight = w2;
-  lobe3.N = v52;
+  lobe3.N = mxc_safe_normalize(v52, g.N);
   lobe3.T = g.T;
   lobe3.alpha = vec2(0.0);
   lobe3.eta = 1.5;

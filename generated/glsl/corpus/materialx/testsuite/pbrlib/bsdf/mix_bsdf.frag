@@ -6,7 +6,7 @@
 #define MXC_HAS_DIFFUSE
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
-#define MXC_TABLE_SLICES 16
+#define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
 
 #include "library/mxc_common.glsl"
@@ -78,7 +78,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_HAS_DIFFUSE
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
-#define MXC_TABLE_SLICES 16
+#define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
 
 #include "library/mxc_common.glsl"
@@ -106,7 +106,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe1.kind = MXC_LOBE_DIFFUSE;
   lobe1.mode = 1;
   lobe1.weight = (vec3(1.0) - m0);
-  lobe1.N = vec3(0.0);
+  lobe1.N = mxc_safe_normalize(vec3(0.0), g.N);
   lobe1.T = g.T;
   lobe1.alpha = vec2(0.0);
   lobe1.eta = 1.5;
@@ -150,7 +150,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_HAS_TRANSLUCENT
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
-#define MXC_TABLE_SLICES 16
+#define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
 
 #include "library/mxc_common.glsl"

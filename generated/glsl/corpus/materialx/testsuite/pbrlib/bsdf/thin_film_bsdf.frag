@@ -7,7 +7,7 @@
 #define MXC_THIN_FILM
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
-#define MXC_TABLE_SLICES 16
+#define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
 
 #include "library/mxc_common.glsl"
@@ -63,7 +63,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_THIN_FILM
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
-#define MXC_TABLE_SLICES 16
+#define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
 
 #include "library/mxc_common.glsl"
@@ -138,7 +138,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_THIN_FILM
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
-#define MXC_TABLE_SLICES 16
+#define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
 
 #include "library/mxc_common.glsl"
@@ -212,7 +212,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_THIN_FILM
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
-#define MXC_TABLE_SLICES 16
+#define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
 
 #include "library/mxc_common.glsl"
@@ -286,7 +286,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_THIN_FILM
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
-#define MXC_TABLE_SLICES 16
+#define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
 
 #include "library/mxc_common.glsl"
@@ -359,7 +359,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_THIN_FILM
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
-#define MXC_TABLE_SLICES 16
+#define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
 
 #include "library/mxc_common.glsl"
@@ -415,7 +415,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_THIN_FILM
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
-#define MXC_TABLE_SLICES 16
+#define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
 
 #include "library/mxc_common.glsl"
@@ -470,7 +470,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_THIN_FILM
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
-#define MXC_TABLE_SLICES 16
+#define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
 
 #include "library/mxc_common.glsl"

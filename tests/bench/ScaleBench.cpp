@@ -1,0 +1,180 @@
+// Scaling with graph size: generated documents of 1k, 10k and 100k math nodes feeding an
+// open_pbr_surface, timed stage by stage (parse + document model, resolve, lower + passes,
+// GLSL, glslang + validation), with the time per node and the growth from one size to the
+// next (10x more nodes: a ratio near 10 is linear). Then the peak resident memory of the
+// `mxc compile` process, for open_pbr_default and for the 100k-node document.
+//
+//   build/tests/bench/scale_bench [--max N]
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "compiler/common/LargeStack.h"
+#include "compiler/document/DocumentLoader.h"
+#include "compiler/glsl/ShaderBuilder.h"
+#include "compiler/ir/Effects.h"
+#include "compiler/ir/passes/Pass.h"
+#include "compiler/library/LibraryStack.h"
+#include "compiler/lower/Lowering.h"
+#include "compiler/resolve/Resolver.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+/// A DAG of `nodes` float nodes: each adds, multiplies or takes the sine of earlier ones, so
+/// that nothing folds to a constant or merges as a common subexpression; the last node is the
+/// base_weight of an open_pbr_surface. Appended to `out` (a string or a file).
+template <typename Out>
+void generate(int nodes, Out& out) {
+  auto put = [&](const std::string& text) { out += text; };
+  put("<?xml version=\"1.0\"?>\n<materialx version=\"1.39\">\n");
+  put("  <texcoord name=\"uv\" type=\"vector2\" />\n");
+  put("  <extract name=\"n0\" type=\"float\">\n    <input name=\"in\" type=\"vector2\" nodename=\"uv\" />\n"
+         "    <input name=\"index\" type=\"integer\" value=\"0\" />\n  </extract>\n");
+  for (int i = 1; i < nodes; ++i) {
+    switch (i % 3) {
+      case 0:
+        put(fmt::format("  <add name=\"n{}\" type=\"float\"><input name=\"in1\" type=\"float\" nodename=\"n{}\" />"
+                           "<input name=\"in2\" type=\"float\" nodename=\"n{}\" /></add>\n",
+                           i, i - 1, i / 2));
+        break;
+      case 1:
+        put(fmt::format("  <multiply name=\"n{}\" type=\"float\"><input name=\"in1\" type=\"float\" nodename=\"n{}\" />"
+                           "<input name=\"in2\" type=\"float\" value=\"{}\" /></multiply>\n",
+                           i, i - 1, 1.0 + 1e-4 * i));
+        break;
+      default:
+        put(fmt::format("  <sin name=\"n{}\" type=\"float\"><input name=\"in\" type=\"float\" nodename=\"n{}\" /></sin>\n",
+                           i, i - 1));
+        break;
+    }
+  }
+  put(fmt::format("  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n"
+                     "    <input name=\"base_weight\" type=\"float\" nodename=\"n{}\" />\n  </open_pbr_surface>\n"
+                     "  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" type=\"surfaceshader\" "
+                     "nodename=\"s\" /></surfacematerial>\n</materialx>\n",
+                     nodes - 1));
+}
+
+std::string generate(int nodes) {
+  std::string out;
+  generate(nodes, out);
+  return out;
+}
+
+/// Writes the generated document for `nodes` to a file, streaming (the bench stays small).
+fs::path generateFile(int nodes) {
+  const fs::path path = fs::temp_directory_path() / fmt::format("mxc_scale_{}_{}.mtlx", nodes, ::getpid());
+  struct File {
+    std::ofstream stream;
+    File& operator+=(const std::string& text) {
+      stream << text;
+      return *this;
+    }
+  } file{std::ofstream(path)};
+  generate(nodes, file);
+  return path;
+}
+
+struct Stages {
+  double parse = 0, resolve = 0, lower = 0, glsl = 0, spirv = 0;
+  size_t glslLines = 0;
+  double total() const { return parse + resolve + lower + glsl + spirv; }
+};
+
+Stages run(mxc::lib::LibraryStack& libraries, mxc::SourceManager& sources, const std::string& text) {
+  Stages s;
+  mxc::Diagnostics diagnostics;
+  mxc::doc::DocumentLoader loader(sources, diagnostics);
+  auto t = Clock::now();
+  const mxc::doc::Document* d = loader.loadText("generated.mtlx", text);
+  s.parse = msSince(t);
+  t = Clock::now();
+  auto resolved = mxc::resolve::resolveDocument(*d, libraries.top(), diagnostics);
+  s.resolve = msSince(t);
+  t = Clock::now();
+  std::vector<mxc::ir::Material> materials = mxc::lower::lowerDocument(resolved, {}, diagnostics);
+  mxc::ir::runPasses(materials.at(0));
+  mxc::ir::summarizeEffects(materials.at(0));
+  s.lower = msSince(t);
+  t = Clock::now();
+  mxc::glsl::MaterialShader shader = mxc::glsl::buildMaterialShader(materials.at(0), mxc::glsl::ShaderKind::Raster);
+  s.glsl = msSince(t);
+  s.glslLines = shader.glsl.origins.size();
+  t = Clock::now();
+  auto words = mxc::spirv::compile(shader.glsl, {}, diagnostics);
+  s.spirv = msSince(t);
+  if (!words || diagnostics.hasErrors()) {
+    std::fprintf(stderr, "%s", diagnostics.format().c_str());
+    std::exit(1);
+  }
+  return s;
+}
+
+/// Peak resident memory (MiB) of `mxc compile FILE -q`, from the kernel's accounting.
+double peakMiB(const fs::path& file) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int devnull = ::open("/dev/null", O_WRONLY);
+    ::dup2(devnull, 1);
+    execl(MXC_BINARY, "mxc", "compile", "-q", file.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  wait4(pid, &status, 0, &usage);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return -1.0;
+  return double(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int max = 100000;
+  for (int i = 1; i + 1 < argc; ++i) {
+    if (!std::strcmp(argv[i], "--max")) max = std::atoi(argv[i + 1]);
+  }
+  // Memory first, while this process is small: a child's peak counts the pages it had from
+  // fork until exec.
+  const fs::path openPbr = fs::path(MXC_SHARED_DIR) / "corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx";
+  const fs::path largest = generateFile(max);
+  const double openPbrPeak = peakMiB(openPbr);
+  const double largestPeak = peakMiB(largest);
+  fs::remove(largest);
+
+  mxc::runWithLargeStack([&] {
+    mxc::SourceManager sources;
+    mxc::Diagnostics diagnostics;
+    mxc::lib::LibraryStack libraries(sources, diagnostics);
+    libraries.addBuiltin();
+    std::printf("%8s %9s %9s %9s %9s %9s %10s %10s %8s %8s\n", "nodes", "parse", "resolve", "lower", "glsl", "glslang",
+                "total", "us/node", "growth", "lines");
+    double previous = 0.0;
+    for (int nodes = 1000; nodes <= max; nodes *= 10) {
+      const Stages s = run(libraries, sources, generate(nodes));
+      std::printf("%8d %7.1fms %7.1fms %7.1fms %7.1fms %7.1fms %8.1fms %10.2f %8s %8zu\n", nodes, s.parse, s.resolve,
+                  s.lower, s.glsl, s.spirv, s.total(), 1000.0 * s.total() / nodes,
+                  previous > 0 ? fmt::format("{:.1f}x", s.total() / previous).c_str() : "-", s.glslLines);
+      previous = s.total();
+    }
+  });
+  std::printf("\npeak resident memory of `mxc compile` (one process, library, glslang and SPIRV-Tools included):\n");
+  std::printf("  %-28s %8.1f MiB   (target: at most 48 MiB)\n", "open_pbr_default.mtlx", openPbrPeak);
+  std::printf("  %-28s %8.1f MiB   (target: under 1 GiB)\n", fmt::format("{} generated nodes", max).c_str(), largestPeak);
+  return 0;
+}
