@@ -48,23 +48,47 @@ struct Scope {
 };
 
 /// Tracks names of sibling elements so a duplicate is reported with the first definition.
+/// Most scopes are a node's few inputs: those are searched in a small vector, without a hash
+/// table per node; past kLinear names the set switches to a hash table, so a document of
+/// many thousand nodes stays linear.
 class NameSet {
  public:
   NameSet(Diagnostics& diagnostics, std::string scope) : diagnostics_(diagnostics), scope_(std::move(scope)) {}
+  /// For a scope known to hold many names (the document's top level).
+  void reserve(size_t count) {
+    if (count > kLinear) {
+      index_.reserve(count);
+      index_.insert(few_.begin(), few_.end());
+    }
+  }
   void add(std::string_view name, SourceLocation location) {
     if (name.empty()) return;
-    auto [it, inserted] = seen_.emplace(name, location);
-    if (!inserted) {
-      LineColumn first = it->second.lineColumn();
+    const SourceLocation* first = nullptr;
+    if (index_.empty()) {
+      for (const auto& [seen, where] : few_) {
+        if (seen == name) first = &where;
+      }
+      if (!first) {
+        few_.emplace_back(name, location);
+        if (few_.size() > kLinear) index_.insert(few_.begin(), few_.end());
+      }
+    } else {
+      auto [it, inserted] = index_.emplace(name, location);
+      if (!inserted) first = &it->second;
+    }
+    if (first) {
+      LineColumn at = first->lineColumn();
       diagnostics_.error(location, fmt::format("duplicate name '{}' in {} (first defined at line {}, column {})", name,
-                                               scope_, first.line, first.column));
+                                               scope_, at.line, at.column));
     }
   }
 
  private:
+  static constexpr size_t kLinear = 16;
   Diagnostics& diagnostics_;
   std::string scope_;
-  std::unordered_map<std::string_view, SourceLocation> seen_;
+  std::vector<std::pair<std::string_view, SourceLocation>> few_;
+  std::unordered_map<std::string_view, SourceLocation> index_;
 };
 
 class Builder {
@@ -321,7 +345,10 @@ void Builder::build() {
   }
   Scope scope = Scope().enter(root);
   NameSet names(diagnostics_, "the document");
-  for (const xml::Element& e : root.children()) {
+  const std::vector<xml::Element> children = root.children();
+  names.reserve(children.size());
+  doc_.nodes.reserve(children.size());
+  for (const xml::Element& e : children) {
     std::string_view kind = e.name();
     if (kind == "nodedef") {
       doc_.nodedefs.push_back(buildNodeDef(e, scope));

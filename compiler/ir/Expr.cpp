@@ -1,6 +1,9 @@
 #include "compiler/ir/Expr.h"
 
+#include <algorithm>
 #include <cstring>
+#include <type_traits>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -91,28 +94,86 @@ uint32_t ExprGraph::internString(std::string_view text) {
 }
 
 uint32_t ExprGraph::internConstant(const doc::Value& value) {
-  std::string key = fmt::format("{}:{}", static_cast<int>(value.type()), value.str());
+  // Key: the type, then the raw bytes of a scalar, vector or matrix (bit-exact, so 0 and -0
+  // stay distinct constants), else the value's text. No float formatting on the common path.
+  std::string key(1, static_cast<char>(value.type()));
+  const bool raw = std::visit(
+      [&key](const auto& d) {
+        using T = std::decay_t<decltype(d)>;
+        if constexpr (std::is_same_v<T, bool> || std::is_same_v<T, int32_t> || std::is_same_v<T, float> ||
+                      std::is_same_v<T, glm::vec2> || std::is_same_v<T, glm::vec3> || std::is_same_v<T, glm::vec4> ||
+                      std::is_same_v<T, glm::mat3> || std::is_same_v<T, glm::mat4>) {
+          key.append(reinterpret_cast<const char*>(&d), sizeof(d));
+          return true;
+        } else {
+          return false;
+        }
+      },
+      value.data());
+  if (!raw) key += value.str();
   auto [it, inserted] = constantIndex_.emplace(std::move(key), static_cast<uint32_t>(constants_.size()));
   if (inserted) constants_.push_back(value);
   return it->second;
 }
 
+void ExprGraph::reserve(size_t count) {
+  exprs_.reserve(count);
+  hashes_.reserve(count);
+  args_.reserve(2 * count);
+  growSlots(count);
+}
+
+void ExprGraph::growSlots(size_t minimum) {
+  // Load factor at most 1/2 keeps linear-probing runs short; the size is a power of two so
+  // that the slot is the hash's low bits.
+  size_t size = slots_.empty() ? 64 : slots_.size();
+  while (size < 2 * minimum) size *= 2;
+  if (size == slots_.size()) return;
+  slots_.assign(size, kNoExpr);
+  const size_t mask = size - 1;
+  for (ExprId id = 0; id < exprs_.size(); ++id) {
+    size_t slot = hashes_[id] & mask;
+    while (slots_[slot] != kNoExpr) slot = (slot + 1) & mask;
+    slots_[slot] = id;
+  }
+}
+
 ExprId ExprGraph::intern(Expr expr, const std::vector<ExprId>& args) {
-  // Structural key: op, type, payload and argument ids, as raw bytes.
-  std::string key;
-  key.reserve(12 + 4 * args.size());
-  const uint8_t head[2] = {static_cast<uint8_t>(expr.op), static_cast<uint8_t>(expr.type)};
-  key.append(reinterpret_cast<const char*>(head), 2);
-  key.append(reinterpret_cast<const char*>(&expr.payload), sizeof(expr.payload));
-  for (ExprId a : args) key.append(reinterpret_cast<const char*>(&a), sizeof(a));
-  auto it = index_.find(key);
-  if (it != index_.end()) return it->second;
+  // Structural hash of op, type, payload and argument ids (FNV-1a over their bytes, then a
+  // final avalanche so that the low bits used for the slot depend on every input bit); equal
+  // hashes are confirmed by comparing the expressions, so a collision only costs a compare.
+  uint64_t hash = 1469598103934665603ull;
+  auto mix = [&hash](uint32_t v) {
+    for (int b = 0; b < 4; ++b) {
+      hash ^= (v >> (8 * b)) & 0xffu;
+      hash *= 1099511628211ull;
+    }
+  };
+  mix(static_cast<uint32_t>(expr.op) | (static_cast<uint32_t>(expr.type) << 8));
+  mix(expr.payload);
+  for (ExprId a : args) mix(a);
+  hash ^= hash >> 33;
+  hash *= 0xff51afd7ed558ccdull;
+  hash ^= hash >> 33;
+  if (2 * (exprs_.size() + 1) > slots_.size()) growSlots(exprs_.size() + 1);
+  const size_t mask = slots_.size() - 1;
+  size_t slot = hash & mask;
+  for (; slots_[slot] != kNoExpr; slot = (slot + 1) & mask) {
+    const ExprId id = slots_[slot];
+    const Expr& e = exprs_[id];
+    if (hashes_[id] != hash || e.op != expr.op || e.type != expr.type || e.payload != expr.payload ||
+        e.argCount != args.size()) {
+      continue;
+    }
+    if (std::equal(args.begin(), args.end(), args_.begin() + e.firstArg)) return id;
+  }
   expr.firstArg = static_cast<uint32_t>(args_.size());
   expr.argCount = static_cast<uint16_t>(args.size());
   args_.insert(args_.end(), args.begin(), args.end());
   const auto id = static_cast<ExprId>(exprs_.size());
   exprs_.push_back(expr);
-  index_.emplace(std::move(key), id);
+  hashes_.push_back(hash);
+  slots_[slot] = id;
   return id;
 }
 

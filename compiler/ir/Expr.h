@@ -82,6 +82,9 @@ class ExprGraph {
  public:
   ExprGraph() = default;
 
+  /// Room for `count` expressions without rehashing (a pass rebuilding a graph of that size).
+  void reserve(size_t count);
+
   ExprId constant(doc::Value value);
   ExprId constantFloat(float value);
   ExprId constantVector(Type type, const std::vector<float>& components);
@@ -111,6 +114,7 @@ class ExprGraph {
 
  private:
   ExprId intern(Expr expr, const std::vector<ExprId>& args);
+  void growSlots(size_t minimum);
   uint32_t internString(std::string_view text);
   uint32_t internConstant(const doc::Value& value);
 
@@ -118,7 +122,11 @@ class ExprGraph {
   std::vector<ExprId> args_;
   std::vector<doc::Value> constants_;
   std::vector<std::string> strings_;
-  std::unordered_map<std::string, ExprId> index_;  // structural key -> id
+  /// Open-addressing hash set of expression ids (linear probing, kNoExpr marks an empty slot),
+  /// with each expression's structural hash beside it: one flat array, so interning stays a
+  /// few cache lines per expression however large the graph grows.
+  std::vector<ExprId> slots_;
+  std::vector<uint64_t> hashes_;  // parallel to exprs_
   std::unordered_map<std::string, uint32_t> stringIndex_;
   std::unordered_map<std::string, uint32_t> constantIndex_;
 };

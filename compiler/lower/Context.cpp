@@ -128,6 +128,15 @@ ir::ExprId Context::value(const ResolvedInput& in, Env& env) {
     case InputSource::Unset:
       break;
   }
+  if (v == ir::kNoExpr && (in.source == InputSource::Connection || in.source == InputSource::Interface)) {
+    // Connected to nothing that has a value (an unconnected graph output, reported by the
+    // resolver): the input's default, else zero, so that every consumer gets a value.
+    if (in.declaration && in.declaration->value) {
+      v = material.exprs.constant(*in.declaration->value);
+    } else {
+      v = zero(b, type);
+    }
+  }
   if (shaderNode && &in >= shaderNode->inputs.data() && &in < shaderNode->inputs.data() + shaderNode->inputs.size()) {
     v = userInput(in, v);
   }
@@ -169,7 +178,18 @@ std::string Context::colorspace(const NodeRef& n, std::string_view name) {
   const ResolvedInput* in = n.node->findInput(name);
   Env* env = n.env;
   for (int depth = 0; in && depth < 64; ++depth) {  // interface chains are short; the bound stops a cycle
-    if (in->instance && !in->instance->colorspace.empty()) return std::string(in->instance->colorspace);
+    if (in->instance && !in->instance->colorspace.empty()) {
+      std::string space(in->instance->colorspace);
+      // MaterialX colour spaces this compiler converts: sRGB-encoded textures are decoded on load;
+      // the linear Rec.709 primaries are the working space. Any other space would need a
+      // primaries conversion we do not make, so say that its texels are read as they are.
+      // "none" and "raw" mark data textures, which are never converted.
+      if (space != "srgb_texture" && space != "lin_rec709" && space != "lin_srgb" && space != "none" && space != "raw") {
+        diagnostics.warning(in->location,
+                            fmt::format("colorspace '{}' is not supported: the texels are used as linear Rec.709", space));
+      }
+      return space;
+    }
     if (in->source != InputSource::Interface) break;
     Env* where = nullptr;
     in = interfaceInput(*env, in->interfaceName, where);

@@ -80,6 +80,8 @@ class Resolver {
 };
 
 void Resolver::createNodes(Scope& scope, const std::vector<const doc::Node*>& nodes) {
+  scope.nodes.reserve(scope.nodes.size() + nodes.size());
+  scope.resolved->nodes.reserve(scope.resolved->nodes.size() + nodes.size());
   for (const doc::Node* node : nodes) {
     if (node->name.empty()) continue;  // reported by the builder
     auto resolved = std::make_unique<ResolvedNode>();

@@ -1,10 +1,13 @@
 // Scaling with graph size: generated documents of 1k, 10k and 100k math nodes feeding an
 // open_pbr_surface, timed stage by stage (parse + document model, resolve, lower + passes,
-// GLSL, glslang + validation), with the time per node and the growth from one size to the
-// next (10x more nodes: a ratio near 10 is linear). Then the peak resident memory of the
+// GLSL, glslang + validation), with the growth from one size to the next (10x more nodes: a
+// ratio near 10 is linear) for mxc's own stages, for glslang, and for the whole compile. Then the peak resident memory of the
 // `mxc compile` process, for open_pbr_default and for the 100k-node document.
 //
-//   build/tests/bench/scale_bench [--max N]
+//   build/tests/bench/scale_bench [--max N] [--no-glslang]
+//
+// --no-glslang stops after GLSL (glslang's own constant lookup is quadratic in the number of
+// distinct literals, which dominates beyond 100k nodes).
 
 #include <fcntl.h>
 #include <sys/resource.h>
@@ -94,10 +97,11 @@ fs::path generateFile(int nodes) {
 struct Stages {
   double parse = 0, resolve = 0, lower = 0, glsl = 0, spirv = 0;
   size_t glslLines = 0;
-  double total() const { return parse + resolve + lower + glsl + spirv; }
+  double ours() const { return parse + resolve + lower + glsl; }
+  double total() const { return ours() + spirv; }
 };
 
-Stages run(mxc::lib::LibraryStack& libraries, mxc::SourceManager& sources, const std::string& text) {
+Stages run(mxc::lib::LibraryStack& libraries, mxc::SourceManager& sources, const std::string& text, bool glslang) {
   Stages s;
   mxc::Diagnostics diagnostics;
   mxc::doc::DocumentLoader loader(sources, diagnostics);
@@ -116,6 +120,7 @@ Stages run(mxc::lib::LibraryStack& libraries, mxc::SourceManager& sources, const
   mxc::glsl::MaterialShader shader = mxc::glsl::buildMaterialShader(materials.at(0), mxc::glsl::ShaderKind::Raster);
   s.glsl = msSince(t);
   s.glslLines = shader.glsl.origins.size();
+  if (!glslang) return s;
   t = Clock::now();
   auto words = mxc::spirv::compile(shader.glsl, {}, diagnostics);
   s.spirv = msSince(t);
@@ -149,6 +154,10 @@ int main(int argc, char** argv) {
   for (int i = 1; i + 1 < argc; ++i) {
     if (!std::strcmp(argv[i], "--max")) max = std::atoi(argv[i + 1]);
   }
+  bool glslang = true;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--no-glslang")) glslang = false;
+  }
   // Memory first, while this process is small: a child's peak counts the pages it had from
   // fork until exec.
   const fs::path openPbr = fs::path(MXC_SHARED_DIR) / "corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx";
@@ -162,15 +171,19 @@ int main(int argc, char** argv) {
     mxc::Diagnostics diagnostics;
     mxc::lib::LibraryStack libraries(sources, diagnostics);
     libraries.addBuiltin();
-    std::printf("%8s %9s %9s %9s %9s %9s %10s %10s %8s %8s\n", "nodes", "parse", "resolve", "lower", "glsl", "glslang",
-                "total", "us/node", "growth", "lines");
-    double previous = 0.0;
+    std::printf("%8s %9s %9s %9s %9s %10s %8s %10s %8s %10s %8s %8s\n", "nodes", "parse", "resolve", "lower", "glsl",
+                "mxc", "growth", "glslang", "growth", "total", "growth", "lines");
+    Stages previous;
     for (int nodes = 1000; nodes <= max; nodes *= 10) {
-      const Stages s = run(libraries, sources, generate(nodes));
-      std::printf("%8d %7.1fms %7.1fms %7.1fms %7.1fms %7.1fms %8.1fms %10.2f %8s %8zu\n", nodes, s.parse, s.resolve,
-                  s.lower, s.glsl, s.spirv, s.total(), 1000.0 * s.total() / nodes,
-                  previous > 0 ? fmt::format("{:.1f}x", s.total() / previous).c_str() : "-", s.glslLines);
-      previous = s.total();
+      const Stages s = run(libraries, sources, generate(nodes), glslang);
+      auto growth = [&](double now, double before) {
+        return before > 0 ? fmt::format("{:.1f}x", now / before) : std::string("-");
+      };
+      std::printf("%8d %7.1fms %7.1fms %7.1fms %7.1fms %8.1fms %8s %8.1fms %8s %8.1fms %8s %8zu\n", nodes, s.parse,
+                  s.resolve, s.lower, s.glsl, s.ours(), growth(s.ours(), previous.ours()).c_str(), s.spirv,
+                  growth(s.spirv, previous.spirv).c_str(), s.total(), growth(s.total(), previous.total()).c_str(),
+                  s.glslLines);
+      previous = s;
     }
   });
   std::printf("\npeak resident memory of `mxc compile` (one process, library, glslang and SPIRV-Tools included):\n");

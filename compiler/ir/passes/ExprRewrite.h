@@ -28,16 +28,18 @@ int rebuildExpressions(Material& m, Rewrite rewrite) {
     stack.pop_back();
     if (reachable[id]) continue;
     reachable[id] = true;
-    for (ExprId a : old.argsOf(id)) stack.push_back(a);
+    for (size_t i = 0; i < old[id].argCount; ++i) stack.push_back(old.arg(id, i));
   }
   ExprGraph fresh;
+  fresh.reserve(old.size());
   std::vector<ExprId> map(old.size(), kNoExpr);
+  std::vector<ExprId> args;  // reused: one allocation for the whole rebuild
   int edits = 0;
   for (ExprId id = 0; id < old.size(); ++id) {
     if (!reachable[id]) continue;
     const Expr& e = old[id];
-    std::vector<ExprId> args;
-    for (ExprId a : old.argsOf(id)) args.push_back(map[a]);
+    args.clear();
+    for (size_t i = 0; i < e.argCount; ++i) args.push_back(map[old.arg(id, i)]);
     if (std::optional<ExprId> replaced = rewrite(fresh, old, id, args)) {
       map[id] = *replaced;
       ++edits;
