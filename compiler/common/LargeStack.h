@@ -17,4 +17,9 @@ constexpr size_t kLargeStackBytes = size_t{1} << 30;
 /// be created, runs `work` on the calling thread.
 void runWithLargeStack(const std::function<void()>& work, size_t bytes = kLargeStackBytes);
 
+/// Bytes of stack left on the calling thread below the caller's frame (from the thread's stack
+/// bounds; SIZE_MAX when the bounds cannot be read). Recursive walks check it to stop with an
+/// error where a graph is deeper than the stack, instead of overflowing it.
+size_t stackRemaining();
+
 }  // namespace mxc

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "compiler/common/LargeStack.h"
 #include "compiler/resolve/Resolver.h"
 
 namespace mxc::lower {
@@ -220,6 +221,26 @@ ir::ExprId Context::nodeValue(const NodeRef& n, std::string_view output) {
   if (auto it = n.env->values.find(key); it != n.env->values.end()) return it->second;
   const ir::Type type = outputType(n, output);
   ir::ExprId v = ir::kNoExpr;
+  // Lowering recurses along connections, about 600 bytes of frames per node on the path.
+  // Keep a reserve for the rule that runs at the deepest point (a few frames); a graph deeper
+  // than the stack (millions of nodes on one path on the CLI's 1 GiB stack, about ten
+  // thousand on an 8 MiB main thread) stops here with an error.
+  constexpr size_t kStackReserve = size_t{1} << 20;
+  if (stackRemaining() < kStackReserve) {
+    if (!tooDeepReported_) {
+      error(n.node->node->location,
+            fmt::format("node '{}' is {} connections away from the shading node: the graph is too deep to lower "
+                        "(the compiler's stack is exhausted)",
+                        n.node->name(), depth_));
+      tooDeepReported_ = true;
+    }
+    return zero(b, type);
+  }
+  struct Depth {
+    int& depth;
+    explicit Depth(int& d) : depth(d) { ++depth; }
+    ~Depth() { --depth; }
+  } onPath(depth_);
   if (!n.node->nodedef) {
     v = zero(b, type);  // the resolver reported why
   } else if (n.node->signature && isClosureType(n.node->signature->outputType())) {

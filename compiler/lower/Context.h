@@ -98,6 +98,8 @@ class Context {
   const resolve::ResolvedInput* implementationOutput(Env& env, std::string_view output);
 
  private:
+  int depth_ = 0;                 ///< nodeValue calls on the stack: the path length from the shading node
+  bool tooDeepReported_ = false;  ///< the stack limit is reported once per material
   const resolve::ResolvedInput* interfaceInput(Env& env, std::string_view name, Env*& where);
   /// The value of a shading-node input with `--set` and `--param` applied; kNoExpr when neither
   /// names it.

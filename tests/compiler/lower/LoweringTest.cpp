@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "compiler/common/LargeStack.h"
 #include "compiler/ir/Effects.h"
 #include "compiler/ir/Evaluate.h"
 #include "compiler/ir/Print.h"
@@ -338,6 +339,39 @@ TEST(Lowering, UnsupportedNodeIsAnErrorAtItsElement) {
       << e.message;
   EXPECT_EQ(e.location.line(), 3u);
   EXPECT_EQ(e.location.lineColumn().column, 3u);
+}
+
+TEST(Lowering, AGraphDeeperThanTheStackIsAnErrorNotACrash) {
+  // A chain of 40,000 sin nodes on a 16 MiB stack: lowering recurses once per node on the
+  // path, so it must stop with an error at the node where the stack runs short (the CLI's
+  // 1 GiB stack moves that point to millions of nodes; the mechanism is the same).
+  std::string body = "  <texcoord name=\"uv\" type=\"vector2\"/>\n"
+                     "  <extract name=\"n0\" type=\"float\"><input name=\"in\" type=\"vector2\" nodename=\"uv\"/>"
+                     "<input name=\"index\" type=\"integer\" value=\"0\"/></extract>\n";
+  constexpr int kNodes = 40000;
+  for (int i = 1; i < kNodes; ++i) {
+    body += fmt::format("  <sin name=\"n{}\" type=\"float\"><input name=\"in\" type=\"float\" nodename=\"n{}\"/></sin>\n", i,
+                        i - 1);
+  }
+  body += fmt::format("  <open_pbr_surface name=\"s\" type=\"surfaceshader\"><input name=\"base_weight\" type=\"float\" "
+                      "nodename=\"n{}\"/></open_pbr_surface>\n",
+                      kNodes - 1);
+  Context context;
+  std::vector<ir::Material> materials;
+  runWithLargeStack(
+      [&] {
+        resolve::ResolvedDocument r = context.resolve(mtlx(body));
+        ASSERT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+        materials = lower::lowerDocument(r, {}, context.diagnostics);
+      },
+      size_t{16} << 20);
+  ASSERT_TRUE(context.diagnostics.hasErrors());
+  Diagnostic e = context.firstError();
+  EXPECT_NE(e.message.find("the graph is too deep to lower"), std::string::npos) << e.message;
+  EXPECT_GT(e.location.line(), 3u);  // a sin node of the chain, named by its line
+  size_t errors = 0;
+  for (const Diagnostic& d : context.diagnostics.all()) errors += d.severity == Severity::Error;
+  EXPECT_EQ(errors, 1u) << "reported once, not once per node beyond the limit";
 }
 
 TEST(Lowering, EveryCorpusMaterialLowers) {
