@@ -43,7 +43,7 @@ float halton(uint32_t index, uint32_t base) {
 struct Frame {
   VulkanContext& context;
   Image color, depth;
-  Buffer vertices, indices, view, dummy;
+  Buffer vertices, indices;
   VkRenderPass renderPass = VK_NULL_HANDLE;
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
   VkPipelineLayout layout = VK_NULL_HANDLE;
@@ -58,7 +58,7 @@ struct Frame {
     if (layout) vkDestroyPipelineLayout(d, layout, nullptr);
     if (framebuffer) vkDestroyFramebuffer(d, framebuffer, nullptr);
     if (renderPass) vkDestroyRenderPass(d, renderPass, nullptr);
-    for (Buffer* b : {&vertices, &indices, &view, &dummy}) context.destroy(*b);
+    for (Buffer* b : {&vertices, &indices}) context.destroy(*b);
     context.destroy(color);
     context.destroy(depth);
   }
@@ -113,7 +113,8 @@ VkRenderPass createRenderPass(VkDevice device) {
 /// The depth pre-pass (no fragment shader, no colour writes) or the shading pass (EQUAL depth,
 /// additive blending).
 VkPipeline createPipeline(VkDevice device, VkRenderPass pass, VkPipelineLayout layout, VkShaderModule vertex,
-                          VkShaderModule fragment, uint32_t width, uint32_t height) {
+                          VkShaderModule fragment, const std::vector<VertexInput>& inputs, uint32_t width,
+                          uint32_t height) {
   const bool shading = fragment != VK_NULL_HANDLE;
   VkPipelineShaderStageCreateInfo stages[2]{};
   stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
@@ -125,16 +126,13 @@ VkPipeline createPipeline(VkDevice device, VkRenderPass pass, VkPipelineLayout l
   stages[1].module = fragment;
   stages[1].pName = "main";
   VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
-  VkVertexInputAttributeDescription attributes[4] = {
-      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
-      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
-      {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
-      {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}};
+  std::vector<VkVertexInputAttributeDescription> attributes;
+  for (const VertexInput& in : inputs) attributes.push_back({in.location, 0, in.format, in.offset});
   VkPipelineVertexInputStateCreateInfo input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   input.vertexBindingDescriptionCount = 1;
   input.pVertexBindingDescriptions = &binding;
-  input.vertexAttributeDescriptionCount = 4;
-  input.pVertexAttributeDescriptions = attributes;
+  input.vertexAttributeDescriptionCount = static_cast<uint32_t>(attributes.size());
+  input.pVertexAttributeDescriptions = attributes.data();
   VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
   assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
@@ -201,6 +199,58 @@ Renderer::~Renderer() = default;
 RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resources,
                               const glsl::MaterialInterface& material, const std::vector<uint32_t>& fragmentSpirv,
                               const RenderSettings& s, const std::function<void(uint32_t)>& progress) {
+  Buffer view = context_.createBuffer(sizeof(ViewBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  Buffer dummy = context_.createBuffer(16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  struct Release {
+    VulkanContext& context;
+    Buffer& view;
+    Buffer& dummy;
+    ~Release() {
+      vkDeviceWaitIdle(context.device());
+      context.destroy(view);
+      context.destroy(dummy);
+    }
+  } release{context_, view, dummy};
+  DescriptorSet set(context_, MaterialResources::layout(material), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+  resources.bind(set, tables_);
+  set.bind(glsl::kStageBinding, view);
+  // The storage bindings belong to the compute stages; they are written anyway so that every
+  // descriptor of the set is valid.
+  set.bind(glsl::kInputBinding, dummy);
+  set.bind(glsl::kOutputBinding, dummy);
+
+  ViewBlock block{};
+  const uint32_t lights = std::min<uint32_t>(static_cast<uint32_t>(s.lights.size()), kMaxLights);
+  for (uint32_t k = 0; k < lights; ++k) {
+    const Light& l = s.lights[k];
+    block.lightVector[k] = glm::vec4(l.vector, l.kind == Light::Kind::Point ? 1.0f : 0.0f);
+    block.lightRadiance[k] = glm::vec4(l.color * l.intensity, 0.0f);
+  }
+  block.environment = glm::vec4(s.environmentIntensity, s.emissionScale, 0.0f, 0.0f);
+  const std::vector<VertexInput> inputs = {
+      {0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
+      {1, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
+      {2, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
+      {3, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}};
+  return draw(mesh, vertexSpirv_, fragmentSpirv, inputs, set, s,
+              [&](const FrameView& v) {
+                block.objectToWorld = v.objectToWorld;
+                block.normalToWorld = v.normalToWorld;
+                block.worldToClip = v.viewToClip * v.worldToView;
+                block.eye = glm::vec4(v.eye, 1.0f);
+                block.jitter = glm::vec4(v.jitter, 0.0f, 0.0f);  // added in clip space by mxc_raster.vert
+                block.counts = glm::ivec4(int(lights), int(s.environment), int(v.frame),
+                                          int(std::max(s.samplesPerFrame, 1u)));
+                std::memcpy(view.mapped, &block, sizeof(block));
+              },
+              progress);
+}
+
+RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& vertexSpirv,
+                            const std::vector<uint32_t>& fragmentSpirv, const std::vector<VertexInput>& inputs,
+                            const DescriptorSet& set, const RenderSettings& s,
+                            const std::function<void(const FrameView&)>& beforeFrame,
+                            const std::function<void(uint32_t)>& progress) {
   VkDevice device = context_.device();
   Frame f(context_);
   f.color = context_.createImage(s.width, s.height, VK_FORMAT_R32G32B32A32_SFLOAT,
@@ -211,18 +261,8 @@ RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resourc
   std::memcpy(f.vertices.mapped, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex));
   f.indices = context_.createBuffer(mesh.indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   std::memcpy(f.indices.mapped, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
-  f.view = context_.createBuffer(sizeof(ViewBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  f.dummy = context_.createBuffer(16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 
-  DescriptorSet set(context_, MaterialResources::layout(material), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
-  resources.bind(set, tables_);
-  set.bind(glsl::kStageBinding, f.view);
-  // The storage bindings belong to the compute stages; they are written anyway so that every
-  // descriptor of the set is valid.
-  set.bind(glsl::kInputBinding, f.dummy);
-  set.bind(glsl::kOutputBinding, f.dummy);
-
-  ShaderModule vertex(context_, vertexSpirv_);
+  ShaderModule vertex(context_, vertexSpirv);
   ShaderModule fragment(context_, fragmentSpirv);
   f.renderPass = createRenderPass(device);
   VkImageView views[2] = {f.color.view, f.depth.view};
@@ -239,8 +279,10 @@ RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resourc
   layoutInfo.setLayoutCount = 1;
   layoutInfo.pSetLayouts = &setLayout;
   check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &f.layout), "vkCreatePipelineLayout");
-  f.depthPipeline = createPipeline(device, f.renderPass, f.layout, vertex.get(), VK_NULL_HANDLE, s.width, s.height);
-  f.shadePipeline = createPipeline(device, f.renderPass, f.layout, vertex.get(), fragment.get(), s.width, s.height);
+  f.depthPipeline =
+      createPipeline(device, f.renderPass, f.layout, vertex.get(), VK_NULL_HANDLE, inputs, s.width, s.height);
+  f.shadePipeline =
+      createPipeline(device, f.renderPass, f.layout, vertex.get(), fragment.get(), inputs, s.width, s.height);
 
   context_.submit([&](VkCommandBuffer cmd) {
     VulkanContext::transition(cmd, f.color.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
@@ -260,18 +302,12 @@ RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resourc
   glm::mat4 projection = glm::perspectiveRH_ZO(glm::radians(s.camera.fovDegrees), aspect, 0.05f, 100.0f);
   projection[1][1] *= -1.0f;
   const glm::mat4 viewMatrix = glm::lookAtRH(s.camera.eye, s.camera.target, s.camera.up);
-  ViewBlock block{};
-  block.objectToWorld = s.objectToWorld;
-  block.normalToWorld = glm::transpose(glm::inverse(s.objectToWorld));
-  block.worldToClip = projection * viewMatrix;
-  block.eye = glm::vec4(s.camera.eye, 1.0f);
-  const uint32_t lights = std::min<uint32_t>(static_cast<uint32_t>(s.lights.size()), kMaxLights);
-  for (uint32_t k = 0; k < lights; ++k) {
-    const Light& l = s.lights[k];
-    block.lightVector[k] = glm::vec4(l.vector, l.kind == Light::Kind::Point ? 1.0f : 0.0f);
-    block.lightRadiance[k] = glm::vec4(l.color * l.intensity, 0.0f);
-  }
-  block.environment = glm::vec4(s.environmentIntensity, s.emissionScale, 0.0f, 0.0f);
+  FrameView frameView;
+  frameView.objectToWorld = s.objectToWorld;
+  frameView.normalToWorld = glm::transpose(glm::inverse(s.objectToWorld));
+  frameView.viewToClip = projection;
+  frameView.worldToView = viewMatrix;
+  frameView.eye = s.camera.eye;
 
   RenderResult result;
   double totalMs = 0.0;
@@ -281,9 +317,15 @@ RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resourc
     // the first frame samples pixel centres.
     const float jx = frame == 0 ? 0.0f : halton(frame, 2) - 0.5f;
     const float jy = frame == 0 ? 0.0f : halton(frame, 3) - 0.5f;
-    block.jitter = glm::vec4(2.0f * jx / float(s.width), 2.0f * jy / float(s.height), 0.0f, 0.0f);
-    block.counts = glm::ivec4(int(lights), int(s.environment), int(frame), int(std::max(s.samplesPerFrame, 1u)));
-    std::memcpy(f.view.mapped, &block, sizeof(block));
+    // The jitter is a translation in clip space, applied before the perspective divide
+    // (x_ndc += j needs x_clip += j w): one matrix for every vertex shader.
+    frameView.jitter = glm::vec2(2.0f * jx / float(s.width), 2.0f * jy / float(s.height));
+    glm::mat4 jitter(1.0f);
+    jitter[3][0] = frameView.jitter.x;
+    jitter[3][1] = frameView.jitter.y;
+    frameView.worldToClip = jitter * projection * viewMatrix;
+    frameView.frame = frame;
+    beforeFrame(frameView);
     const auto start = std::chrono::steady_clock::now();
     context_.submit([&](VkCommandBuffer cmd) {
       VkClearValue clears[2]{};

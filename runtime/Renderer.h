@@ -13,6 +13,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "runtime/Descriptors.h"
 #include "runtime/ImageIO.h"
 #include "runtime/MaterialResources.h"
 #include "runtime/Mesh.h"
@@ -54,6 +55,26 @@ struct RenderResult {
   double msPerFrame = 0.0;  ///< wall time per frame (draw, submit and wait), after the first
 };
 
+/// One vertex attribute read from the mesh's Vertex (binding 0).
+struct VertexInput {
+  uint32_t location = 0;
+  VkFormat format = VK_FORMAT_R32G32B32_SFLOAT;
+  uint32_t offset = 0;  ///< into Vertex
+};
+
+/// What a frame's shaders need from the camera: the matrices, and this frame's sub-pixel
+/// jitter, both alone (in normalised device units) and folded into worldToClip.
+struct FrameView {
+  glm::mat4 objectToWorld{1.0f};
+  glm::mat4 normalToWorld{1.0f};
+  glm::mat4 worldToView{1.0f};
+  glm::mat4 viewToClip{1.0f};  ///< Vulkan clip space: depth 0..1, y down
+  glm::mat4 worldToClip{1.0f};  ///< jitter * viewToClip * worldToView
+  glm::vec2 jitter{0.0f};
+  glm::vec3 eye{0.0f};
+  uint32_t frame = 0;
+};
+
 class Renderer {
  public:
   Renderer(VulkanContext& context, const AlbedoTables& tables);
@@ -66,6 +87,15 @@ class Renderer {
   RenderResult render(const Mesh& mesh, const MaterialResources& resources, const glsl::MaterialInterface& material,
                       const std::vector<uint32_t>& fragmentSpirv, const RenderSettings& settings,
                       const std::function<void(uint32_t)>& progress = {});
+
+  /// Renders `mesh` with any vertex and fragment shader pair (for instance another generator's,
+  /// whose resource interface the caller found by reflection): the same passes, accumulation
+  /// and timing as render(). `beforeFrame` updates the caller's uniforms for each frame.
+  RenderResult draw(const Mesh& mesh, const std::vector<uint32_t>& vertexSpirv,
+                    const std::vector<uint32_t>& fragmentSpirv, const std::vector<VertexInput>& inputs,
+                    const DescriptorSet& set, const RenderSettings& settings,
+                    const std::function<void(const FrameView&)>& beforeFrame,
+                    const std::function<void(uint32_t)>& progress = {});
 
  private:
   VulkanContext& context_;

@@ -205,7 +205,8 @@ void VulkanContext::destroy(Buffer& b) {
   b = Buffer{};
 }
 
-Image VulkanContext::createImage(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage) {
+Image VulkanContext::createImage(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
+                                 VkSamplerAddressMode addressU, VkSamplerAddressMode addressV) {
   Image img;
   img.width = width;
   img.height = height;
@@ -241,9 +242,8 @@ Image VulkanContext::createImage(uint32_t width, uint32_t height, VkFormat forma
     sampler.magFilter = VK_FILTER_LINEAR;
     sampler.minFilter = VK_FILTER_LINEAR;
     sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    // Addressing is done in the shader (MaterialX address modes); the sampler clamps.
-    sampler.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    sampler.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    sampler.addressModeU = addressU;
+    sampler.addressModeV = addressV;
     sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     sampler.maxLod = 0.0f;
     check(vkCreateSampler(device_, &sampler, nullptr, &img.sampler), "vkCreateSampler");

@@ -71,7 +71,11 @@ class VulkanContext {
 
   Buffer createBuffer(VkDeviceSize size, VkBufferUsageFlags usage);
   void destroy(Buffer& buffer);
-  Image createImage(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage);
+  /// A sampled image's sampler clamps unless told otherwise: mxc's shaders address in the
+  /// shader (MaterialX address modes); other generators' shaders rely on the sampler.
+  Image createImage(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
+                    VkSamplerAddressMode addressU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                    VkSamplerAddressMode addressV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE);
   void destroy(Image& image);
   /// Fills an RGBA32F image created with TRANSFER_DST and SAMPLED usage from `rgba`
   /// (width * height * 4 floats, top row first) and leaves it ready for sampling.

@@ -76,6 +76,10 @@ struct StandardSurface {
     i.kind = ir::InterfaceKind::Dielectric;
     i.scatter = ir::ScatterMode::RT;
     i.origin = c.nodeOrigin(n);
+    // Standard Surface "Layering": the specular BRDF's Fresnel uses specular_IOR as given, the
+    // coat only weighting it by (1 - coat reflectance); unlike OpenPBR, whose eq.
+    // specular_ior_ratio makes the IOR relative to the coat (index-matched when equal).
+    i.iorReference = ir::IorReference::Ambient;
     i.slots.set(Slot::Ior, p("specular_IOR"));
     i.slots.set(Slot::ReflectionTint, clamped("specular_color", 0.0f, 1.0f));
     // transm_color = transmission_color when transmission_depth == 0, else the medium absorbs.

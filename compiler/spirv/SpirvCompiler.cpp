@@ -23,6 +23,51 @@ EShLanguage language(Stage stage) {
   return EShLangFragment;
 }
 
+Reflection::Scalar scalarOf(const glslang::TType& type) {
+  switch (type.getBasicType()) {
+    case glslang::EbtFloat: return Reflection::Scalar::Float;
+    case glslang::EbtInt: return Reflection::Scalar::Int;
+    case glslang::EbtUint: return Reflection::Scalar::UInt;
+    case glslang::EbtBool: return Reflection::Scalar::Bool;
+    case glslang::EbtSampler: return Reflection::Scalar::Sampler;
+    default: return Reflection::Scalar::Other;
+  }
+}
+
+void reflect(glslang::TProgram& program, Reflection& out) {
+  program.buildReflection(EShReflectionDefault | EShReflectionAllBlockVariables | EShReflectionUnwrapIOBlocks);
+  for (int i = 0; i < program.getNumUniformBlocks(); ++i) {
+    const glslang::TObjectReflection& b = program.getUniformBlock(i);
+    out.blocks.push_back({b.name, b.getBinding(), b.size});
+  }
+  for (int i = 0; i < program.getNumUniformVariables(); ++i) {
+    const glslang::TObjectReflection& u = program.getUniform(i);
+    const glslang::TType* type = u.getType();
+    if (!type) continue;
+    if (type->getBasicType() == glslang::EbtSampler) {
+      out.samplers.push_back({u.name, u.getBinding()});
+      continue;
+    }
+    Reflection::Member m;
+    m.name = u.name;
+    m.block = u.index;
+    m.offset = u.offset;
+    m.scalar = scalarOf(*type);
+    m.columns = type->isMatrix() ? type->getMatrixCols() : 1;
+    m.components = type->isMatrix() ? type->getMatrixCols() * type->getMatrixRows() : std::max(1, type->getVectorSize());
+    m.arraySize = std::max(1, u.size);
+    m.arrayStride = u.arrayStride;
+    out.members.push_back(m);
+  }
+  for (int i = 0; i < program.getNumPipeInputs(); ++i) {
+    const glslang::TObjectReflection& in = program.getPipeInput(i);
+    const glslang::TType* type = in.getType();
+    if (!type) continue;
+    const int location = type->getQualifier().hasLocation() ? static_cast<int>(type->getQualifier().layoutLocation) : -1;
+    out.inputs.push_back({in.name, location, std::max(1, type->getVectorSize())});
+  }
+}
+
 /// glslang's process-wide state is initialised once (it is reference counted, never finalised
 /// here: the process ends first).
 void initialise() {
@@ -83,6 +128,7 @@ std::optional<std::vector<uint32_t>> compile(const GlslSource& source, const Com
     reportLog(source, program.getInfoLog(), diagnostics);
     return std::nullopt;
   }
+  if (options.reflection) reflect(program, *options.reflection);
   std::vector<uint32_t> words;
   spv::SpvBuildLogger logger;
   glslang::SpvOptions spvOptions;

@@ -27,8 +27,45 @@ struct GlslSource {
   std::vector<SourceLocation> origins;
 };
 
+/// The resource interface of a module, from glslang's reflection: what a harness must bind
+/// and fill to run GLSL that another generator wrote (MaterialX's, for the comparison).
+struct Reflection {
+  enum class Scalar : uint8_t { Float, Int, UInt, Bool, Sampler, Other };
+  struct Block {
+    std::string name;
+    int binding = -1;
+    int size = 0;  ///< bytes (std140)
+  };
+  struct Member {
+    std::string name;  ///< as reflection spells it: "u_viewPosition", "u_lightData[0].direction"
+    int block = -1;    ///< index into blocks
+    int offset = 0;
+    Scalar scalar = Scalar::Float;
+    int components = 1;  ///< vector size, or rows x columns of a matrix
+    int columns = 1;     ///< > 1 for a matrix (columns are 16-byte aligned in std140)
+    int arraySize = 1;
+    int arrayStride = 0;
+  };
+  struct Sampler {
+    std::string name;
+    int binding = -1;
+  };
+  struct Input {
+    std::string name;
+    int location = -1;
+    int components = 1;
+  };
+  std::vector<Block> blocks;
+  std::vector<Member> members;
+  std::vector<Sampler> samplers;
+  std::vector<Input> inputs;
+};
+
 struct CompileOptions {
   bool optimize = false;  ///< run SPIRV-Tools' performance passes
+  /// When set, filled with the module's live blocks (every member of each, used or not),
+  /// samplers and, for a vertex stage, its inputs.
+  Reflection* reflection = nullptr;
 };
 
 /// Compiles GLSL 4.50 for Vulkan 1.1 / SPIR-V 1.3 and validates the module. On failure the

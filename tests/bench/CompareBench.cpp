@@ -6,12 +6,18 @@
 //     as the script reports MaterialX's library load apart);
 //   - compiles both sides' GLSL with the same glslang and SPIRV-Tools (MaterialX's vertex and
 //     pixel stages; mxc's raster fragment shader) and counts SPIR-V instructions before and
-//     after SPIRV-Tools' performance passes.
+//     after SPIRV-Tools' performance passes;
+//   - renders both on the same sphere, camera and directional light in mxc's raster harness
+//     (MaterialX's shader through MaterialXShader: its uniform blocks found by reflection),
+//     environment lighting off on both sides; reports ms per frame and the image difference
+//     over the pixels both cover, and writes both images (PNG) for a person to look at.
 // Writes the figures as JSON for the script's report.
 //
-//   build/tests/bench/compare_bench MANIFEST.json RESULTS.json [--repeat N]
+//   build/tests/bench/compare_bench MANIFEST.json RESULTS.json [--repeat N] [--size N]
+//                                   [--frames N] [--images DIR]
 //
-// MANIFEST: {"materials": [{"name", "mtlx", "material", "vertex", "pixel"}]} (paths to files).
+// MANIFEST: {"materials": [{"name", "mtlx", "material", "vertex", "pixel", "uniforms"}]}
+// (paths to files; uniforms: MaterialX's uniform blocks and values, as the script wrote them).
 
 #include <algorithm>
 #include <chrono>
@@ -23,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "compiler/common/LargeStack.h"
@@ -34,6 +41,11 @@
 #include "compiler/lower/Lowering.h"
 #include "compiler/resolve/Resolver.h"
 #include "compiler/spirv/SpirvCompiler.h"
+#include "runtime/AlbedoTables.h"
+#include "runtime/ImageIO.h"
+#include "runtime/MaterialResources.h"
+#include "runtime/Renderer.h"
+#include "tests/bench/MaterialXShader.h"
 
 namespace {
 
@@ -98,9 +110,8 @@ json figures(const ModuleFigures& m) {
 
 /// mxc from the file to GLSL, timed (median of `repeat`), then the GLSL's SPIR-V figures.
 json measureMxc(mxc::lib::LibraryStack& libraries, mxc::SourceManager& sources, const fs::path& file,
-                const std::string& material, int repeat) {
+                const std::string& material, int repeat, mxc::glsl::MaterialShader& shader) {
   std::vector<double> frontEnd;
-  mxc::glsl::MaterialShader shader;
   for (int r = 0; r < repeat; ++r) {
     mxc::Diagnostics diagnostics;
     const auto start = Clock::now();
@@ -136,6 +147,84 @@ json measureMaterialX(const json& entry, int repeat) {
   return {{"vertex", figures(v)}, {"fragment", figures(p)}, {"glsl_lines", lines}};
 }
 
+/// The image difference over pixels both renders cover fully: per pixel, the summed absolute
+/// RGB difference over MaterialX's summed RGB (floored at 0.03, a dark grey, so that black
+/// pixels do not divide by zero); its mean and 99th percentile.
+json difference(const mxc::rt::RgbaImage& ours, const mxc::rt::RgbaImage& theirs) {
+  std::vector<double> errors;
+  double brightness = 0.0;  // MaterialX's mean summed RGB over the compared pixels
+  for (size_t p = 0; p + 3 < ours.pixels.size() && p + 3 < theirs.pixels.size(); p += 4) {
+    if (ours.pixels[p + 3] < 0.999f || theirs.pixels[p + 3] < 0.999f) continue;
+    double diff = 0.0, base = 0.0;
+    for (size_t c = 0; c < 3; ++c) {
+      diff += std::abs(double(ours.pixels[p + c]) - double(theirs.pixels[p + c]));
+      base += double(theirs.pixels[p + c]);
+    }
+    errors.push_back(diff / std::max(base, 0.03));  // floored: never a division by zero
+    brightness += base;
+  }
+  if (errors.empty()) return {{"pixels", 0}};
+  double mean = 0.0;
+  for (double e : errors) mean += e;
+  mean /= double(errors.size());
+  std::sort(errors.begin(), errors.end());
+  const double p99 = errors[std::min(errors.size() - 1, errors.size() * 99 / 100)];
+  return {{"pixels", errors.size()}, {"mean", mean}, {"p99", p99}, {"brightness", brightness / double(errors.size())}};
+}
+
+struct RenderRig {
+  mxc::rt::VulkanContext context;
+  mxc::rt::AlbedoTables tables{context};
+  mxc::rt::Renderer renderer{context, tables};
+  mxc::rt::Mesh sphere = mxc::rt::makeSphere();
+  mxc::rt::RenderSettings settings;
+};
+
+std::vector<mxc::bench::MaterialXUniform> readUniforms(const fs::path& path) {
+  std::vector<mxc::bench::MaterialXUniform> out;
+  const json blocks = json::parse(readText(path));
+  for (const auto& [block, entries] : blocks.items()) {
+    for (const json& e : entries) {
+      if (e.at("value").is_null()) continue;
+      out.push_back({e.at("name"), e.at("type"), e.at("value")});
+    }
+  }
+  return out;
+}
+
+/// Both shaders on the same sphere, camera and light.
+json renderBoth(RenderRig& rig, const json& entry, const mxc::glsl::MaterialShader& ours,
+                const std::vector<uint32_t>& ourWords, const fs::path& images) {
+  const std::string name = entry.at("name");
+  const fs::path folder = fs::path(entry.at("mtlx").get<std::string>()).parent_path();
+  json out;
+  std::vector<std::string> warnings;
+  mxc::rt::MaterialResources resources(rig.context, ours.interface, folder, warnings);
+  mxc::rt::RenderResult mine = rig.renderer.render(rig.sphere, resources, ours.interface, ourWords, rig.settings);
+  auto loaded = mxc::bench::MaterialXShader::load(readText(entry.at("vertex").get<std::string>()),
+                                                  readText(entry.at("pixel").get<std::string>()),
+                                                  readUniforms(entry.at("uniforms").get<std::string>()), folder);
+  if (auto* error = std::get_if<std::string>(&loaded)) return {{"error", *error}};
+  mxc::rt::RenderResult theirs =
+      std::get<mxc::bench::MaterialXShader>(loaded).render(rig.context, rig.renderer, rig.sphere, rig.settings, warnings);
+  out["mxc_ms_per_frame"] = mine.msPerFrame;
+  out["materialx_ms_per_frame"] = theirs.msPerFrame;
+  out["difference"] = difference(mine.image, theirs.image);
+  out["warnings"] = warnings;
+  if (!images.empty()) {
+    fs::create_directories(images);
+    for (auto [suffix, image] : {std::pair{"mxc", &mine.image}, std::pair{"materialx", &theirs.image}}) {
+      const fs::path png = images / fmt::format("{}_{}.png", name, suffix);
+      if (auto error = mxc::rt::writeImage(png, *image)) out["warnings"].push_back(*error);
+      out[std::string(suffix) + "_image"] = png.string();
+    }
+  }
+  const auto validation = rig.context.validationMessages();
+  if (!validation.empty()) out["validation"] = validation;
+  rig.context.clearValidationMessages();
+  return out;
+}
+
 }  // namespace
 
 static int run(int argc, char** argv) {
@@ -144,8 +233,13 @@ static int run(int argc, char** argv) {
     return 2;
   }
   int repeat = 5;
+  uint32_t size = 256, frames = 16;
+  fs::path images;
   for (int i = 3; i + 1 < argc; ++i) {
     if (!std::strcmp(argv[i], "--repeat")) repeat = std::max(1, std::atoi(argv[i + 1]));
+    if (!std::strcmp(argv[i], "--size")) size = static_cast<uint32_t>(std::max(8, std::atoi(argv[i + 1])));
+    if (!std::strcmp(argv[i], "--frames")) frames = static_cast<uint32_t>(std::max(1, std::atoi(argv[i + 1])));
+    if (!std::strcmp(argv[i], "--images")) images = argv[i + 1];
   }
   json manifest;
   try {
@@ -162,13 +256,37 @@ static int run(int argc, char** argv) {
   libraries.addBuiltin();
   const double libraryMs = msSince(libraryStart);
 
-  json results = {{"mxc_library_ms", libraryMs}, {"repeat", repeat}, {"materials", json::array()}};
+  RenderRig rig;
+  rig.settings.width = rig.settings.height = size;
+  rig.settings.frames = frames;
+  rig.settings.environment = mxc::rt::Environment::None;
+  // One directional light from the upper left front, irradiance 3 at normal incidence.
+  rig.settings.lights.push_back(
+      {mxc::rt::Light::Kind::Directional, glm::normalize(glm::vec3(-1.0f, 1.2f, 1.5f)), glm::vec3(1.0f), 3.0f});
+
+  json results = {{"mxc_library_ms", libraryMs},
+                  {"repeat", repeat},
+                  {"device", rig.context.deviceName()},
+                  {"size", size},
+                  {"frames", frames},
+                  {"materials", json::array()}};
   for (const json& entry : manifest.at("materials")) {
     const std::string name = entry.at("name");
     std::fprintf(stderr, "compare_bench: %s\n", name.c_str());
     json row = {{"name", name}};
-    row["mxc"] = measureMxc(libraries, sources, entry.at("mtlx").get<std::string>(), entry.value("material", ""), repeat);
+    mxc::glsl::MaterialShader shader;
+    row["mxc"] = measureMxc(libraries, sources, entry.at("mtlx").get<std::string>(), entry.value("material", ""), repeat,
+                            shader);
     row["materialx"] = measureMaterialX(entry, repeat);
+    if (!row["mxc"].contains("error")) {
+      mxc::Diagnostics d;
+      auto words = mxc::spirv::compile(shader.glsl, {}, d);
+      try {
+        row["render"] = words ? renderBoth(rig, entry, shader, *words, images) : json{{"error", d.format()}};
+      } catch (const std::exception& e) {
+        row["render"] = {{"error", e.what()}};
+      }
+    }
     results["materials"].push_back(row);
   }
   const std::string out = argv[2];

@@ -60,6 +60,56 @@ DEFAULT_DOCUMENTS = [
 ]
 
 
+# Image difference tolerance (see the report): above it, the report says why.
+TOLERANCE_MEAN = 0.02
+TOLERANCE_P99 = 0.10
+# Why a material's images differ beyond the tolerance: which lobe, which formula, and whether
+# it is a deliberate choice. Filled from looking at the images side by side.
+EXPLANATIONS = {
+    "open_pbr_carpaint":
+        "Coat darkening. coat_ior = specular_ior = 1.6, so by OpenPBR eq. specular_ior_ratio the base specular is "
+        "index-matched under the coat on both sides. MaterialX's graph darkens the coated base by OpenPBR's "
+        "Delta = (1 - K) / (1 - E_b K) (\"Darkening\"); mxc's IR carries coat_darkening but its GLSL back end "
+        "does not apply it yet, so mxc's base is lighter. A gap in mxc, to fix.",
+    "open_pbr_ketchup":
+        "Subsurface. mxc renders subsurface_color as a diffuse lobe of that observed albedo (OpenPBR "
+        "\"Subsurface\" allows it where no subsurface transport exists); MaterialX's subsurface_bsdf uses its "
+        "radius-based approximation, which carries light past the terminator. Deliberate for now.",
+    "open_pbr_pearl":
+        "Thin film. mxc puts the film between the coat (1.68) and the base (1.5), its IOR taken relative to the "
+        "coat as OpenPBR \"Thin-film iridescence\" describes the adjacent media; MaterialX's dielectric_bsdf "
+        "evaluates the film against the BSDF's outside, as if in air, so its highlight carries a pink "
+        "iridescence that the nearly index-matched interface under the coat cannot produce. Deliberate. The "
+        "missing coat darkening (see open_pbr_carpaint) also makes mxc's base lighter. Frame time: mxc's "
+        "thin-film Fresnel costs 5x here, a known cost to reduce.",
+    "open_pbr_velvet":
+        "Fuzz model. The IR records OpenPBR's Zeltner 2022 LTC fuzz, but mxc's GLSL back end still evaluates "
+        "every sheen lobe with the Conty-Kulla lobe; MaterialX's graph uses Zeltner's fuzz, whose response "
+        "gathers at grazing angles. A gap in mxc, to fix.",
+    "standard_surface_brick_procedural":
+        "Mean within tolerance; the 99th percentile sits on the brick and mortar edges at texture tile seams. "
+        "mxc wraps coordinates in the shader and samples with clamp-to-edge, MaterialX's sampler repeats, so "
+        "bilinear lookups across a seam differ.",
+    "standard_surface_copper":
+        "Just above the mean tolerance (2.9%), in the highlight: metal energy compensation. mxc scales the "
+        "conductor lobe with its tabulated GGX albedo, MaterialX with its own fitted approximation.",
+    "standard_surface_jade":
+        "Subsurface, as for open_pbr_ketchup: mxc's diffuse lobe of the observed albedo against MaterialX's "
+        "radius-based approximation past the terminator.",
+    "standard_surface_marble_solid":
+        "Procedural noise. mxc's noise3d and fractal3d are its own gradient noise (the MaterialX specification "
+        "does not fix the hash), so the veins are a different instance of the same pattern. Deliberate: "
+        "MaterialX's noise code is not copied.",
+    "standard_surface_velvet":
+        "Sheen albedo. Both use the Conty-Kulla sheen lobe; mxc scales the base under it by 1 - E_sheen from "
+        "its table, computed by integrating the lobe on the device, and MaterialX by its fitted albedo. The "
+        "difference sits at the rim.",
+}
+# Below this mean summed RGB (MaterialX's image), a render is dark under one light with no
+# environment (glass, chrome, thin films: a highlight on black), and agreement says little.
+DARK = 0.02
+
+
 def venv_python(build: Path) -> Path:
     """The virtual environment's interpreter, with materialx installed (created when missing)."""
     venv = build / "materialx-venv"
@@ -95,6 +145,7 @@ def generate(documents, out_dir: Path, repeat: int) -> dict:
         options.hwMaxActiveLightSources = 1
         options.hwSrgbEncodeOutput = False
         options.hwTransparency = False
+        options.targetColorSpaceOverride = "lin_rec709"
         mx_gen.HwShaderGenerator.bindLightShader(library.getNodeDef("ND_directional_light"), 1, context)
         return context
 
@@ -109,11 +160,19 @@ def generate(documents, out_dir: Path, repeat: int) -> dict:
             t = time.perf_counter()
             doc = mx.createDocument()
             mx.readFromXmlFile(doc, str(path))
+            # File inputs as full paths (fileprefix applied, relative to the document), for the
+            # harness that binds MaterialX's samplers.
+            mx.flattenFilenames(doc, mx.FileSearchPath(str(path.parent)))
             doc.setDataLibrary(library)
             elements = mx_gen.findRenderableElements(doc)
             if not elements:
                 break
             generator = mx_glsl.VkShaderGenerator.create()
+            # Colour management as MaterialX's viewer sets it up: texture colour spaces are
+            # converted to the linear Rec.709 working space in the generated code.
+            cms = mx_gen.DefaultColorManagementSystem.create(generator.getTarget())
+            cms.loadLibrary(library)
+            generator.setColorManagementSystem(cms)
             context = new_context(generator)
             element = elements[0]
             shader = generator.generate(element.getName(), element, context)
@@ -148,6 +207,7 @@ def generate(documents, out_dir: Path, repeat: int) -> dict:
         materials.append({"name": name, "model": "OpenPBR" if "OpenPbr" in relative else "Standard Surface",
                           "mtlx": str(path), "element": element_name,
                           "vertex": str(folder / "materialx.vert"), "pixel": str(folder / "materialx.frag"),
+                          "uniforms": str(folder / "uniforms.json"),
                           "materialx_generate_ms": statistics.median(times)})
     return {"materialx_version": mx.getVersionString(), "materialx_library_ms": library_ms, "materials": materials}
 
@@ -199,6 +259,29 @@ def write_report(path: Path, generated: dict, results: dict, rows: list) -> None
             f"{fmt(r['speedup'])}x | {fmt(r['mxc_spirv'])} | {fmt(r['mx_glslang'])} | {fmt(r['mxc_process'])} | "
             f"{r['mx_frag']} / {r['mx_frag_opt']} | {r['mxc_frag']} / {r['mxc_frag_opt']} | "
             f"{fmt(r['instr_ratio'], 2)} | {r['mx_vert']} / {r['mx_vert_opt']} | {r['mx_lines']} / {r['mxc_lines']} |")
+    lines += [
+        "",
+        "## Rendered side by side",
+        "",
+        f"Both shaders in mxc's raster harness on {results['device']}: the same unit sphere, camera and one "
+        f"directional light (irradiance 3), no environment, {results['size']}x{results['size']} pixels, "
+        f"{results['frames']} jittered frames. MaterialX's shader gets its uniform blocks filled through glslang's "
+        "reflection (tests/bench/MaterialXShader.cpp). *ms/frame* is the wall time of one frame (draw, submit, "
+        "wait) after the first. The difference is over the pixels both images cover fully: per pixel, the summed "
+        "absolute RGB difference over MaterialX's summed RGB (floored at 0.03); its mean and 99th percentile. "
+        f"Tolerance: mean {TOLERANCE_MEAN:.0%}, 99th percentile {TOLERANCE_P99:.0%}. Images: "
+        "`out/materialx-compare/<material>_{mxc,materialx}.png`.",
+        "",
+        "| material | MaterialX ms/frame | mxc ms/frame | frame-time ratio mxc / MaterialX | mean difference | "
+        "99th percentile | within tolerance | why they differ |",
+        "|---|---:|---:|---:|---:|---:|---|---|",
+    ]
+    for r in rows:
+        within = r["diff_mean"] <= TOLERANCE_MEAN and r["diff_p99"] <= TOLERANCE_P99
+        lines.append(
+            f"| {r['name']} | {fmt(r['mx_frame'])} | {fmt(r['mxc_frame'])} | {fmt(r['frame_ratio'], 2)} | "
+            f"{r['diff_mean']:.1%} | {r['diff_p99']:.1%} | {'yes' if within else 'no'} | "
+            f"{EXPLANATIONS.get(r['name'], '') if not within else ('dark: a highlight on black' if r['dark'] else '')} |")
 
     def med(key):
         return statistics.median(r[key] for r in rows)
@@ -217,8 +300,23 @@ def write_report(path: Path, generated: dict, results: dict, rows: list) -> None
         f"- Fragment shader SPIR-V instructions (optimised): MaterialX {fmt(med('mx_frag_opt'), 0)}, "
         f"mxc {fmt(med('mxc_frag_opt'), 0)}; median ratio mxc / MaterialX {fmt(med('instr_ratio'), 2)}.",
         "",
-        "Not yet in this report (issue 6 is open): both shaders rendered in mxc's raster harness on the same "
-        "sphere, camera and light, with ms per frame and the image difference.",
+        f"- Frame time: MaterialX {fmt(med('mx_frame'))} ms, mxc {fmt(med('mxc_frame'))} ms; median ratio "
+        f"mxc / MaterialX {fmt(med('frame_ratio'), 2)}.",
+        f"- Image difference: median of the means {med('diff_mean'):.1%}, median 99th percentile "
+        f"{med('diff_p99'):.1%}; {sum(r['diff_mean'] <= TOLERANCE_MEAN and r['diff_p99'] <= TOLERANCE_P99 for r in rows)}"
+        f" of {len(rows)} materials within tolerance ({sum(r['dark'] for r in rows)} of them dark: a highlight "
+        "on black under one light without environment).",
+        "",
+        "## Findings",
+        "",
+        "- mxc generates in a small fraction of MaterialX's time, and its GLSL compiles several times faster "
+        "under glslang (about half as many lines, and only the lobes the material uses).",
+        "- mxc's fragment module grows under SPIRV-Tools' performance passes (inlining its library functions "
+        "at every call), while MaterialX's shrinks (its environment and unused code are dead-stripped): "
+        "after optimisation mxc's module is the larger. Frame times are nonetheless at or below MaterialX's "
+        "for most materials; the outlier is thin film (open_pbr_pearl).",
+        "- Where the images differ beyond tolerance the table says why; two of the causes are gaps in mxc "
+        "(coat darkening, Zeltner fuzz) and the others are deliberate.",
         "",
     ]
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -231,6 +329,8 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--build", default=os.environ.get("MXC_BUILD_DIR", str(ROOT / "build")))
     parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--size", type=int, default=256, help="image side in pixels (default 256)")
+    parser.add_argument("--frames", type=int, default=16, help="accumulated frames per image (default 16)")
     parser.add_argument("--report", default=str(ROOT / "generated" / "reports" / "performance.md"))
     parser.add_argument("--generate-only", metavar="MANIFEST", help=argparse.SUPPRESS)  # the venv half
     parser.add_argument("names", nargs="*", help="only documents whose name contains one of these")
@@ -256,15 +356,17 @@ def main() -> int:
                     "--generate-only", str(manifest), *args.names], check=True)
     generated = json.loads(manifest.read_text())
     results_path = work / "results.json"
-    subprocess.run([str(bench), str(manifest), str(results_path), "--repeat", str(args.repeat)], check=True)
+    images = ROOT / "out" / "materialx-compare"
+    subprocess.run([str(bench), str(manifest), str(results_path), "--repeat", str(args.repeat), "--size",
+                    str(args.size), "--frames", str(args.frames), "--images", str(images)], check=True)
     results = json.loads(results_path.read_text())
 
     rows = []
     by_name = {m["name"]: m for m in generated["materials"]}
     for r in results["materials"]:
         g = by_name[r["name"]]
-        ours, theirs = r["mxc"], r["materialx"]
-        for side, figures in (("mxc", ours), ("MaterialX", theirs)):
+        ours, theirs, render = r["mxc"], r["materialx"], r.get("render", {"error": "not rendered"})
+        for side, figures in (("mxc", ours), ("MaterialX", theirs), ("render", render)):
             errors = [figures.get("error")] + [figures.get(s, {}).get("error") for s in ("fragment", "vertex")]
             if any(errors):
                 print(f"materialx_compare: {r['name']} ({side}): {next(e for e in errors if e)}", file=sys.stderr)
@@ -280,7 +382,13 @@ def main() -> int:
             "instr_ratio": ours["fragment"]["optimized"] / max(theirs["fragment"]["optimized"], 1),
             "mx_vert": theirs["vertex"]["instructions"], "mx_vert_opt": theirs["vertex"]["optimized"],
             "mx_lines": theirs["glsl_lines"], "mxc_lines": ours["glsl_lines"],
+            "mx_frame": render["materialx_ms_per_frame"], "mxc_frame": render["mxc_ms_per_frame"],
+            "frame_ratio": render["mxc_ms_per_frame"] / max(render["materialx_ms_per_frame"], 1e-6),
+            "diff_mean": render["difference"]["mean"], "diff_p99": render["difference"]["p99"],
+            "dark": render["difference"].get("brightness", 1.0) < DARK,
         })
+        for warning in render.get("warnings", []) + render.get("validation", []):
+            print(f"materialx_compare: {r['name']}: {warning}", file=sys.stderr)
     write_report(Path(args.report), generated, results, rows)
     print(Path(args.report).read_text())
     return 0

@@ -268,6 +268,26 @@ TEST(StandardSurfaceLowering, SheenAndMetalAndCoat) {
   EXPECT_NE(gold.effect("metal"), nullptr);
 }
 
+TEST(StandardSurfaceLowering, SpecularIorIsNotRelativeToTheCoat) {
+  // Standard Surface "Layering" weights the specular BRDF by the coat's transmission but keeps
+  // specular_IOR against the ambient medium; OpenPBR (eq. specular_ior_ratio) takes it relative
+  // to the coat. With equal IORs the OpenPBR base specular is index-matched; Standard
+  // Surface's is not.
+  Lowered ss = lowerFile("corpus/materialx/examples/StandardSurface/standard_surface_carpaint.mtlx");
+  Lowered op = lowerFile("corpus/materialx/examples/OpenPbr/open_pbr_carpaint.mtlx");
+  auto specular = [](const ir::Material& m) {
+    const ir::Interface* found = nullptr;  // the dielectric below the coat (the last one lowered first)
+    for (const ir::Interface& i : m.interfaces) {
+      if (i.kind == ir::InterfaceKind::Dielectric && !found) found = &i;
+    }
+    return found;
+  };
+  ASSERT_NE(specular(ss.only()), nullptr);
+  ASSERT_NE(specular(op.only()), nullptr);
+  EXPECT_EQ(specular(ss.only())->iorReference, ir::IorReference::Ambient);
+  EXPECT_EQ(specular(op.only())->iorReference, ir::IorReference::MediumAbove);
+}
+
 TEST(PbrlibLowering, LayerAndMixBuildStacks) {
   Lowered l = lower(mtlx(
       "  <oren_nayar_diffuse_bsdf name=\"d\" type=\"BSDF\"/>\n"

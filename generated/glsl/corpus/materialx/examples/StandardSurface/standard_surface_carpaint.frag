@@ -56,7 +56,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.N = v4;
   lobe3.T = v8;
   lobe3.alpha = vec2(0.22627419, 0.11313709);
-  lobe3.eta = 1.0;
+  lobe3.eta = 1.5;
   lobe3.c0 = vec3(1.0);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);

@@ -70,7 +70,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.N = v14;
   lobe3.T = v24;
   lobe3.alpha = v23;
-  lobe3.eta = mix(1.5, 1.0, 0.1);
+  lobe3.eta = 1.5;
   lobe3.c0 = vec3(1.0);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);

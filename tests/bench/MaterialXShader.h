@@ -1,0 +1,51 @@
+#pragma once
+/// \file
+/// MaterialX's own generated shaders (VkShaderGenerator, vertex and pixel stages) run in mxc's
+/// raster harness: both stages compiled by glslang with reflection, the uniform blocks laid
+/// out from that reflection and filled by name (camera and light from the render settings,
+/// material inputs from the values MaterialX's generator reported), textures bound to their
+/// samplers, mesh attributes to the stage inputs. For the side-by-side comparison, and for
+/// any later test that holds a MaterialX-like accuracy tier to MaterialX's own images.
+
+#include <filesystem>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "compiler/spirv/SpirvCompiler.h"
+#include "runtime/Renderer.h"
+
+namespace mxc::bench {
+
+/// A value of MaterialX's public uniform block, as its generator printed it.
+struct MaterialXUniform {
+  std::string name;
+  std::string type;   ///< MaterialX type name: float, color3, filename, boolean, ...
+  std::string value;  ///< MaterialX value string; "" when the generator gave none
+};
+
+class MaterialXShader {
+ public:
+  /// Compiles both stages (with reflection). `uniforms` are the pixel stage's block values;
+  /// filenames are resolved against `folder`. Returns an error message instead.
+  static std::variant<MaterialXShader, std::string> load(const std::string& vertexGlsl, const std::string& pixelGlsl,
+                                                           std::vector<MaterialXUniform> uniforms,
+                                                           const std::filesystem::path& folder);
+
+  /// Renders the mesh with the settings' camera and directional lights (MaterialX has no
+  /// point light of the same units here, so the settings must hold directional ones only).
+  /// Warnings (unknown uniforms left at zero, unreadable textures) go to `warnings`.
+  rt::RenderResult render(rt::VulkanContext& context, rt::Renderer& renderer, const rt::Mesh& mesh,
+                          const rt::RenderSettings& settings, std::vector<std::string>& warnings) const;
+
+  const std::vector<uint32_t>& vertexSpirv() const { return vertex_; }
+  const std::vector<uint32_t>& pixelSpirv() const { return pixel_; }
+
+ private:
+  std::vector<uint32_t> vertex_, pixel_;
+  spirv::Reflection vertexInterface_, pixelInterface_;
+  std::vector<MaterialXUniform> uniforms_;
+  std::filesystem::path folder_;
+};
+
+}  // namespace mxc::bench
