@@ -232,18 +232,31 @@ void ClosureEmitter::slab(const ir::ScatterNode& n, const std::string& weight, c
                              mediumSlot(Slot::Absorption, "vec3(0.0)")),
                  medium->origin.location);
     }
+    if (top->kind == InterfaceKind::Dielectric) {
+      const ir::Param* ior = top->slots.find(Slot::Ior);
+      topIor = ior ? x_.param(*ior, "1.5") : "1.5";
+    }
     if (below) {
       // OpenPBR "Layering": the layers below receive what the top does not reflect, 1 - E(wo).
       const std::string albedo = var("e");
       lines_.add(fmt::format("  vec3 {0} = mxc_lobe_albedo({1}, mxc_to_local(mxc_frame({1}.N, {1}.T), wo));", albedo, l));
       through = fmt::format("(vec3(1.0) - {})", albedo);
+      const ir::Param* darkening = top->slots.find(Slot::Darkening);
+      const ir::Param* baseAlbedo = top->slots.find(Slot::BaseAlbedo);
+      const ir::Param* baseRoughness = top->slots.find(Slot::BaseRoughness);
+      if (darkening && baseAlbedo && baseRoughness && !isZero(x_.param(*darkening, "0.0"))) {
+        // OpenPBR "Darkening": the internal reflections of the coat darken what is under it
+        // (albedo scaling alone does not trap light), modulated by coat_darkening.
+        const std::string factor = var("dark");
+        lines_.add(fmt::format("  vec3 {} = mxc_coat_darkening({}, {}, {}, {}, dot(wo, {}.N));", factor,
+                               atLeast(topIor, 1e-3f), asVec3(x_.param(*baseAlbedo, "vec3(0.0)")),
+                               x_.param(*baseRoughness, "1.0"), x_.param(*darkening, "0.0"), l),
+                   darkening->origin.location);
+        through = product(through, factor);
+      }
     }
     normal = l + ".N";
     tangent = l + ".T";
-    if (top->kind == InterfaceKind::Dielectric) {
-      const ir::Param* ior = top->slots.find(Slot::Ior);
-      topIor = ior ? x_.param(*ior, "1.5") : "1.5";
-    }
   }
   Above under = above;
   std::string tauSlab;

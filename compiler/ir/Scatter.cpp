@@ -9,7 +9,8 @@ std::string_view slotName(Slot slot) {
       "ior",        "fresnel_scale", "reflection_tint", "transmission_tint", "alpha",      "normal",
       "tangent",    "color",         "roughness",       "f0",                "f82",        "f90",
       "exponent",   "extinction",    "complex_ior",     "anisotropy",        "absorption", "scattering",
-      "thickness",  "observed_albedo", "abbe_number",   "darkening",         "weight",     "luminance"};
+      "thickness",  "observed_albedo", "abbe_number",   "darkening",         "base_albedo",
+      "base_roughness", "weight",   "luminance"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<size_t>(Slot::Count), "every slot has a name");
   return names[static_cast<size_t>(slot)];
 }

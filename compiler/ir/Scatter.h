@@ -64,6 +64,8 @@ enum class Slot : uint8_t {
   ObservedAlbedo,    ///< vec3: multiple-scattering albedo a user asked for (subsurface_color)
   AbbeNumber,        ///< float: dispersion (OpenPBR "Translucent base"); absent or 0 means none
   Darkening,         ///< float: coat darkening control (OpenPBR "Darkening")
+  BaseAlbedo,        ///< vec3: a coat's estimate of the albedo under it, E_b (OpenPBR "Darkening")
+  BaseRoughness,     ///< float: a coat's estimate of the roughness under it, r_b (OpenPBR eq. base_roughness_estimate)
   Weight,            ///< float: a lobe scale MaterialX gives but physics does not (pbrlib `weight`)
   Luminance,         ///< float: emission luminance (nits)
   Count

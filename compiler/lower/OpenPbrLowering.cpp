@@ -50,6 +50,33 @@ struct OpenPbr {
 
   bool isConstant(const Param& x, float value) { return c.material.exprs.isConstantEqual(x.value, value); }
 
+  /// OpenPBR "Darkening" needs two properties of the base under the coat, estimated from the
+  /// parameters. E_b, its albedo at normal incidence: the metal's F0 = base_weight * base_color,
+  /// else the dielectric's diffuse albedo (base_weight * base_color, or subsurface_color as
+  /// subsurface_weight mixes it in).
+  ExprId darkeningBaseAlbedo() {
+    const ExprId metal = b.mul(clamped("base_color", 0.0f, 1.0f).value, clamped("base_weight", 0.0f, 1.0f).value);
+    const ExprId dielectric = b.lerp(metal, clamped("subsurface_color", 0.0f, 1.0f).value,
+                                     clamped("subsurface_weight", 0.0f, 1.0f).value);
+    return b.lerp(dielectric, metal, clamped("base_metalness", 0.0f, 1.0f).value);
+  }
+  /// r_b, its effective roughness: lerp(r_d, r_m, M) with r_m = r and
+  /// r_d = lerp(1, r, clamp(xi_s F_s, 0, 1)) (eqs. base_roughness_estimate and
+  /// dielectric_roughness_estimate), F_s the base interface's normal-incidence Fresnel under
+  /// the coat (IOR ratio specular_ior / coat_ior, inverted when below 1 as in eq.
+  /// specular_ior_ratio_with_tir_fix).
+  ExprId darkeningBaseRoughness() {
+    const ExprId r = clamped("specular_roughness", 0.0f, 1.0f).value;
+    // Both IORs kept >= 1e-3, so the ratio and its inverse are finite and positive.
+    const ExprId ratio = b.div(b.max(p("specular_ior").value, b.f(1e-3f)), b.max(p("coat_ior").value, b.f(1e-3f)));
+    const ExprId eta = b.max(ratio, b.div(b.f(1.0f), ratio));  // >= 1
+    const ExprId amplitude = b.div(b.sub(eta, b.f(1.0f)), b.add(eta, b.f(1.0f)));  // eta + 1 >= 2
+    const ExprId fs = b.mul(amplitude, amplitude);
+    const ExprId xiFs = b.clamp(b.mul(b.nonNegative(p("specular_weight").value), fs), b.f(0.0f), b.f(1.0f));
+    const ExprId rd = b.lerp(b.f(1.0f), r, xiFs);
+    return b.lerp(rd, r, clamped("base_metalness", 0.0f, 1.0f).value);
+  }
+
   /// The thin film of the base interfaces (OpenPBR "Thin-film iridescence"): thickness is given
   /// in micrometres; the IR keeps nanometres.
   ir::ThinFilm thinFilm() {
@@ -233,6 +260,8 @@ struct OpenPbr {
     coat.slots.set(Slot::Normal, p("geometry_coat_normal"));
     coat.slots.set(Slot::Tangent, p("geometry_coat_tangent"));
     coat.slots.set(Slot::Darkening, clamped("coat_darkening", 0.0f, 1.0f));
+    coat.slots.set(Slot::BaseAlbedo, {darkeningBaseAlbedo(), at("coat_darkening")});
+    coat.slots.set(Slot::BaseRoughness, {darkeningBaseRoughness(), at("coat_darkening")});
     Index coatMediumIndex = coatMedium(c, clamped("coat_color", 0.0f, 1.0f), at("coat_color"));
     Index coated = c.material.slab(c.material.addInterface(std::move(coat)), coatMediumIndex, emitting,
                                    clamped("coat_weight", 0.0f, 1.0f), at("coat_weight"));

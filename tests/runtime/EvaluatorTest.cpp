@@ -95,6 +95,31 @@ TEST(Furnace, SpecularWeightScalesF0) {
   expectNear(albedo[0].reflected.y, 0.02f, albedo[0].reflectedError.y, 1e-5f, "F0'");
 }
 
+// OpenPBR "Darkening": a Lambertian base (albedo 0.5, no base specular) under a smooth clear
+// coat of IOR 1.5, seen at normal incidence. The coat reflects F = 0.04; the base gets
+// (1 - F) E_b Delta with Delta = (1 - K) / (1 - E_b K) and K = K_r = 1 - (1 - E_F) / 1.5^2 =
+// 0.59633 (E_F = 0.091776, the hemispherical Fresnel average; r_b = 1 for a base without
+// specular). So E_c = 0.04 + 0.48 * 0.57515 = 0.31607 (eq. interfaced_lambertian_albedo).
+// coat_darkening 0 boosts the base back: E_c = 0.04 + 0.48 = 0.52 (eq. undarkened_coat_albedo).
+TEST(Furnace, CoatDarkeningFollowsTheInterfacedLambertian) {
+  for (const auto& [darkening, expected] : {std::pair{1.0f, 0.31607f}, std::pair{0.0f, 0.52f}}) {
+    Context context;
+    ir::Material m = single(
+        context, openPbr(fmt::format("    <input name=\"base_color\" type=\"color3\" value=\"0.5, 0.5, 0.5\" />\n"
+                                     "    <input name=\"specular_weight\" type=\"float\" value=\"0\" />\n"
+                                     "    <input name=\"coat_weight\" type=\"float\" value=\"1\" />\n"
+                                     "    <input name=\"coat_roughness\" type=\"float\" value=\"0\" />\n"
+                                     "    <input name=\"coat_ior\" type=\"float\" value=\"1.5\" />\n"
+                                     "    <input name=\"coat_darkening\" type=\"float\" value=\"{}\" />\n",
+                                     darkening)));
+    std::vector<rt::Albedo> albedo = furnace(m, {viewAt(0)}, 262144);
+    ASSERT_EQ(albedo.size(), 1u);
+    // Slack: the 16-point Fresnel average (3e-4 in E_F) and the tabulated coat albedo.
+    expectNear(albedo[0].total().y, expected, albedo[0].reflectedError.y, 2e-3f,
+               fmt::format("coat_darkening {}", darkening));
+  }
+}
+
 // 2.6: thin film on a smooth dielectric (air / film 1.4 / base 1.5), at normal incidence.
 TEST(Furnace, ThinFilmMatchesAiryAnchors) {
   struct Case {
