@@ -244,13 +244,14 @@ void ClosureEmitter::slab(const ir::ScatterNode& n, const std::string& weight, c
       const ir::Param* darkening = top->slots.find(Slot::Darkening);
       const ir::Param* baseAlbedo = top->slots.find(Slot::BaseAlbedo);
       const ir::Param* baseRoughness = top->slots.find(Slot::BaseRoughness);
-      if (darkening && baseAlbedo && baseRoughness && !isZero(x_.param(*darkening, "0.0"))) {
+      const std::string delta = darkening ? x_.param(*darkening, "0.0") : "0.0";
+      if (baseAlbedo && baseRoughness && !isZero(delta)) {
         // OpenPBR "Darkening": the internal reflections of the coat darken what is under it
         // (albedo scaling alone does not trap light), modulated by coat_darkening.
         const std::string factor = var("dark");
         lines_.add(fmt::format("  vec3 {} = mxc_coat_darkening({}, {}, {}, {}, dot(wo, {}.N));", factor,
                                atLeast(topIor, 1e-3f), asVec3(x_.param(*baseAlbedo, "vec3(0.0)")),
-                               x_.param(*baseRoughness, "1.0"), x_.param(*darkening, "0.0"), l),
+                               x_.param(*baseRoughness, "1.0"), delta, l),
                    darkening->origin.location);
         through = product(through, factor);
       }

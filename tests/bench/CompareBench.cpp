@@ -71,6 +71,7 @@ std::string readText(const fs::path& path) {
 
 /// Instruction counts of one GLSL stage, plain and optimised, and the glslang + validation time.
 struct ModuleFigures {
+  std::vector<uint32_t> words;  ///< the plain module (empty on failure)
   size_t instructions = 0;
   size_t optimized = 0;
   double compileMs = 0.0;
@@ -90,6 +91,7 @@ ModuleFigures compileStage(mxc::spirv::GlslSource source, int repeat) {
       return out;
     }
     out.instructions = mxc::spirv::instructionCount(*words);
+    out.words = std::move(*words);
   }
   out.compileMs = median(times);
   mxc::Diagnostics diagnostics;
@@ -109,8 +111,10 @@ json figures(const ModuleFigures& m) {
 }
 
 /// mxc from the file to GLSL, timed (median of `repeat`), then the GLSL's SPIR-V figures.
+/// `shader` and `words` receive the raster shader and its plain module, for rendering.
 json measureMxc(mxc::lib::LibraryStack& libraries, mxc::SourceManager& sources, const fs::path& file,
-                const std::string& material, int repeat, mxc::glsl::MaterialShader& shader) {
+                const std::string& material, int repeat, mxc::glsl::MaterialShader& shader,
+                std::vector<uint32_t>& words) {
   std::vector<double> frontEnd;
   for (int r = 0; r < repeat; ++r) {
     mxc::Diagnostics diagnostics;
@@ -129,7 +133,8 @@ json measureMxc(mxc::lib::LibraryStack& libraries, mxc::SourceManager& sources, 
     shader = mxc::glsl::buildMaterialShader(*chosen, mxc::glsl::ShaderKind::Raster);
     frontEnd.push_back(msSince(start));
   }
-  const ModuleFigures fragment = compileStage(shader.glsl, repeat);
+  ModuleFigures fragment = compileStage(shader.glsl, repeat);
+  words = std::move(fragment.words);
   return {{"to_glsl_ms", median(frontEnd)},
           {"glsl_lines", shader.glsl.origins.size()},
           {"fragment", figures(fragment)},
@@ -275,14 +280,13 @@ static int run(int argc, char** argv) {
     std::fprintf(stderr, "compare_bench: %s\n", name.c_str());
     json row = {{"name", name}};
     mxc::glsl::MaterialShader shader;
+    std::vector<uint32_t> words;
     row["mxc"] = measureMxc(libraries, sources, entry.at("mtlx").get<std::string>(), entry.value("material", ""), repeat,
-                            shader);
+                            shader, words);
     row["materialx"] = measureMaterialX(entry, repeat);
-    if (!row["mxc"].contains("error")) {
-      mxc::Diagnostics d;
-      auto words = mxc::spirv::compile(shader.glsl, {}, d);
+    if (!words.empty()) {  // else row["mxc"] says why
       try {
-        row["render"] = words ? renderBoth(rig, entry, shader, *words, images) : json{{"error", d.format()}};
+        row["render"] = renderBoth(rig, entry, shader, words, images);
       } catch (const std::exception& e) {
         row["render"] = {{"error", e.what()}};
       }

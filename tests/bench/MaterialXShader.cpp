@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "compiler/document/Value.h"
 #include "runtime/ImageIO.h"
 
 namespace mxc::bench {
@@ -15,20 +16,15 @@ namespace {
 
 using spirv::Reflection;
 
-/// The components of a MaterialX value string ("0.8, 0.8, 0.8", "true", "3").
-std::vector<float> components(const std::string& value) {
-  if (value == "true") return {1.0f};
-  if (value == "false") return {0.0f};
-  std::vector<float> out;
-  size_t start = 0;
-  while (start <= value.size()) {
-    size_t end = value.find(',', start);
-    if (end == std::string::npos) end = value.size();
-    const std::string item = value.substr(start, end - start);
-    if (item.find_first_not_of(" \t") != std::string::npos) out.push_back(std::strtof(item.c_str(), nullptr));
-    start = end + 1;
-  }
-  return out;
+/// The float components of a MaterialX value string of the given type, from the document
+/// model's parser; empty for non-numeric types and malformed strings.
+std::vector<float> numericValue(const MaterialXUniform& u) {
+  auto parsed = doc::parseValue(doc::valueTypeOf(u.type), u.value);
+  const doc::Value* v = std::get_if<doc::Value>(&parsed);
+  if (!v) return {};
+  if (v->type() == doc::ValueType::Boolean) return {v->as<bool>() ? 1.0f : 0.0f};
+  if (v->type() == doc::ValueType::Integer) return {static_cast<float>(v->as<int32_t>())};
+  return v->components();
 }
 
 /// Writes `values` into a std140 block member: scalars and vectors packed, matrix columns 16
@@ -81,9 +77,19 @@ std::variant<MaterialXShader, std::string> MaterialXShader::load(const std::stri
   if (!vertex || !pixel) return diagnostics.format();
   s.vertex_ = std::move(*vertex);
   s.pixel_ = std::move(*pixel);
-  s.uniforms_ = std::move(uniforms);
+  for (MaterialXUniform& u : uniforms) {
+    std::vector<float> numeric = numericValue(u);
+    if (!numeric.empty()) s.values_[u.name] = std::move(numeric);
+    std::string name = u.name;
+    s.uniforms_[name] = std::move(u);
+  }
   s.folder_ = folder;
   return s;
+}
+
+const std::string* MaterialXShader::valueOf(const std::string& name) const {
+  auto it = uniforms_.find(name);
+  return it == uniforms_.end() ? nullptr : &it->second.value;
 }
 
 rt::RenderResult MaterialXShader::render(rt::VulkanContext& context, rt::Renderer& renderer, const rt::Mesh& mesh,
@@ -150,11 +156,11 @@ rt::RenderResult MaterialXShader::render(rt::VulkanContext& context, rt::Rendere
     // colour spaces itself, so texels go up as stored, bottom row first (MaterialX's v is up
     // and its GLSL samples without flipping).
     rt::RgbaImage pixels{1, 1, {0.0f, 0.0f, 0.0f, 1.0f}};
-    auto it = std::find_if(uniforms_.begin(), uniforms_.end(), [&](const MaterialXUniform& u) { return u.name == name; });
-    if (it == uniforms_.end() || it->value.empty()) {
+    const std::string* file = valueOf(name);
+    if (!file || file->empty()) {
       warnings.push_back(fmt::format("sampler '{}' has no file: black", name));
     } else {
-      std::filesystem::path path = it->value;
+      std::filesystem::path path = *file;
       if (path.is_relative()) path = folder_ / path;
       auto read = rt::readImage(path);
       if (auto* error = std::get_if<std::string>(&read)) {
@@ -176,9 +182,8 @@ rt::RenderResult MaterialXShader::render(rt::VulkanContext& context, rt::Rendere
       const std::string base = name.size() > 5 && name.compare(name.size() - 5, 5, "_file") == 0
                                    ? name.substr(0, name.size() - 5)
                                    : name;
-      auto mode = std::find_if(uniforms_.begin(), uniforms_.end(),
-                               [&](const MaterialXUniform& u) { return u.name == base + "_" + axis + "addressmode"; });
-      const int m = mode == uniforms_.end() ? 2 : std::atoi(mode->value.c_str());
+      const std::string* mode = valueOf(base + "_" + axis + "addressmode");
+      const int m = mode ? std::atoi(mode->c_str()) : 2;
       return m == 0 ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER
              : m == 1 ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE
              : m == 3 ? VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT
@@ -198,7 +203,8 @@ rt::RenderResult MaterialXShader::render(rt::VulkanContext& context, rt::Rendere
     set.bind(static_cast<uint32_t>(binding), spare.back());
   }
 
-  // Values that do not change over frames: material inputs, lights, environment off.
+  // Every block, each frame: the camera from `view` (identity before the first frame),
+  // material inputs from their parsed values, lights, environment off.
   const size_t lights = settings.lights.size();
   auto fill = [&](const rt::FrameView* view) {
     for (BlockBuffer& b : blocks) {
@@ -229,9 +235,10 @@ rt::RenderResult MaterialXShader::render(rt::VulkanContext& context, rt::Rendere
             else if (field == "intensity") v = {l.intensity};
           }
         } else {
-          auto it = std::find_if(uniforms_.begin(), uniforms_.end(), [&](const MaterialXUniform& u) { return u.name == n; });
-          if (it != uniforms_.end()) {
-            v = components(it->value);
+          if (auto it = values_.find(n); it != values_.end()) {
+            v = it->second;
+          } else if (uniforms_.count(n)) {
+            // A value MaterialX gave that is not numeric (a string): nothing to write.
           } else if (!view && n.rfind("u_", 0) == 0) {  // shader-typed inputs' members stay zero, unused
             warnings.push_back(fmt::format("MaterialX uniform '{}' has no value here: zero", n));
           }

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <string>
+#include <unordered_map>
 #include <variant>
 #include <vector>
 
@@ -44,7 +45,13 @@ class MaterialXShader {
  private:
   std::vector<uint32_t> vertex_, pixel_;
   spirv::Reflection vertexInterface_, pixelInterface_;
-  std::vector<MaterialXUniform> uniforms_;
+  /// The value string of a uniform MaterialX gave one (filenames, address modes), or null.
+  const std::string* valueOf(const std::string& name) const;
+
+  std::unordered_map<std::string, MaterialXUniform> uniforms_;  ///< by name
+  /// Numeric uniforms' components, parsed once from their value strings by the document
+  /// model's parser (row by row for matrices; 0 or 1 for booleans).
+  std::unordered_map<std::string, std::vector<float>> values_;
   std::filesystem::path folder_;
 };
 
