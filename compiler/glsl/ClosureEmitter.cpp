@@ -20,7 +20,7 @@ std::string lobeKind(const ir::Interface& f) {
     case InterfaceKind::Burley: return "MXC_LOBE_BURLEY";
     case InterfaceKind::DiffuseTransmission: return "MXC_LOBE_TRANSLUCENT";
     case InterfaceKind::DiffuseSheet: return "MXC_LOBE_SHEET";
-    case InterfaceKind::Sheen: return "MXC_LOBE_SHEEN";
+    case InterfaceKind::Sheen: return f.sheenModel == ir::SheenModel::Zeltner ? "MXC_LOBE_FUZZ" : "MXC_LOBE_SHEEN";
   }
   return "MXC_LOBE_EON";
 }
@@ -239,7 +239,7 @@ void ClosureEmitter::slab(const ir::ScatterNode& n, const std::string& weight, c
     if (below) {
       // OpenPBR "Layering": the layers below receive what the top does not reflect, 1 - E(wo).
       const std::string albedo = var("e");
-      lines_.add(fmt::format("  vec3 {0} = mxc_lobe_albedo({1}, mxc_to_local(mxc_frame({1}.N, {1}.T), wo));", albedo, l));
+      lines_.add(fmt::format("  vec3 {0} = mxc_lobe_layer_albedo({1}, mxc_to_local(mxc_frame({1}.N, {1}.T), wo));", albedo, l));
       through = fmt::format("(vec3(1.0) - {})", albedo);
       const ir::Param* darkening = top->slots.find(Slot::Darkening);
       const ir::Param* baseAlbedo = top->slots.find(Slot::BaseAlbedo);

@@ -151,6 +151,7 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   w.file("library/mxc_microfacet.glsl");
   w.file("library/mxc_fresnel.glsl");
   w.file("library/mxc_sheen.glsl");
+  if (iface.features.lobeKinds.count("MXC_LOBE_FUZZ")) w.file("library/mxc_fuzz.glsl");
   w.file("library/mxc_geometry.glsl");
   if (exprs.usesProcedural()) w.file("library/mxc_procedural.glsl");
   w.file("library/mxc_lobes.glsl");

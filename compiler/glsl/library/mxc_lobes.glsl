@@ -10,7 +10,8 @@ const int MXC_LOBE_EON = 5;          // energy-preserving Oren-Nayar
 const int MXC_LOBE_BURLEY = 6;
 const int MXC_LOBE_TRANSLUCENT = 7;  // diffuse transmission
 const int MXC_LOBE_SHEET = 8;        // thin-walled diffuse reflection and transmission
-const int MXC_LOBE_SHEEN = 9;
+const int MXC_LOBE_SHEEN = 9;        // Estevez & Kulla 2017
+const int MXC_LOBE_FUZZ = 10;        // Zeltner et al. 2022 (OpenPBR fuzz)
 
 // Dielectric lobe modes (bits of MxcLobe.mode).
 const int MXC_REFLECT = 1;
@@ -228,11 +229,27 @@ vec3 mxc_lobe_albedo(MxcLobe l, vec3 wo) {
     return clamp((f0 * ab.x + f90 * ab.y) * tint, 0.0, 1.0);
   }
   if (l.kind == MXC_LOBE_SHEEN) return l.c0 * min(mxc_table(mu, l.p0).z, 1.0);
+#ifdef MXC_HAS_FUZZ
+  if (l.kind == MXC_LOBE_FUZZ) return l.c0 * mxc_fuzz_albedo(mu, mxc_fuzz_roughness(l.p0));
+#endif
 #if defined(MXC_HAS_DIFFUSE) || defined(MXC_HAS_EON) || defined(MXC_HAS_SHEET)
   if (l.kind == MXC_LOBE_DIFFUSE) return l.c0 * mxc_fon_albedo(l.p0, mu);
 #endif
   if (l.kind == MXC_LOBE_SHEET) return l.c0;
   return l.c0;  // EON (albedo ~ rho), Burley, translucent
+}
+
+// What a lobe takes from the layers under it (albedo scaling, OpenPBR "Layering"): its albedo,
+// except that a sheen or fuzz takes it untinted. Standard Surface "Sheen" passes
+// 1 - sheen reflectance(sheen_brdf) and OpenPBR "Fuzz" 1 - F E_fuzz: the colour tints what the
+// fibres reflect, not what passes between them.
+vec3 mxc_lobe_layer_albedo(MxcLobe l, vec3 wo) {
+  if (l.kind == MXC_LOBE_SHEEN || l.kind == MXC_LOBE_FUZZ) {
+    MxcLobe white = l;
+    white.c0 = vec3(1.0);
+    return mxc_lobe_albedo(white, wo);
+  }
+  return mxc_lobe_albedo(l, wo);
 }
 
 vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi) {
@@ -285,6 +302,10 @@ vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi) {
       // grazing at low roughness; the lobe is scaled down by its tabulated albedo there.
       return mxc_sheen_unnormalized(l.c0, l.p0, wo, wi) / max(mxc_table(clamp(wo.z, 0.0, 1.0), l.p0).z, 1.0);
 #endif
+#ifdef MXC_HAS_FUZZ
+    case MXC_LOBE_FUZZ:
+      return mxc_fuzz_eval(l.c0, l.p0, wo, wi);
+#endif
     default:
       return vec3(0.0);
   }
@@ -333,6 +354,10 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi) {
       float share = wo.z * wi.z > 0.0 ? 0.5 * (1.0 - g) : 0.5 * (1.0 + g);
       return share * abs(wi.z) * MXC_INV_PI;
     }
+#ifdef MXC_HAS_FUZZ
+    case MXC_LOBE_FUZZ:
+      return mxc_fuzz_pdf(l.p0, wo, wi);
+#endif
     default:
       return wo.z > 0.0 && wi.z > 0.0 ? wi.z * MXC_INV_PI : 0.0;  // cosine sampling
   }
@@ -416,6 +441,16 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u) {
       s.valid = s.pdf > 0.0;
       return s;
     }
+#ifdef MXC_HAS_FUZZ
+    case MXC_LOBE_FUZZ: {
+      if (wo.z <= 0.0) return s;
+      s.wi = mxc_fuzz_sample(l.p0, wo, u.xy);  // exact importance sampling of the LTC
+      s.value = mxc_lobe_eval(l, wo, s.wi);
+      s.pdf = mxc_lobe_pdf(l, wo, s.wi);
+      s.valid = s.pdf > 0.0;
+      return s;
+    }
+#endif
     default: {
       if (wo.z <= 0.0) return s;
       s.wi = mxc_sample_cosine(u.xy);

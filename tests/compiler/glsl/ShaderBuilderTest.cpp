@@ -55,7 +55,12 @@ TEST(ShaderBuilder, ThinFilmAndLobeKindsCompiledOnlyWhenUsed) {
                                                "    <input name=\"thin_film_thickness\" type=\"float\" value=\"0.5\" />\n"
                                                "    <input name=\"fuzz_weight\" type=\"float\" value=\"1\" />\n"));
   EXPECT_EQ(count(film.glsl.text, "#define MXC_THIN_FILM"), 1u);
-  EXPECT_EQ(count(film.glsl.text, "#define MXC_HAS_SHEEN"), 1u);
+  // OpenPBR fuzz is Zeltner's LTC lobe, not the Estevez-Kulla sheen; its library file comes only
+  // with it.
+  EXPECT_EQ(count(film.glsl.text, "#define MXC_HAS_SHEEN"), 0u);
+  EXPECT_EQ(count(film.glsl.text, "#define MXC_HAS_FUZZ"), 1u);
+  EXPECT_EQ(count(film.glsl.text, "float mxc_fuzz_albedo("), 1u);
+  EXPECT_EQ(count(plain.glsl.text, "float mxc_fuzz_albedo("), 0u);
   // Procedural library code only for procedural nodes.
   EXPECT_EQ(count(plain.glsl.text, "mxc_noise_float("), 0u);
 }

@@ -5,7 +5,7 @@
 #define MXC_MAX_LOBES 3
 #define MXC_HAS_DIELECTRIC
 #define MXC_HAS_EON
-#define MXC_HAS_SHEEN
+#define MXC_HAS_FUZZ
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
@@ -15,6 +15,7 @@
 #include "library/mxc_microfacet.glsl"
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_sheen.glsl"
+#include "library/mxc_fuzz.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
@@ -32,7 +33,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   c.emission = vec3(0.0);
   c.transparency = vec3(0.0);
   MxcLobe lobe0;
-  lobe0.kind = MXC_LOBE_SHEEN;
+  lobe0.kind = MXC_LOBE_FUZZ;
   lobe0.mode = 1;
   lobe0.weight = vec3(1.0);
   lobe0.N = v5;
@@ -48,7 +49,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
   c.lobes[0] = lobe0;
-  vec3 e1 = mxc_lobe_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
+  vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 w2 = (vec3(1.0) - e1);
   MxcLobe lobe3;
   lobe3.kind = MXC_LOBE_DIELECTRIC;
@@ -67,7 +68,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.tau = vec3(0.0);
   lobe3.tauEta = 1.0;
   c.lobes[1] = lobe3;
-  vec3 e4 = mxc_lobe_albedo(lobe3, mxc_to_local(mxc_frame(lobe3.N, lobe3.T), wo));
+  vec3 e4 = mxc_lobe_layer_albedo(lobe3, mxc_to_local(mxc_frame(lobe3.N, lobe3.T), wo));
   vec3 w5 = (w2 * (vec3(1.0) - e4));
   MxcLobe lobe6;
   lobe6.kind = MXC_LOBE_EON;

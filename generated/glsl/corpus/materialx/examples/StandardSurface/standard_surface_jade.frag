@@ -49,7 +49,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe1.tau = vec3(0.0);
   lobe1.tauEta = 1.0;
   c.lobes[0] = lobe1;
-  vec3 e2 = mxc_lobe_albedo(lobe1, mxc_to_local(mxc_frame(lobe1.N, lobe1.T), wo));
+  vec3 e2 = mxc_lobe_layer_albedo(lobe1, mxc_to_local(mxc_frame(lobe1.N, lobe1.T), wo));
   vec3 w3 = ((vec3(1.0) - m0) * (vec3(1.0) - e2));
   MxcLobe lobe4;
   lobe4.kind = MXC_LOBE_DIFFUSE;
@@ -85,7 +85,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe5.tau = vec3(0.0);
   lobe5.tauEta = 1.0;
   c.lobes[2] = lobe5;
-  vec3 e6 = mxc_lobe_albedo(lobe5, mxc_to_local(mxc_frame(lobe5.N, lobe5.T), wo));
+  vec3 e6 = mxc_lobe_layer_albedo(lobe5, mxc_to_local(mxc_frame(lobe5.N, lobe5.T), wo));
   MxcLobe lobe7;
   lobe7.kind = MXC_LOBE_EON;
   lobe7.mode = 0;
