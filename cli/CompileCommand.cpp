@@ -29,6 +29,7 @@ struct CompileOptions {
 glsl::ShaderKind kindOf(const std::string& stage) {
   if (stage == "comp") return glsl::ShaderKind::Eval;
   if (stage == "furnace") return glsl::ShaderKind::Furnace;
+  if (stage == "sample") return glsl::ShaderKind::Sample;
   return glsl::ShaderKind::Raster;
 }
 
@@ -98,8 +99,8 @@ void registerCompile(CLI::App& app, int& exitCode) {
   command->add_option("--glsl", options->glsl, "Write the GLSL here");
   command->add_option("--stage", options->stage,
                       "frag: fragment shader of the renderer; comp: compute shader evaluating f cos; furnace: compute "
-                      "shader of the directional albedo")
-      ->check(CLI::IsMember({"frag", "comp", "furnace"}));
+                      "shader of the directional albedo; sample: compute shader drawing sample directions")
+      ->check(CLI::IsMember({"frag", "comp", "furnace", "sample"}));
   command->add_flag("-O,--optimize", options->optimize, "Optimise the module with SPIRV-Tools' performance passes");
   command->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");
   addMaterialOptions(*command, options->materials);

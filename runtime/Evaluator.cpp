@@ -96,4 +96,33 @@ std::vector<Albedo> FurnaceEstimator::estimate(const std::vector<glm::vec3>& vie
   return result;
 }
 
+std::vector<std::vector<SampledDirection>> DirectionSampler::sample(const std::vector<glm::vec3>& views,
+                                                                   uint32_t samples, uint32_t seed) {
+  if (views.empty()) return {};
+  const size_t n = views.size();
+  const uint32_t perInvocation = std::max<uint32_t>((samples + kGroup - 1) / kGroup, 1);
+  const size_t perView = size_t{perInvocation} * kGroup;
+  Buffer in = context_.createBuffer(n * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  Buffer out = context_.createBuffer(n * perView * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  auto* dirs = static_cast<glm::vec4*>(in.mapped);
+  for (size_t i = 0; i < n; ++i) dirs[i] = glm::vec4(views[i], 0.0f);
+  run(in, out, static_cast<uint32_t>(n), static_cast<uint32_t>(n), perInvocation, seed);
+  const auto* drawn = static_cast<const glm::vec4*>(out.mapped);
+  std::vector<std::vector<SampledDirection>> result(n);
+  for (size_t a = 0; a < n; ++a) {
+    result[a].resize(perView);
+    for (size_t i = 0; i < perView; ++i) {
+      const glm::vec4& d = drawn[a * perView + i];
+      // The stage writes kind 0, 1 or 2 exactly (mxc_sample.comp).
+      result[a][i].wi = glm::vec3(d);
+      result[a][i].kind = d.w > 1.5f   ? SampledDirection::Kind::Delta
+                          : d.w > 0.5f ? SampledDirection::Kind::Continuous
+                                       : SampledDirection::Kind::None;
+    }
+  }
+  context_.destroy(in);
+  context_.destroy(out);
+  return result;
+}
+
 }  // namespace mxc::rt

@@ -68,4 +68,20 @@ class FurnaceEstimator : MaterialKernel {
   std::vector<Albedo> estimate(const std::vector<glm::vec3>& views, uint32_t samples, uint32_t seed = 1);
 };
 
+/// One direction drawn by the closure's sampling.
+struct SampledDirection {
+  enum class Kind : uint8_t { None, Continuous, Delta };
+  glm::vec3 wi{0.0f};
+  Kind kind = Kind::None;  ///< Continuous: distributed with the closure's pdf; None: the draw failed
+};
+
+class DirectionSampler : MaterialKernel {
+ public:
+  /// `spirv`: the material's shader of kind glsl::ShaderKind::Sample.
+  using MaterialKernel::MaterialKernel;
+  /// `samples` directions per view (rounded up to a multiple of 64), view by view.
+  std::vector<std::vector<SampledDirection>> sample(const std::vector<glm::vec3>& views, uint32_t samples,
+                                                    uint32_t seed = 1);
+};
+
 }  // namespace mxc::rt

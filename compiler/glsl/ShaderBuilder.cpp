@@ -118,6 +118,7 @@ std::string_view shaderKindName(ShaderKind kind) {
     case ShaderKind::Raster: return "raster";
     case ShaderKind::Eval: return "eval";
     case ShaderKind::Furnace: return "furnace";
+    case ShaderKind::Sample: return "sample";
   }
   return "raster";
 }
@@ -134,8 +135,9 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
 
   Writer w(options.expandLibrary);
   const std::string_view purpose = kind == ShaderKind::Raster  ? "fragment shader of the sphere renderer"
-                                   : kind == ShaderKind::Eval ? "compute shader evaluating f cos for direction pairs"
-                                                               : "compute shader estimating the directional albedo";
+                                   : kind == ShaderKind::Eval    ? "compute shader evaluating f cos for direction pairs"
+                                   : kind == ShaderKind::Furnace ? "compute shader estimating the directional albedo"
+                                                                 : "compute shader drawing sample directions";
   header(w, material, purpose);
   w.line(fmt::format("#define MXC_MAX_LOBES {}", std::max(iface.features.lobes, 1)));
   for (const std::string& kindName : iface.features.lobeKinds) {
@@ -189,6 +191,11 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
       w.file("stages/mxc_batch.glsl");
       w.file("stages/mxc_furnace.comp");
       out.glsl = w.finish(spirv::Stage::Compute, fmt::format("material {} (furnace compute)", material.name));
+      break;
+    case ShaderKind::Sample:
+      w.file("stages/mxc_batch.glsl");
+      w.file("stages/mxc_sample.comp");
+      out.glsl = w.finish(spirv::Stage::Compute, fmt::format("material {} (sample compute)", material.name));
       break;
   }
   return out;

@@ -19,6 +19,7 @@ enum class ShaderKind : uint8_t {
   Raster,   ///< fragment shader of the sphere renderer (lights, environment, accumulation)
   Eval,     ///< compute: f(wo, wi) |cos theta_i| for a batch of direction pairs
   Furnace,  ///< compute: directional albedo (reflected and transmitted) by Monte Carlo
+  Sample,   ///< compute: directions drawn by the closure's sampling (to check them against its pdf)
 };
 
 std::string_view shaderKindName(ShaderKind kind);

@@ -118,7 +118,7 @@ const HardCase kCases[] = {
   {"ss_coat_ior_1", "standard", R"(<input name="coat" type="float" value="1" /><input name="coat_IOR" type="float" value="1" />)", Energy::Bounded,
    "an index-matched coat"},
   {"fuzz_roughness_0", "openpbr", R"(<input name="fuzz_weight" type="float" value="1" /><input name="fuzz_roughness" type="float" value="0" />)", Energy::Bounded,
-   "the fuzz LTC at its clamp r = 0.01: M^-1 has a = 8e-5 at grazing, a lobe peaking at 1 / (pi a^2) (Zeltner et al. 2022)"},
+   "the fuzz LTC at its clamp r = 0.01: M^-1 has a = 8e-5 at grazing, a density peaking near 0.1 / a at the horizon (Zeltner et al. 2022)"},
   {"ss_sheen_roughness_0", "standard", R"(<input name="sheen" type="float" value="1" /><input name="sheen_roughness" type="float" value="0" />)", Energy::Bounded,
    "the sheen distribution's 1/r exponent at r = 0 (Estevez & Kulla 2017; r clamped to 0.01)"},
   {"ss_diffuse_roughness_1", "standard", R"(<input name="diffuse_roughness" type="float" value="1" /><input name="base_color" type="color3" value="1, 1, 1" /><input name="specular" type="float" value="0" />)", Energy::Bounded,

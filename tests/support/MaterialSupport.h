@@ -108,6 +108,16 @@ inline std::vector<rt::Albedo> furnace(const ir::Material& material, const std::
   return estimator.estimate(views, samples, 7);
 }
 
+/// Directions drawn by the material's closure sampling at each view.
+inline std::vector<std::vector<rt::SampledDirection>> sampleDirections(const ir::Material& material,
+                                                                      const std::vector<glm::vec3>& views,
+                                                                      uint32_t samples, uint32_t seed = 7) {
+  Prepared p = prepare(material, glsl::ShaderKind::Sample);
+  if (!p.ok()) return {};
+  rt::DirectionSampler sampler(Device::get().context, Device::get().tables, *p.resources, p.shader.interface, p.words);
+  return sampler.sample(views, samples, seed);
+}
+
 /// f(wo, wi) |cos| and the pdf for direction pairs.
 inline std::vector<glm::vec4> evaluate(const ir::Material& material, const std::vector<rt::DirectionPair>& pairs) {
   Prepared p = prepare(material, glsl::ShaderKind::Eval);
