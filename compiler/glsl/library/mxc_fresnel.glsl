@@ -89,20 +89,19 @@ float mxc_modulated_eta(float eta, float xi) {
 // spectral integration done by their Gaussian fit of the CIE XYZ sensitivities, and the grey
 // incoherent term kept apart so that a thick film averages to the incoherent limit.
 
-// Their fit of the XYZ sensitivity at optical path difference `opd` (nm), phase shift `shift`,
-// normalised so that a zero difference gives (1, 1, 1); one component c (0: X, 1: Y, 2: Z),
-// since each channel's interference has its own base phase.
-float mxc_film_sensitivity(float opd, float shift, int c) {
-  float phase = 2.0 * MXC_PI * opd * 1e-9;
-  const vec3 val = vec3(5.4856e-13, 4.4201e-13, 5.2481e-13);
-  const vec3 pos = vec3(1.6810e+06, 1.7953e+06, 2.2084e+06);
-  const vec3 var = vec3(4.3278e+09, 9.3046e+09, 6.6121e+09);
-  float v = val[c] * sqrt(2.0 * MXC_PI * var[c]) * cos(pos[c] * phase + shift) * exp(-phase * phase * var[c]);
-  if (c == 0) {
-    v += 9.7470e-14 * sqrt(2.0 * MXC_PI * 4.5282e+09) * cos(2.2399e+06 * phase + shift) * exp(-4.5282e+09 * phase * phase);
-  }
-  return v / 1.0685e-7;
-}
+// Their fit of the XYZ sensitivity: for an optical path difference opd (nm) and a phase shift
+// psi, channel c's interference term is sum_j val_j sqrt(2 pi var_j) cos(pos_j phi + psi)
+// exp(-phi^2 var_j), phi = 2 pi 1e-9 opd, over one Gaussian per channel plus a second one for X,
+// normalised by 1.0685e-7 so that a zero difference gives (1, 1, 1). Order m of the Airy series
+// has m opd and m psi, so its cosine is cos(m theta) with theta = pos phi + psi and its Gaussian
+// exp(-phi^2 var)^(m^2): both follow from order 1 without more transcendentals (mxc_thin_film).
+const vec3 MXC_FILM_VAL = vec3(5.4856e-13, 4.4201e-13, 5.2481e-13);
+const vec3 MXC_FILM_POS = vec3(1.6810e+06, 1.7953e+06, 2.2084e+06);
+const vec3 MXC_FILM_VAR = vec3(4.3278e+09, 9.3046e+09, 6.6121e+09);
+const float MXC_FILM_X2_VAL = 9.7470e-14;
+const float MXC_FILM_X2_POS = 2.2399e+06;
+const float MXC_FILM_X2_VAR = 4.5282e+09;
+const float MXC_FILM_NORM = 1.0685e-7;
 
 // XYZ to linear RGB with the equal-energy white point (CIE RGB), so that a grey stays grey
 // (each row sums to 1). GLSL matrices are given column by column: these are the columns.
@@ -120,36 +119,61 @@ vec3 mxc_thin_film(float cosi, float eta2, vec3 eta3, vec3 kappa3, float d) {
   float cos2 = sqrt(1.0 - sin2t);
   float opd = 2.0 * eta2 * d * cos2;
   // Interface 1-2, both polarisations: real amplitudes; reflection from inside the film flips
-  // the sign (a phase of pi).
+  // the sign (a phase of pi), kept as the sign of the phase factor below.
   vec2 r12 = vec2((eta1 * cosi - eta2 * cos2) / (eta1 * cosi + eta2 * cos2),
                   (eta2 * cosi - eta1 * cos2) / (eta2 * cosi + eta1 * cos2));
   vec2 R12 = r12 * r12;
   vec2 T121 = 1.0 - R12;
-  vec2 phi21 = vec2(r12.x < 0.0 ? 0.0 : MXC_PI, r12.y < 0.0 ? 0.0 : MXC_PI);
+  vec2 sign21 = vec2(r12.x < 0.0 ? 1.0 : -1.0, r12.y < 0.0 ? 1.0 : -1.0);  // cos of phi21 in {0, pi}
+  // Interface 2-3 seen from the film, per channel: complex amplitudes (s in .xy, p in .zw). A
+  // dielectric base has the same IOR in every channel: computed once.
+  vec4 r23[3];
+  for (int c = 0; c < 3; ++c) {
+    if (c == 0 || eta3[c] != eta3[c - 1] || kappa3[c] != kappa3[c - 1]) {
+      vec2 rs, rp;
+      mxc_fresnel_complex_amplitudes(cos2, vec2(eta3[c], kappa3[c]) / eta2, rs, rp);
+      r23[c] = vec4(rs, rp);
+    } else {
+      r23[c] = r23[c - 1];
+    }
+  }
+  // The sensitivity terms of order 1 without the phase shift: their Gaussians (arguments <= 0)
+  // and the cosine and sine of pos phi, per channel and for X's second Gaussian.
+  float phi = 2.0 * MXC_PI * 1e-9 * opd;
+  vec3 e1 = exp(-phi * phi * MXC_FILM_VAR);
+  vec3 g1 = MXC_FILM_VAL * sqrt(2.0 * MXC_PI * MXC_FILM_VAR) * e1 / MXC_FILM_NORM;
+  vec3 g2 = g1 * e1 * e1 * e1;  // exp(-(2 phi)^2 var) = exp(-phi^2 var)^4
+  vec3 ca = cos(MXC_FILM_POS * phi), sa = sin(MXC_FILM_POS * phi);
+  float ex = exp(-phi * phi * MXC_FILM_X2_VAR);
+  float gx1 = MXC_FILM_X2_VAL * sqrt(2.0 * MXC_PI * MXC_FILM_X2_VAR) * ex / MXC_FILM_NORM;
+  float gx2 = gx1 * ex * ex * ex;
+  float cx = cos(MXC_FILM_X2_POS * phi), sx = sin(MXC_FILM_X2_POS * phi);
   vec3 grey = vec3(0.0);
   vec3 xyz = vec3(0.0);
-  vec2 rs, rp;
-  for (int c = 0; c < 3; ++c) {
-    // Interface 2-3 seen from the film: complex amplitudes, phases from their arguments. A
-    // dielectric base has the same IOR in every channel: computed once.
-    if (c == 0 || eta3[c] != eta3[c - 1] || kappa3[c] != kappa3[c - 1]) {
-      mxc_fresnel_complex_amplitudes(cos2, vec2(eta3[c], kappa3[c]) / eta2, rs, rp);
-    }
-    for (int pol = 0; pol < 2; ++pol) {
-      vec2 r23 = pol == 0 ? rs : rp;
-      float R23 = dot(r23, r23);
-      float phi23 = atan(r23.y, r23.x);
-      float R123 = R12[pol] * R23;
-      float r123 = sqrt(R123);
-      // 1 - R123 > 0: R12 < 1 away from grazing incidence; guarded for the grazing limit.
-      float Rs = T121[pol] * T121[pol] * R23 / max(1.0 - R123, 1e-6);
-      grey[c] += R12[pol] + Rs;
-      float cm = Rs - T121[pol];
-      for (int m = 1; m <= 2; ++m) {
-        cm *= r123;
-        xyz[c] += cm * 2.0 * mxc_film_sensitivity(float(m) * opd, float(m) * (phi21[pol] + phi23), c);
-      }
-    }
+  for (int pol = 0; pol < 2; ++pol) {
+    vec3 re = pol == 0 ? vec3(r23[0].x, r23[1].x, r23[2].x) : vec3(r23[0].z, r23[1].z, r23[2].z);
+    vec3 im = pol == 0 ? vec3(r23[0].y, r23[1].y, r23[2].y) : vec3(r23[0].w, r23[1].w, r23[2].w);
+    vec3 R23 = re * re + im * im;
+    // The phase shift psi = phi21 + arg(r23), as its cosine and sine: arg(r23) from r23 / |r23|
+    // (a zero amplitude has no phase: psi = phi21 alone).
+    vec3 len = sqrt(R23);
+    vec3 inv = vec3(len.x > 0.0 ? 1.0 / len.x : 0.0, len.y > 0.0 ? 1.0 / len.y : 0.0, len.z > 0.0 ? 1.0 / len.z : 0.0);
+    vec3 cpsi = sign21[pol] * mix(vec3(1.0), re * inv, greaterThan(len, vec3(0.0)));
+    vec3 spsi = sign21[pol] * im * inv;
+    vec3 R123 = R12[pol] * R23;
+    vec3 r123 = sqrt(R123);
+    // 1 - R123 > 0: R12 < 1 away from grazing incidence; guarded for the grazing limit.
+    vec3 Rs = T121[pol] * T121[pol] * R23 / max(1.0 - R123, vec3(1e-6));
+    grey += R12[pol] + Rs;
+    // Order 1: cos(pos phi + psi); order 2: cos(2 theta) = 2 cos^2 theta - 1.
+    vec3 c1 = ca * cpsi - sa * spsi;
+    float cx1 = cx * cpsi.x - sx * spsi.x;
+    vec3 s1 = g1 * c1 + vec3(gx1 * cx1, 0.0, 0.0);
+    vec3 s2 = g2 * (2.0 * c1 * c1 - 1.0) + vec3(gx2 * (2.0 * cx1 * cx1 - 1.0), 0.0, 0.0);
+    vec3 cm = (Rs - T121[pol]) * r123;
+    xyz += cm * 2.0 * s1;
+    cm *= r123;
+    xyz += cm * 2.0 * s2;
   }
   return clamp(0.5 * (grey + MXC_XYZ_TO_RGB * xyz), 0.0, 1.0);
 }
