@@ -15,7 +15,7 @@ namespace mxc::lib {
 namespace fs = std::filesystem;
 
 LibraryStack::LibraryStack(SourceManager& sources, Diagnostics& diagnostics)
-    : sources_(sources), diagnostics_(diagnostics), loader_(sources, diagnostics) {}
+    : diagnostics_(diagnostics), loader_(sources, diagnostics) {}
 
 NodeLibrary& LibraryStack::newLayer() {
   const NodeLibrary* parent = layers_.empty() ? nullptr : layers_.back().get();

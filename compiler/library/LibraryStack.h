@@ -31,7 +31,6 @@ class LibraryStack {
  private:
   NodeLibrary& newLayer();
 
-  SourceManager& sources_;
   Diagnostics& diagnostics_;
   doc::DocumentLoader loader_;
   std::vector<std::unique_ptr<NodeLibrary>> layers_;
