@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include <nlohmann/json.hpp>
 
 #include "runtime/ImageIO.h"
@@ -33,6 +35,24 @@ TEST(CompileCommand, WritesValidSpirvAndGlsl) {
   EXPECT_NE(glsl.find("void mxc_material_closure("), std::string::npos);
   fs::remove(spv);
   fs::remove(frag);
+}
+
+// Every --stage gives its own shader: the compute stages differ by their main only.
+TEST(CompileCommand, EachStageHasItsMain) {
+  for (const auto& [stage, kind, marker] :
+       {std::tuple{"comp", "eval", "mxc_closure_eval(c, wo, wi), mxc_closure_pdf"},
+        std::tuple{"furnace", "furnace", "vec3 transmitted ="},
+        std::tuple{"sample", "sample", "float kind = smp.valid"}}) {
+    const fs::path glsl = writeTemp(std::string("out_") + stage + ".comp", "");
+    CommandRun r = mxc("compile " + corpus(kDefault) + " --stage " + stage + " --glsl " + glsl.string());
+    EXPECT_EQ(r.exitCode, 0) << stage << ": " << r.err;
+    EXPECT_NE(r.out.find(std::string("Default: ") + kind + " shader"), std::string::npos) << r.out;
+    const std::string text = readAll(glsl);
+    EXPECT_NE(text.find(marker), std::string::npos) << stage;
+    fs::remove(glsl);
+  }
+  CommandRun r = mxc("compile " + corpus(kDefault) + " --stage vertex");
+  EXPECT_EQ(r.exitCode, 2) << r.err;
 }
 
 TEST(CompileCommand, BadSetIsAnErrorAtTheShadingNode) {
