@@ -23,6 +23,36 @@ EShLanguage language(Stage stage) {
   return EShLangFragment;
 }
 
+// Functions longer than this many instructions stay functions under `-O`.
+constexpr size_t kInlineLimit = 150;
+
+/// Marks every function longer than kInlineLimit instructions DontInline, so that SPIRV-Tools'
+/// exhaustive inlining copies only the small ones into their callers. A closure calls the big
+/// lobe functions once per lobe (eval, pdf, sample, albedo); inlining each call made the
+/// optimised module about three times the size of the unoptimised one. The drivers' own
+/// compilers still decide what to inline on the device.
+void keepLargeFunctionsAsCalls(std::vector<uint32_t>& words) {
+  constexpr uint32_t kOpFunction = 54, kOpFunctionEnd = 56;
+  constexpr uint32_t kInline = 0x1, kDontInline = 0x2;
+  size_t control = 0;  // index of the current OpFunction's control word, 0 outside a function
+  size_t length = 0;
+  for (size_t i = 5; i < words.size();) {  // after the 5-word header
+    const uint32_t count = words[i] >> 16;
+    const uint32_t opcode = words[i] & 0xffffu;
+    if (count == 0 || i + count > words.size()) return;  // malformed: leave it to the validator
+    if (opcode == kOpFunction && count >= 5) {
+      control = i + 3;  // OpFunction: result type, result id, function control, function type
+      length = 0;
+    } else if (opcode == kOpFunctionEnd && control != 0) {
+      if (length > kInlineLimit) words[control] = (words[control] & ~kInline) | kDontInline;
+      control = 0;
+    } else if (control != 0) {
+      ++length;
+    }
+    i += count;
+  }
+}
+
 Reflection::Scalar scalarOf(const glslang::TType& type) {
   switch (type.getBasicType()) {
     case glslang::EbtFloat: return Reflection::Scalar::Float;
@@ -139,6 +169,7 @@ std::optional<std::vector<uint32_t>> compile(const GlslSource& source, const Com
     return std::nullopt;
   }
   if (options.optimize) {
+    keepLargeFunctionsAsCalls(words);
     spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_1);
     optimizer.RegisterPerformancePasses();
     std::vector<uint32_t> optimized;

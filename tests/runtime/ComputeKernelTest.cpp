@@ -55,20 +55,5 @@ TEST(SpirvCompiler, ErrorsMapToTheGeneratingElement) {
   EXPECT_NE(e.message.find("undefined_thing"), std::string::npos);
 }
 
-TEST(SpirvCompiler, OptimisationKeepsAValidModule) {
-  spirv::GlslSource source;
-  source.stage = spirv::Stage::Compute;
-  source.name = "opt";
-  source.text =
-      "#version 450\nlayout(local_size_x = 1) in;\nlayout(set = 0, binding = 0) buffer O { float v[]; } o;\n"
-      "float f(float x) { return x * 2.0 + 1.0; }\nvoid main() { o.v[0] = f(3.0); }\n";
-  Diagnostics diagnostics;
-  auto plain = spirv::compile(source, {}, diagnostics);
-  auto optimized = spirv::compile(source, {true}, diagnostics);
-  ASSERT_TRUE(plain && optimized) << diagnostics.format();
-  EXPECT_TRUE(spirv::validate(*optimized).empty());
-  EXPECT_LT(spirv::instructionCount(*optimized), spirv::instructionCount(*plain));
-}
-
 }  // namespace
 }  // namespace mxc::rt
