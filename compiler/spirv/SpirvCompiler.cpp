@@ -1,7 +1,9 @@
 #include "compiler/spirv/SpirvCompiler.h"
 
+#include <functional>
 #include <mutex>
 #include <regex>
+#include <unordered_map>
 
 #include <fmt/format.h>
 #include <glslang/Public/ResourceLimits.h>
@@ -23,34 +25,62 @@ EShLanguage language(Stage stage) {
   return EShLangFragment;
 }
 
-// Functions longer than this many instructions stay functions under `-O`.
+// Functions that would be longer than this many instructions with their callees inlined stay
+// functions under `-O`.
 constexpr size_t kInlineLimit = 150;
 
-/// Marks every function longer than kInlineLimit instructions DontInline, so that SPIRV-Tools'
-/// exhaustive inlining copies only the small ones into their callers. A closure calls the big
-/// lobe functions once per lobe (eval, pdf, sample, albedo); inlining each call made the
-/// optimised module about three times the size of the unoptimised one. The drivers' own
-/// compilers still decide what to inline on the device.
+/// Marks DontInline every function whose body, with the callees it would inline, exceeds
+/// kInlineLimit instructions, so that SPIRV-Tools' exhaustive inlining copies only small
+/// functions into their callers. A closure calls its lobe functions once per lobe (eval, pdf,
+/// sample, albedo), and they call each other: inlining every call made the optimised module
+/// about three times the unoptimised one. The drivers' own compilers still decide what to
+/// inline on the device.
 void keepLargeFunctionsAsCalls(std::vector<uint32_t>& words) {
-  constexpr uint32_t kOpFunction = 54, kOpFunctionEnd = 56;
+  constexpr uint32_t kOpFunction = 54, kOpFunctionEnd = 56, kOpFunctionCall = 57;
   constexpr uint32_t kInline = 0x1, kDontInline = 0x2;
-  size_t control = 0;  // index of the current OpFunction's control word, 0 outside a function
-  size_t length = 0;
+  struct Function {
+    size_t control = 0;            // index of OpFunction's function-control word
+    size_t length = 0;             // its own instructions
+    std::vector<uint32_t> calls;   // callee ids, one per call site
+  };
+  std::unordered_map<uint32_t, Function> functions;
+  Function* current = nullptr;
   for (size_t i = 5; i < words.size();) {  // after the 5-word header
     const uint32_t count = words[i] >> 16;
     const uint32_t opcode = words[i] & 0xffffu;
     if (count == 0 || i + count > words.size()) return;  // malformed: leave it to the validator
     if (opcode == kOpFunction && count >= 5) {
-      control = i + 3;  // OpFunction: result type, result id, function control, function type
-      length = 0;
-    } else if (opcode == kOpFunctionEnd && control != 0) {
-      if (length > kInlineLimit) words[control] = (words[control] & ~kInline) | kDontInline;
-      control = 0;
-    } else if (control != 0) {
-      ++length;
+      current = &functions[words[i + 2]];  // result type, result id, function control, type
+      current->control = i + 3;
+    } else if (opcode == kOpFunctionEnd) {
+      current = nullptr;
+    } else if (current) {
+      ++current->length;
+      if (opcode == kOpFunctionCall && count >= 4) current->calls.push_back(words[i + 3]);
     }
     i += count;
   }
+  // Size with the small callees inlined, callees first (SPIR-V forbids recursion; the depth
+  // bound guards a malformed module).
+  std::unordered_map<uint32_t, size_t> inlined;
+  std::function<size_t(uint32_t, int)> size = [&](uint32_t id, int depth) -> size_t {
+    auto known = inlined.find(id);
+    if (known != inlined.end()) return known->second;
+    auto f = functions.find(id);
+    if (f == functions.end() || depth > 64) return 0;
+    size_t total = f->second.length;
+    for (uint32_t callee : f->second.calls) {
+      const size_t s = size(callee, depth + 1);
+      if (s <= kInlineLimit) total += s;  // inlined here; a kept function is one call
+    }
+    inlined[id] = total;
+    if (total > kInlineLimit) {
+      uint32_t& control = words[f->second.control];
+      control = (control & ~kInline) | kDontInline;
+    }
+    return total;
+  };
+  for (const auto& [id, f] : functions) size(id, 0);
 }
 
 Reflection::Scalar scalarOf(const glslang::TType& type) {

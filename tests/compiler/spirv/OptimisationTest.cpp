@@ -1,6 +1,6 @@
 // SPIRV-Tools' performance passes through spirv::compile (`mxc compile -O`): small functions are
-// inlined into their callers, long ones stay functions, so a closure that calls its big lobe
-// functions once per lobe does not grow under -O.
+// inlined into their callers, long ones (counting the callees they would inline) stay
+// functions, so a closure that calls its big lobe functions once per lobe does not grow under -O.
 
 #include <gtest/gtest.h>
 
@@ -57,6 +57,21 @@ TEST(SpirvOptimisation, KeepsLongFunctionsAsCalls) {
   EXPECT_EQ(functionCount(*optimized), 2u) << "f stays a function";
   // Inlined at both calls, the module would hold f's body twice.
   EXPECT_LT(spirv::instructionCount(*optimized), spirv::instructionCount(*plain));
+}
+
+// The size that counts is a function's with the small callees it would inline: f is short
+// itself but calls h twice; h alone is small (inlined into f), f with it is not.
+TEST(SpirvOptimisation, CountsInlinedCalleesInAFunctionsSize) {
+  std::string body = "float h(float x) {\n  float y = x;\n";
+  for (int k = 0; k < 12; ++k) body += "  y = sin(y) * " + std::to_string(k + 2) + ".0 + x;\n";
+  body += "  return y;\n}\nfloat f(float x) { return h(x) + h(x + 1.0); }";
+  Diagnostics diagnostics;
+  auto plain = spirv::compile(shader(body), {}, diagnostics);
+  auto optimized = spirv::compile(shader(body), {true}, diagnostics);
+  ASSERT_TRUE(plain && optimized) << diagnostics.format();
+  EXPECT_TRUE(spirv::validate(*optimized).empty());
+  EXPECT_EQ(functionCount(*plain), 3u);
+  EXPECT_EQ(functionCount(*optimized), 2u) << "h is inlined into f, f stays a function";
 }
 
 }  // namespace
