@@ -45,6 +45,16 @@ vec2 mxc_fuzz_axis(vec3 wo) {
   return len2 > 1e-12 ? wo.xy * inversesqrt(len2) : vec2(1.0, 0.0);
 }
 
+// A local direction in the LTC frame of wo (a rotation about the normal), and back.
+vec3 mxc_fuzz_to_ltc(vec3 wo, vec3 w) {
+  vec2 x = mxc_fuzz_axis(wo);
+  return vec3(dot(w.xy, x), dot(w.xy, vec2(-x.y, x.x)), w.z);
+}
+vec3 mxc_fuzz_from_ltc(vec3 wo, vec3 w) {
+  vec2 x = mxc_fuzz_axis(wo);
+  return vec3(w.x * x.x - w.y * x.y, w.x * x.y + w.y * x.x, w.z);
+}
+
 // D(w) for w in the LTC frame with w.z > 0: D_cos(t / |t|) a^2 / |t|^3 = t.z a^2 / (pi |t|^4),
 // t = M^-1 w. |t|^2 >= w.z^2 > 0.
 float mxc_fuzz_d(vec2 ab, vec3 w) {
@@ -53,22 +63,17 @@ float mxc_fuzz_d(vec2 ab, vec3 w) {
   return MXC_INV_PI * t.z * mxc_sqr(ab.x / len2);
 }
 
-// f |cos theta_i| with colour c, local frame (z = normal).
-vec3 mxc_fuzz_eval(vec3 c, float roughness, vec3 wo, vec3 wi) {
-  if (wo.z <= 0.0 || wi.z <= 0.0) return vec3(0.0);
-  float r = mxc_fuzz_roughness(roughness);
-  float mu = min(wo.z, 1.0);
-  vec2 x = mxc_fuzz_axis(wo);
-  vec3 w = vec3(dot(wi.xy, x), dot(wi.xy, vec2(-x.y, x.x)), wi.z);
-  return c * (mxc_fuzz_albedo(mu, r) * mxc_fuzz_d(mxc_fuzz_ltc(mu, r), w));
-}
-
+// The density D of wi (local frame, z = normal): the lobe's pdf.
 float mxc_fuzz_pdf(float roughness, vec3 wo, vec3 wi) {
   if (wo.z <= 0.0 || wi.z <= 0.0) return 0.0;
   float r = mxc_fuzz_roughness(roughness);
-  vec2 x = mxc_fuzz_axis(wo);
-  vec3 w = vec3(dot(wi.xy, x), dot(wi.xy, vec2(-x.y, x.x)), wi.z);
-  return mxc_fuzz_d(mxc_fuzz_ltc(min(wo.z, 1.0), r), w);
+  return mxc_fuzz_d(mxc_fuzz_ltc(min(wo.z, 1.0), r), mxc_fuzz_to_ltc(wo, wi));
+}
+
+// f |cos theta_i| with colour c: c R D.
+vec3 mxc_fuzz_eval(vec3 c, float roughness, vec3 wo, vec3 wi) {
+  float d = mxc_fuzz_pdf(roughness, wo, wi);
+  return d > 0.0 ? c * (mxc_fuzz_albedo(min(wo.z, 1.0), mxc_fuzz_roughness(roughness)) * d) : vec3(0.0);
 }
 
 // A direction distributed as D: a cosine-distributed d mapped by M = [[1/a, 0, -b/a], [0, 1/a, 0],
@@ -78,7 +83,5 @@ vec3 mxc_fuzz_sample(float roughness, vec3 wo, vec2 u) {
   float r = mxc_fuzz_roughness(roughness);
   vec2 ab = mxc_fuzz_ltc(clamp(wo.z, 0.0, 1.0), r);
   vec3 d = mxc_sample_cosine(u);
-  vec3 w = normalize(vec3((d.x - ab.y * d.z) / ab.x, d.y / ab.x, d.z));
-  vec2 x = mxc_fuzz_axis(wo);
-  return vec3(w.x * x.x - w.y * x.y, w.x * x.y + w.y * x.x, w.z);
+  return mxc_fuzz_from_ltc(wo, normalize(vec3((d.x - ab.y * d.z) / ab.x, d.y / ab.x, d.z)));
 }
