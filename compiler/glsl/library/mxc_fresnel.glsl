@@ -154,11 +154,11 @@ vec3 mxc_thin_film(float cosi, float eta2, vec3 eta3, vec3 kappa3, float d) {
     vec3 re = pol == 0 ? vec3(r23[0].x, r23[1].x, r23[2].x) : vec3(r23[0].z, r23[1].z, r23[2].z);
     vec3 im = pol == 0 ? vec3(r23[0].y, r23[1].y, r23[2].y) : vec3(r23[0].w, r23[1].w, r23[2].w);
     vec3 R23 = re * re + im * im;
-    // The phase shift psi = phi21 + arg(r23), as its cosine and sine: arg(r23) from r23 / |r23|
-    // (a zero amplitude has no phase: psi = phi21 alone).
-    vec3 len = sqrt(R23);
-    vec3 inv = vec3(len.x > 0.0 ? 1.0 / len.x : 0.0, len.y > 0.0 ? 1.0 / len.y : 0.0, len.z > 0.0 ? 1.0 / len.z : 0.0);
-    vec3 cpsi = sign21[pol] * mix(vec3(1.0), re * inv, greaterThan(len, vec3(0.0)));
+    // The phase shift psi = phi21 + arg(r23), as its cosine and sine: arg(r23) from r23 / |r23|.
+    // A zero amplitude has no phase, but then r123 = 0 and its interference terms vanish whatever
+    // psi is; the floor only keeps the division finite.
+    vec3 inv = 1.0 / max(sqrt(R23), vec3(1e-30));
+    vec3 cpsi = sign21[pol] * re * inv;
     vec3 spsi = sign21[pol] * im * inv;
     vec3 R123 = R12[pol] * R23;
     vec3 r123 = sqrt(R123);
