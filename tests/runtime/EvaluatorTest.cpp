@@ -25,12 +25,6 @@ ir::Material single(Context& context, const std::string& text, const lower::Lowe
   return materials.empty() ? ir::Material{} : std::move(materials.front());
 }
 
-std::string openPbr(const std::string& inputs) {
-  return mtlx("  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n" + inputs +
-              "  </open_pbr_surface>\n  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
-              "type=\"surfaceshader\" nodename=\"s\" /></surfacematerial>\n");
-}
-
 // 2.1: Lambert, E = rho exactly.
 TEST(Furnace, WhiteLambertianReturnsAlbedoOne) {
   Context context;
@@ -51,7 +45,7 @@ TEST(Furnace, WhiteLambertianReturnsAlbedoOne) {
 TEST(Furnace, WhiteEonIsOneAtAnyRoughness) {
   for (const char* roughness : {"0.5", "1"}) {
     Context context;
-    ir::Material m = single(context, openPbr(fmt::format("    <input name=\"base_color\" type=\"color3\" value=\"1, 1, 1\" />\n"
+    ir::Material m = single(context, openPbrDocument(fmt::format("    <input name=\"base_color\" type=\"color3\" value=\"1, 1, 1\" />\n"
                                                          "    <input name=\"specular_weight\" type=\"float\" value=\"0\" />\n"
                                                          "    <input name=\"base_diffuse_roughness\" type=\"float\" value=\"{}\" />\n",
                                                          roughness)));
@@ -87,7 +81,7 @@ TEST(Furnace, SmoothDielectricNormalReflectanceIsF0) {
 // 2.3: specular_weight xi scales F0 exactly (OpenPBR eq. modulated_ior): IOR 1.5, xi = 0.5 gives 0.02.
 TEST(Furnace, SpecularWeightScalesF0) {
   Context context;
-  ir::Material m = single(context, openPbr("    <input name=\"base_color\" type=\"color3\" value=\"0, 0, 0\" />\n"
+  ir::Material m = single(context, openPbrDocument("    <input name=\"base_color\" type=\"color3\" value=\"0, 0, 0\" />\n"
                                            "    <input name=\"specular_weight\" type=\"float\" value=\"0.5\" />\n"
                                            "    <input name=\"specular_roughness\" type=\"float\" value=\"0\" />\n"));
   std::vector<rt::Albedo> albedo = furnace(m, {viewAt(0)}, 16384);
@@ -105,7 +99,7 @@ TEST(Furnace, CoatDarkeningFollowsTheInterfacedLambertian) {
   for (const auto& [darkening, expected] : {std::pair{1.0f, 0.31607f}, std::pair{0.0f, 0.52f}}) {
     Context context;
     ir::Material m = single(
-        context, openPbr(fmt::format("    <input name=\"base_color\" type=\"color3\" value=\"0.5, 0.5, 0.5\" />\n"
+        context, openPbrDocument(fmt::format("    <input name=\"base_color\" type=\"color3\" value=\"0.5, 0.5, 0.5\" />\n"
                                      "    <input name=\"specular_weight\" type=\"float\" value=\"0\" />\n"
                                      "    <input name=\"coat_weight\" type=\"float\" value=\"1\" />\n"
                                      "    <input name=\"coat_roughness\" type=\"float\" value=\"0\" />\n"
@@ -194,7 +188,7 @@ TEST(Furnace, RoughDielectricMatchesComputedAlbedo) {
 TEST(Furnace, OpenPbrWhiteBaseConservesEnergy) {
   for (const char* roughness : {"0", "0.3", "0.7", "1"}) {
     Context context;
-    ir::Material m = single(context, openPbr(fmt::format("    <input name=\"base_color\" type=\"color3\" value=\"1, 1, 1\" />\n"
+    ir::Material m = single(context, openPbrDocument(fmt::format("    <input name=\"base_color\" type=\"color3\" value=\"1, 1, 1\" />\n"
                                                          "    <input name=\"specular_roughness\" type=\"float\" value=\"{}\" />\n",
                                                          roughness)));
     std::vector<rt::Albedo> albedo = furnace(m, {viewAt(0), viewAt(30), viewAt(60), viewAt(80)}, 65536);
@@ -337,7 +331,7 @@ TEST(Eval, FuzzLeansBackTowardsTheViewer) {
 TEST(Furnace, FuzzLayerPassesWhatItDoesNotReflectUntinted) {
   for (const auto& [color, expected] : {std::pair{"1, 1, 1", 1.0f}, std::pair{"0.5, 0.5, 0.5", 0.82907f}}) {
     Context context;
-    ir::Material m = single(context, openPbr(fmt::format("    <input name=\"base_color\" type=\"color3\" value=\"1, 1, 1\" />\n"
+    ir::Material m = single(context, openPbrDocument(fmt::format("    <input name=\"base_color\" type=\"color3\" value=\"1, 1, 1\" />\n"
                                                          "    <input name=\"specular_weight\" type=\"float\" value=\"0\" />\n"
                                                          "    <input name=\"fuzz_weight\" type=\"float\" value=\"1\" />\n"
                                                          "    <input name=\"fuzz_roughness\" type=\"float\" value=\"1\" />\n"

@@ -32,10 +32,7 @@ struct Case {
 };
 
 std::string document(const Case& c) {
-  if (std::string(c.kind) == "bsdf") return bsdfDocument(c.xml);
-  return mtlx(std::string("  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n") + c.xml +
-              "  </open_pbr_surface>\n  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
-              "type=\"surfaceshader\" nodename=\"s\" /></surfacematerial>\n");
+  return std::string(c.kind) == "bsdf" ? bsdfDocument(c.xml) : openPbrDocument(c.xml);
 }
 
 int binOf(const glm::vec3& w) {

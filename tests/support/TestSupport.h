@@ -109,4 +109,11 @@ inline std::string mtlx(const std::string& body) {
   return "<?xml version=\"1.0\"?>\n<materialx version=\"1.39\">\n" + body + "</materialx>\n";
 }
 
+/// A document with one open_pbr_surface (given its <input> elements) as material M.
+inline std::string openPbrDocument(const std::string& inputs) {
+  return mtlx("  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n" + inputs +
+              "  </open_pbr_surface>\n  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
+              "type=\"surfaceshader\" nodename=\"s\" /></surfacematerial>\n");
+}
+
 }  // namespace mxc::test

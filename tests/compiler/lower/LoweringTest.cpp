@@ -68,13 +68,6 @@ Lowered lowerFile(const std::string& relative) {
   return out;
 }
 
-/// An open_pbr_surface material with the given <input> elements.
-std::string openPbr(const std::string& inputs) {
-  return mtlx("  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n" + inputs +
-              "  </open_pbr_surface>\n  <surfacematerial name=\"m\" type=\"material\">\n"
-              "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"s\"/>\n  </surfacematerial>\n");
-}
-
 std::string in(const std::string& name, const std::string& type, const std::string& value) {
   return "    <input name=\"" + name + "\" type=\"" + type + "\" value=\"" + value + "\"/>\n";
 }
@@ -123,10 +116,10 @@ TEST(OpenPbrLowering, GlassIsADielectricOverAMedium) {
 }
 
 TEST(OpenPbrLowering, CoatWeightZeroHasNoCoat) {
-  Lowered without = lower(openPbr(in("coat_weight", "float", "0") + in("coat_color", "color3", "0.5, 0.2, 0.1")));
+  Lowered without = lower(openPbrDocument(in("coat_weight", "float", "0") + in("coat_color", "color3", "0.5, 0.2, 0.1")));
   EXPECT_EQ(ir::structureSignature(without.only()), "slab(dielectric:RT,-,slab(diffuse,-,-))");
   EXPECT_EQ(without.effect("coat"), nullptr);
-  Lowered with = lower(openPbr(in("coat_weight", "float", "1") + in("coat_color", "color3", "0.25, 0.25, 0.25")));
+  Lowered with = lower(openPbrDocument(in("coat_weight", "float", "1") + in("coat_color", "color3", "0.25, 0.25, 0.25")));
   EXPECT_EQ(ir::structureSignature(with.only()), "slab(dielectric:RT,-,slab(dielectric:RT,-,slab(diffuse,-,-)))");
   ASSERT_NE(with.effect("coat"), nullptr);
   EXPECT_EQ(with.effect("coat")->origin.input, "coat_weight");
@@ -159,7 +152,7 @@ TEST(OpenPbrLowering, EachFeatureIsAnEffectKeptByItsInput) {
        "volume", "transmission_color"},
   };
   for (const Case& c : cases) {
-    const std::string text = openPbr(c.inputs);
+    const std::string text = openPbrDocument(c.inputs);
     Lowered l = lower(text);
     const ir::Effect* e = l.effect(c.effect);
     ASSERT_NE(e, nullptr) << c.effect << " in " << fmt::format("{}", fmt::join(l.effects(), ","));
@@ -198,7 +191,7 @@ TEST(OpenPbrLowering, FullTreeWhenEveryWeightIsATexture) {
 
 TEST(OpenPbrLowering, AnisotropicAlphaFollowsTheSpecFormula) {
   // alpha_t = r^2 sqrt(2 / (1 + (1 - a)^2)), alpha_b = (1 - a) alpha_t (OpenPBR "Microfacet model").
-  Lowered l = lower(openPbr(in("specular_roughness", "float", "0.5") + in("specular_roughness_anisotropy", "float", "0.5")));
+  Lowered l = lower(openPbrDocument(in("specular_roughness", "float", "0.5") + in("specular_roughness_anisotropy", "float", "0.5")));
   const ir::Interface* d = findInterface(l.only(), ir::InterfaceKind::Dielectric);
   std::vector<float> alpha = constant(l.only(), d->slots.value(Slot::Alpha));
   ASSERT_EQ(alpha.size(), 2u);
@@ -208,7 +201,7 @@ TEST(OpenPbrLowering, AnisotropicAlphaFollowsTheSpecFormula) {
 }
 
 TEST(OpenPbrLowering, SubsurfaceMediumFromColourAndRadius) {
-  Lowered l = lower(openPbr(in("subsurface_weight", "float", "1") + in("subsurface_color", "color3", "0.8, 0.5, 0.2") +
+  Lowered l = lower(openPbrDocument(in("subsurface_weight", "float", "1") + in("subsurface_color", "color3", "0.8, 0.5, 0.2") +
                             in("subsurface_radius", "float", "2") + in("subsurface_radius_scale", "color3", "1, 1, 1")));
   const ir::Medium* sss = findMedium(l.only(), ir::Medium::Extent::Bulk);
   ASSERT_NE(sss, nullptr);
@@ -225,7 +218,7 @@ TEST(OpenPbrLowering, SubsurfaceMediumFromColourAndRadius) {
 }
 
 TEST(OpenPbrLowering, TransmissionMediumFromColourAndDepth) {
-  Lowered l = lower(openPbr(in("transmission_weight", "float", "1") + in("transmission_color", "color3", "0.5, 0.5, 0.5") +
+  Lowered l = lower(openPbrDocument(in("transmission_weight", "float", "1") + in("transmission_color", "color3", "0.5, 0.5, 0.5") +
                             in("transmission_depth", "float", "2") + in("transmission_scatter", "color3", "0.1, 0.2, 0.4")));
   const ir::Medium* bulk = findMedium(l.only(), ir::Medium::Extent::Bulk);
   ASSERT_NE(bulk, nullptr);
@@ -235,7 +228,7 @@ TEST(OpenPbrLowering, TransmissionMediumFromColourAndDepth) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(mua[c] + mus[c], -std::log(0.5f) / 2, 1e-6) << c;
   EXPECT_NEAR(mus[2], 0.2f, 1e-6);
   // With scattering above the extinction, mu_a is shifted by grey so that it stays >= 0.
-  Lowered shifted = lower(openPbr(in("transmission_weight", "float", "1") + in("transmission_color", "color3", "0.9, 0.9, 0.9") +
+  Lowered shifted = lower(openPbrDocument(in("transmission_weight", "float", "1") + in("transmission_color", "color3", "0.9, 0.9, 0.9") +
                                   in("transmission_depth", "float", "1") + in("transmission_scatter", "color3", "1, 0, 0")));
   std::vector<float> mua2 = constant(shifted.only(), findMedium(shifted.only(), ir::Medium::Extent::Bulk)->slots.value(Slot::Absorption));
   EXPECT_NEAR(*std::min_element(mua2.begin(), mua2.end()), 0.0f, 1e-6);
