@@ -1,6 +1,72 @@
 #include "compiler/common/Diagnostic.h"
 
+#include <fmt/format.h>
+
 namespace mxc {
+
+namespace {
+
+/// The length of the well-formed UTF-8 sequence at `text[i]`, or 0 when it is not one
+/// (RFC 3629: no overlong forms, no surrogates, nothing above U+10FFFF).
+size_t utf8Length(std::string_view text, size_t i) {
+  const auto b = [&](size_t k) { return static_cast<unsigned char>(text[i + k]); };
+  const size_t left = text.size() - i;
+  const unsigned char c = b(0);
+  if (c < 0x80) return 1;
+  auto cont = [&](size_t k) { return k < left && (b(k) & 0xC0) == 0x80; };
+  if (c >= 0xC2 && c <= 0xDF) return cont(1) ? 2 : 0;
+  if (c >= 0xE0 && c <= 0xEF) {
+    if (!cont(1) || !cont(2)) return 0;
+    if ((c == 0xE0 && b(1) < 0xA0) || (c == 0xED && b(1) > 0x9F)) return 0;
+    return 3;
+  }
+  if (c >= 0xF0 && c <= 0xF4) {
+    if (!cont(1) || !cont(2) || !cont(3)) return 0;
+    if ((c == 0xF0 && b(1) < 0x90) || (c == 0xF4 && b(1) > 0x8F)) return 0;
+    return 4;
+  }
+  return 0;
+}
+
+/// Control characters of a document (an ESC sequence, a bell, a C1 control) and bytes that are
+/// not UTF-8 must not reach a terminal raw: they would be obeyed or garble it, not be shown.
+/// Each becomes a visible escape such as \x1B; tabs and line breaks stay. In an echoed source
+/// line (`oneColumn`) each becomes a single '?' instead, so the caret under the column stays
+/// aligned (the caret counts code points).
+std::string printable(std::string_view text, bool oneColumn) {
+  std::string out;
+  out.reserve(text.size());
+  for (size_t i = 0; i < text.size();) {
+    const auto b = static_cast<unsigned char>(text[i]);
+    const size_t length = utf8Length(text, i);
+    const bool c0 = (b < 0x20 && b != '\t' && b != '\n') || b == 0x7F;
+    // C1 controls U+0080..U+009F, encoded in UTF-8 as C2 80..C2 9F.
+    const bool c1 = length == 2 && b == 0xC2 && static_cast<unsigned char>(text[i + 1]) <= 0x9F;
+    if (length == 0 || c0) {
+      out += oneColumn ? std::string("?") : fmt::format("\\x{:02X}", b);
+      ++i;
+    } else if (c1) {
+      out += oneColumn ? std::string("?") : fmt::format("\\u{:04X}", static_cast<unsigned char>(text[i + 1]));
+      i += 2;
+    } else {
+      out.append(text.substr(i, length));
+      i += length;
+    }
+  }
+  return out;
+}
+
+/// At most `limit` bytes of `text`, cut at a character boundary, with what was left out said.
+std::string capped(std::string text, size_t limit) {
+  if (text.size() <= limit) return text;
+  size_t cut = limit;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 sequence
+  const size_t left = text.size() - cut;
+  text.resize(cut);
+  return text + fmt::format("... ({} more bytes)", left);
+}
+
+}  // namespace
 
 std::string Diagnostic::format() const {
   std::string out;
@@ -10,7 +76,7 @@ std::string Diagnostic::format() const {
     case Severity::Warning: out += "warning: "; break;
     case Severity::Note: out += "note: "; break;
   }
-  out += message;
+  out += printable(message, false);
   return out;
 }
 
@@ -22,7 +88,7 @@ std::string Diagnostic::formatWithSource() const {
   // Very long lines (minified files) are not echoed: the position is in the first line already.
   if (text.empty() || text.size() > 300) return out;
   std::string number = std::to_string(lc.line);
-  out += "\n " + number + " | " + std::string(text) + "\n " + std::string(number.size(), ' ') + " | ";
+  out += "\n " + number + " | " + printable(text, true) + "\n " + std::string(number.size(), ' ') + " | ";
   // The caret line keeps the tabs of the source so the caret lands under the column; any other
   // character (one code point, however many bytes) becomes one space.
   uint32_t column = 1;
@@ -38,7 +104,20 @@ std::string Diagnostic::formatWithSource() const {
 
 void Diagnostics::add(Diagnostic diagnostic) {
   if (diagnostic.severity == Severity::Error) ++errorCount_;
+  if (items_.size() >= kMaxKept) {
+    ++(diagnostic.severity == Severity::Error ? omittedErrors_ : diagnostic.severity == Severity::Warning ? omittedWarnings_
+                                                                                                       : omittedNotes_);
+    return;
+  }
+  // A message quoting a 10 MB attribute value is cut: the position already says where it is.
+  diagnostic.message = capped(std::move(diagnostic.message), kMaxMessageBytes);
   items_.push_back(std::move(diagnostic));
+}
+
+std::string Diagnostics::omittedSummary() const {
+  if (omittedErrors_ + omittedWarnings_ + omittedNotes_ == 0) return {};
+  return fmt::format("{} more error(s), {} more warning(s) and {} more note(s) not shown (only the first {} are kept)",
+                     omittedErrors_, omittedWarnings_, omittedNotes_, kMaxKept);
 }
 
 void Diagnostics::error(SourceLocation location, std::string message) {

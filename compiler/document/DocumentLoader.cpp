@@ -1,36 +1,16 @@
 #include "compiler/document/DocumentLoader.h"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <variant>
 
 #include <fmt/format.h>
 
+#include "compiler/common/InputFile.h"
 #include "compiler/document/DocumentBuilder.h"
 #include "compiler/document/Upgrade.h"
 
 namespace mxc::doc {
 
 namespace fs = std::filesystem;
-
-std::variant<std::string, std::string> readFile(const fs::path& path, size_t maxBytes) {
-  using Result = std::variant<std::string, std::string>;
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) return Result(std::in_place_index<1>, "it is a directory");
-  const auto size = fs::file_size(path, ec);
-  if (ec) return Result(std::in_place_index<1>, ec.message());
-  if (size > maxBytes) {
-    return Result(std::in_place_index<1>, fmt::format("it is {} bytes, above the limit of {} bytes", size, maxBytes));
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Result(std::in_place_index<1>, std::strerror(errno));
-  std::string text(static_cast<size_t>(size), '\0');
-  in.read(text.data(), static_cast<std::streamsize>(size));
-  if (!in && !in.eof()) return Result(std::in_place_index<1>, "read error");
-  text.resize(static_cast<size_t>(in.gcount()));
-  return Result(std::in_place_index<0>, std::move(text));
-}
 
 DocumentLoader::DocumentLoader(SourceManager& sources, Diagnostics& diagnostics, xml::ParseOptions options)
     : sources_(sources), diagnostics_(diagnostics), options_(options) {}
@@ -41,15 +21,20 @@ const Document* DocumentLoader::loadText(const std::string& name, std::string te
   const SourceFile& source = sources_.add(name, std::move(text));
   std::string key = fs::absolute(fs::path(name)).lexically_normal().string();
   loading_.push_back(key);
+  loadingSet_.insert(key);
   const Document* doc = finish(source);
+  loadingSet_.erase(key);
   loading_.pop_back();
   return doc;
 }
 
 const Document* DocumentLoader::load(const fs::path& path, SourceLocation includedFrom) {
   const std::string key = fs::absolute(path).lexically_normal().string();
-  for (size_t i = 0; i < loading_.size(); ++i) {
-    if (loading_[i] != key) continue;
+  // The set answers "is it on the chain?" in constant time, so a chain of n includes loads in
+  // O(n); the vector gives the order of the chain for the message.
+  if (loadingSet_.count(key)) {
+    size_t i = 0;
+    while (loading_[i] != key) ++i;
     std::string chain;
     for (size_t k = i; k < loading_.size(); ++k) chain += fs::path(loading_[k]).filename().string() + " -> ";
     diagnostics_.error(includedFrom, fmt::format("include cycle: {}{}", chain, path.filename().string()));
@@ -57,7 +42,7 @@ const Document* DocumentLoader::load(const fs::path& path, SourceLocation includ
   }
   if (auto it = byPath_.find(key); it != byPath_.end()) return it->second;
 
-  auto text = readFile(path, options_.maxInputBytes);
+  auto text = readInputFile(path, options_.maxInputBytes);
   if (auto* error = std::get_if<1>(&text)) {
     if (includedFrom.valid()) {
       diagnostics_.error(includedFrom, fmt::format("cannot read the included file '{}': {}", path.string(), *error));
@@ -68,7 +53,9 @@ const Document* DocumentLoader::load(const fs::path& path, SourceLocation includ
   }
   const SourceFile& source = sources_.add(path.string(), std::move(std::get<0>(text)));
   loading_.push_back(key);
+  loadingSet_.insert(key);
   const Document* doc = finish(source);
+  loadingSet_.erase(key);
   loading_.pop_back();
   return doc;
 }

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <unordered_set>
 #include <variant>
 #include <vector>
 
@@ -39,12 +40,9 @@ class DocumentLoader {
   xml::ParseOptions options_;
   std::vector<std::unique_ptr<Document>> owned_;
   std::map<std::string, const Document*> byPath_;  // files by normalised absolute path
-  std::vector<std::string> loading_;                         // include chain, for cycle detection
+  std::vector<std::string> loading_;            // include chain, for the message of a cycle
+  std::unordered_set<std::string> loadingSet_;  // the same chain, for finding a cycle
   std::vector<const Document*> order_;
 };
-
-/// Reads a whole file as bytes; returns an error message instead when it cannot.
-/// Refuses files larger than `maxBytes` before reading them.
-std::variant<std::string, std::string> readFile(const std::filesystem::path& path, size_t maxBytes);
 
 }  // namespace mxc::doc

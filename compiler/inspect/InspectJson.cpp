@@ -156,6 +156,9 @@ json inspectJson(const InspectInput& input) {
     diagnostics.push_back({{"severity", severity}, {"message", diag.message}, {"location", locationJson(diag.location)}});
   }
   out["diagnostics"] = diagnostics;
+  // Beyond Diagnostics::kMaxKept messages only counts are kept.
+  out["diagnostics_omitted"] = {{"errors", input.diagnostics.omittedErrors()},
+                                {"warnings", input.diagnostics.omittedWarnings()}};
   return out;
 }
 

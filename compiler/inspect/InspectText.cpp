@@ -1,3 +1,4 @@
+#include <deque>
 #include <set>
 
 #include <fmt/format.h>
@@ -46,10 +47,17 @@ class TextReport {
   void input(const ResolvedInput& in, const ResolvedGraph* scope, int indent, size_t width, std::string label = {});
   void graphOutput(const ResolvedGraph& graph, const ResolvedInput& out, int indent);
   void graph(const ResolvedGraph& g);
+  /// Prints the trees deferred by `node` for their depth, each at the margin.
+  void continueDeferred();
+
+  /// Deeper than this, a node's tree continues in its own section at the left margin: a chain of
+  /// n nodes indented by its depth would print O(n^2) spaces (a 10,000-node chain: 600 MB).
+  static constexpr int kMaxIndent = 48;
 
   const InspectInput& in_;
   const doc::Document& doc_;
   std::string out_;
+  std::deque<const ResolvedNode*> deferred_;  ///< nodes whose tree continues below
   std::set<const ResolvedNode*> shownNodes_;
   std::set<const ResolvedInput*> shownOutputs_;
 };
@@ -64,6 +72,11 @@ void TextReport::node(const ResolvedNode& n, int indent) {
   }
   if (shownNodes_.count(&n)) {
     line(indent, header + "  (shown above)");
+    return;
+  }
+  if (indent > kMaxIndent) {
+    line(indent, header + "  (continued below)");
+    deferred_.push_back(&n);
     return;
   }
   shownNodes_.insert(&n);
@@ -127,6 +140,18 @@ void TextReport::graphOutput(const ResolvedGraph& g, const ResolvedInput& out, i
   input(out, &g, indent, label.size(), label);
 }
 
+void TextReport::continueDeferred() {
+  // Each deep tree continues once at the margin; a node reached again says "shown above".
+  while (!deferred_.empty()) {
+    const ResolvedNode* n = deferred_.front();
+    deferred_.pop_front();
+    if (shownNodes_.count(n)) continue;
+    line(0, fmt::format("continued: {}", nodeId(*n)));
+    node(*n, 2);
+    line(0, "");
+  }
+}
+
 void TextReport::graph(const ResolvedGraph& g) {
   std::string header = fmt::format("nodegraph {}", g.name());
   if (g.implements) header += fmt::format(" (implements {})", g.implements->name);
@@ -176,6 +201,7 @@ std::string TextReport::run() {
     graph(*g);
     line(0, "");
   }
+  continueDeferred();
   bool header = false;
   // Document-level nodes no material or graph reached, consumers last (reverse dependency order).
   for (auto it = rd.top.nodes.rbegin(); it != rd.top.nodes.rend(); ++it) {
@@ -183,6 +209,7 @@ std::string TextReport::run() {
     if (!header) line(0, "other nodes:"), header = true;
     node(**it, 2);
   }
+  continueDeferred();
   for (const doc::Document* d : rd.documents) {
     for (const doc::Look& look : d->looks) {
       line(0, fmt::format("look {}  {}", look.name, where(look.location)));
@@ -193,7 +220,7 @@ std::string TextReport::run() {
     }
   }
   size_t errors = in_.diagnostics.errorCount();
-  size_t warnings = 0;
+  size_t warnings = in_.diagnostics.omittedWarnings();
   for (const Diagnostic& d : in_.diagnostics.all()) warnings += d.severity == Severity::Warning;
   line(0, fmt::format("{} error{}, {} warning{}", errors, errors == 1 ? "" : "s", warnings, warnings == 1 ? "" : "s"));
   return out_;

@@ -109,8 +109,23 @@ void Parser::checkEncoding() {
   }
   if (size == 0) fail(begin_, "the document is empty");
   const auto* u = reinterpret_cast<const unsigned char*>(begin_);
-  if (size >= 2 && ((u[0] == 0xFF && u[1] == 0xFE) || (u[0] == 0xFE && u[1] == 0xFF))) {
-    fail(begin_, "the document is UTF-16 encoded (it starts with a UTF-16 byte-order mark); only UTF-8 is supported");
+  // XML 1.0 Appendix F: the encoding shows in the first four bytes, with or without a
+  // byte-order mark. UTF-32 is tested first: its little-endian mark FF FE 00 00 begins with
+  // UTF-16's FF FE.
+  auto starts = [&](std::initializer_list<unsigned char> bytes) {
+    if (size < bytes.size()) return false;
+    size_t i = 0;
+    for (unsigned char b : bytes) {
+      if (u[i++] != b) return false;
+    }
+    return true;
+  };
+  if (starts({0xFF, 0xFE, 0x00, 0x00}) || starts({0x00, 0x00, 0xFE, 0xFF}) || starts({0x3C, 0x00, 0x00, 0x00}) ||
+      starts({0x00, 0x00, 0x00, 0x3C})) {
+    fail(begin_, "the document is UTF-32 encoded; only UTF-8 is supported");
+  }
+  if (starts({0xFF, 0xFE}) || starts({0xFE, 0xFF}) || starts({0x3C, 0x00, 0x3F, 0x00}) || starts({0x00, 0x3C, 0x00, 0x3F})) {
+    fail(begin_, "the document is UTF-16 encoded; only UTF-8 is supported");
   }
   if (auto error = checkXmlText(std::string_view(begin_, size))) fail(begin_ + error->offset, error->message);
   if (size >= 3 && u[0] == 0xEF && u[1] == 0xBB && u[2] == 0xBF) p_ += 3;  // UTF-8 byte-order mark

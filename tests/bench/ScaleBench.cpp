@@ -2,9 +2,11 @@
 // open_pbr_surface, timed stage by stage (parse + document model, resolve, lower + passes,
 // GLSL, glslang + validation), with the growth from one size to the next (10x more nodes: a
 // ratio near 10 is linear) for mxc's own stages, for glslang, and for the whole compile. Then the peak resident memory of the
-// `mxc compile` process, for open_pbr_default and for the 100k-node document.
+// `mxc compile` process, for open_pbr_default and for the 100k-node document. Last, a chain of
+// documents each including the next (N/4 and N files): loading is linear when the growth is
+// near 4.
 //
-//   build/tests/bench/scale_bench [--max N] [--no-glslang]
+//   build/tests/bench/scale_bench [--max N] [--no-glslang] [--includes N]
 //
 // --no-glslang stops after GLSL (glslang's own constant lookup is quadratic in the number of
 // distinct literals, which dominates beyond 100k nodes).
@@ -14,6 +16,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -131,6 +134,31 @@ Stages run(mxc::lib::LibraryStack& libraries, mxc::SourceManager& sources, const
   return s;
 }
 
+/// Loads a chain of `files` documents, each including the next, written to a fresh folder;
+/// returns the load time in ms.
+double includeChainMs(int files) {
+  const fs::path folder = fs::temp_directory_path() / fmt::format("mxc_chain_{}_{}", files, ::getpid());
+  fs::create_directories(folder);
+  for (int i = 0; i < files; ++i) {
+    std::ofstream(folder / fmt::format("c{}.mtlx", i))
+        << "<?xml version=\"1.0\"?>\n<materialx version=\"1.39\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
+        << (i + 1 < files ? fmt::format("  <xi:include href=\"c{}.mtlx\" />\n", i + 1) : std::string())
+        << fmt::format("  <constant name=\"k{}\" type=\"float\" />\n</materialx>\n", i);
+  }
+  mxc::SourceManager sources;
+  mxc::Diagnostics diagnostics;
+  mxc::doc::DocumentLoader loader(sources, diagnostics);
+  const auto t = Clock::now();
+  const bool loaded = loader.loadFile(folder / "c0.mtlx") != nullptr && loader.documents().size() == size_t(files);
+  const double ms = msSince(t);
+  fs::remove_all(folder);
+  if (!loaded || diagnostics.hasErrors()) {
+    std::fprintf(stderr, "the include chain did not load: %s", diagnostics.format().c_str());
+    std::exit(1);
+  }
+  return ms;
+}
+
 /// Peak resident memory (MiB) of `mxc compile FILE -q`, from the kernel's accounting.
 double peakMiB(const fs::path& file) {
   const pid_t pid = fork();
@@ -155,8 +183,10 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--max")) max = std::atoi(argv[i + 1]);
   }
   bool glslang = true;
+  int includes = 40000;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--no-glslang")) glslang = false;
+    if (!std::strcmp(argv[i], "--includes") && i + 1 < argc) includes = std::max(4, std::atoi(argv[i + 1]));
   }
   // Memory first, while this process is small: a child's peak counts the pages it had from
   // fork until exec.
@@ -185,6 +215,10 @@ int main(int argc, char** argv) {
                   s.glslLines);
       previous = s;
     }
+    // Each include is one deeper on the loader's recursion: the large stack holds the chain.
+    const double quarter = includeChainMs(includes / 4), whole = includeChainMs(includes);
+    std::printf("\ninclude chain of %d / %d documents: %.1f / %.1f ms to load (growth %.1fx for 4x the files; linear is 4)\n",
+                includes / 4, includes, quarter, whole, whole / quarter);
   });
   std::printf("\npeak resident memory of `mxc compile` (one process, library, glslang and SPIRV-Tools included):\n");
   std::printf("  %-28s %8.1f MiB   (target: at most 48 MiB)\n", "open_pbr_default.mtlx", openPbrPeak);

@@ -218,6 +218,11 @@ const Malformed kMalformed[] = {
     {"XmlDeclarationUnclosed", "<?xml version=\"1.0\"", 1, 1, "XML declaration is not closed"},
     {"UnclosedProcessingInstruction", "<a><?pi data</a>", 1, 4, "processing instruction <?pi is not closed"},
     {"Utf16ByteOrderMark", std::string("\xFF\xFE<\0a\0/\0>\0", 10), 1, 1, "UTF-16"},
+    {"Utf16WithoutByteOrderMark", std::string("<\0?\0x\0m\0l\0", 10), 1, 1, "UTF-16"},
+    // UTF-32 little-endian's mark FF FE 00 00 starts with UTF-16's: it is told apart.
+    {"Utf32LittleEndian", std::string("\xFF\xFE\0\0<\0\0\0a\0\0\0", 12), 1, 1, "UTF-32"},
+    {"Utf32BigEndian", std::string("\0\0\xFE\xFF\0\0\0<\0\0\0a", 12), 1, 1, "UTF-32"},
+    {"Utf32WithoutByteOrderMark", std::string("<\0\0\0a\0\0\0", 8), 1, 1, "UTF-32"},
     {"InvalidUtf8StartByte", "<a>\n x\xFFy</a>", 2, 3, "byte 0xFF cannot start a character"},
     {"InvalidUtf8Continuation", "<a>\xC3(</a>", 1, 4, "not a continuation byte"},
     {"Utf8Overlong", "<a>\xC0\xAF</a>", 1, 4, "overlong"},
