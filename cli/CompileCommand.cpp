@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/AtomicFile.h"
+#include "cli/OutputSet.h"
 #include "cli/ExitCode.h"
 #include "cli/MaterialPipeline.h"
 #include "compiler/glsl/ShaderBuilder.h"
@@ -39,6 +39,17 @@ int runCompile(const CompileOptions& options) {
   MaterialPipeline pipeline(session);
   if (int code = pipeline.run(options.file, options.materials); code != kOk) return code;
   const bool several = pipeline.materials.size() > 1;
+  // Every output is declared and checked before anything is compiled or written.
+  OutputSet outputs;
+  for (const ir::Material& material : pipeline.materials) {
+    for (const auto& [path, option] : {std::pair{options.output, "-o"}, std::pair{options.glsl, "--glsl"}}) {
+      if (path.empty()) continue;
+      if (printError(outputs.declare(perMaterialPath(path, material.name, several), option))) return kOutputFailed;
+    }
+  }
+  if (printError(outputs.checkDistinct()) || printError(pipeline.checkOutputsAreNotInputs(outputs))) return kUsage;
+  // A module on standard output would be mixed with the summary lines.
+  const bool quiet = options.quiet || options.output == "-" || options.glsl == "-";
   int result = kOk;
   for (const ir::Material& material : pipeline.materials) {
     glsl::MaterialShader shader = glsl::buildMaterialShader(material, kindOf(options.stage));
@@ -47,26 +58,20 @@ int runCompile(const CompileOptions& options) {
     std::optional<std::vector<uint32_t>> words = spirv::compile(shader.glsl, compile, session.diagnostics);
     session.printDiagnostics();
     if (!options.glsl.empty()) {
-      // The GLSL is written even when glslang rejects it, so that the failing line can be read.
+      // The GLSL is produced even when glslang rejects it, so that the failing line can be read.
       const auto path = perMaterialPath(options.glsl, material.name, several);
-      if (auto error = writeFileAtomically(path, shader.glsl.text)) {
-        std::fprintf(stderr, "error: %s\n", error->c_str());
-        return kOutputFailed;
-      }
+      if (printError(outputs.stage(path, shader.glsl.text))) return kOutputFailed;
     }
     if (!words) {
       result = kInvalidDocument;
       continue;
     }
     if (!options.output.empty()) {
+      std::string bytes(reinterpret_cast<const char*>(words->data()), words->size() * sizeof(uint32_t));
       const auto path = perMaterialPath(options.output, material.name, several);
-      std::string_view bytes(reinterpret_cast<const char*>(words->data()), words->size() * sizeof(uint32_t));
-      if (auto error = writeFileAtomically(path, bytes)) {
-        std::fprintf(stderr, "error: %s\n", error->c_str());
-        return kOutputFailed;
-      }
+      if (printError(outputs.stage(path, std::move(bytes)))) return kOutputFailed;
     }
-    if (!options.quiet) {
+    if (!quiet) {
       std::vector<std::string> lobes;
       for (const std::string& k : shader.interface.features.lobeKinds) lobes.push_back(k.substr(9));
       std::printf("%s: %s shader, %zu GLSL lines, %zu SPIR-V instructions; lobes %d (%s)%s%s\n", material.name.c_str(),
@@ -79,7 +84,13 @@ int runCompile(const CompileOptions& options) {
                       : "");
     }
   }
-  if (!options.quiet) {
+  // All or nothing: a SPIR-V module that was not produced leaves every output as it was.
+  if (!outputs.complete()) {
+    std::fprintf(stderr, "error: no output written: a shader did not compile\n");
+  } else if (printError(outputs.commit())) {
+    return kOutputFailed;
+  }
+  if (!quiet) {
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::printf("compiled %zu material(s) in %.1f ms\n", pipeline.materials.size(), ms);
   }

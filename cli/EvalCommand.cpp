@@ -2,16 +2,16 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/AtomicFile.h"
+#include "cli/OutputSet.h"
 #include "cli/ExitCode.h"
 #include "cli/Harness.h"
 #include "cli/MaterialPipeline.h"
+#include "compiler/common/InputFile.h"
 #include "runtime/Evaluator.h"
 
 namespace mxc::cli {
@@ -29,11 +29,13 @@ struct EvalOptions {
 /// Reads rows "wo_x,wo_y,wo_z,wi_x,wi_y,wi_z" (blank lines, '#' comments and one header line of
 /// names allowed). Errors name file:line:column.
 bool readDirections(const std::string& path, std::vector<rt::DirectionPair>& rows) {
-  std::ifstream in(path);
-  if (!in) {
-    std::fprintf(stderr, "%s: error: cannot read the file\n", path.c_str());
+  constexpr size_t kMaxBytes = size_t{1} << 30;
+  auto bytes = readInputFile(path, kMaxBytes);
+  if (auto* why = std::get_if<1>(&bytes)) {
+    std::fprintf(stderr, "error: cannot read the directions '%s': %s\n", path.c_str(), why->c_str());
     return false;
   }
+  std::istringstream in(std::move(std::get<0>(bytes)));
   std::string line;
   for (int lineNo = 1; std::getline(in, line); ++lineNo) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -80,12 +82,31 @@ bool readDirections(const std::string& path, std::vector<rt::DirectionPair>& row
   return true;
 }
 
+/// Declares a command's one report (`-o`, or standard output) and checks it is not an input.
+/// Returns kOk or the exit code to stop with (the error printed).
+int declareReport(OutputSet& outputs, const std::string& output, const MaterialPipeline& pipeline,
+                  const std::string& dirs = {}) {
+  if (printError(outputs.declare(output.empty() ? "-" : output, "-o"))) return kOutputFailed;
+  if (printError(pipeline.checkOutputsAreNotInputs(outputs))) return kUsage;
+  if (!dirs.empty() && printError(outputs.checkNotInput(dirs, "the --dirs file"))) return kUsage;
+  return kOk;
+}
+
+/// Stages and commits the report; kOk or kOutputFailed (the error printed).
+int writeReport(OutputSet& outputs, const std::string& output, std::string report) {
+  std::optional<std::string> error = outputs.stage(output.empty() ? "-" : output, std::move(report));
+  if (!error) error = outputs.commit();
+  return printError(error) ? kOutputFailed : kOk;
+}
+
 int runEval(const EvalOptions& options) {
   std::vector<rt::DirectionPair> rows;
   if (!readDirections(options.dirs, rows)) return kInvalidDocument;
   Session session;
   MaterialPipeline pipeline(session);
   if (int code = pipeline.run(options.file, options.materials); code != kOk) return code;
+  OutputSet outputs;
+  if (int code = declareReport(outputs, options.output, pipeline, options.dirs); code != kOk) return code;
   Device device(options.device);
   rt::AlbedoTables* tables = device.tables();
   if (!tables) return kInvalidDocument;
@@ -102,7 +123,7 @@ int runEval(const EvalOptions& options) {
     }
   }
   if (!device.checkValidation()) return kInvalidDocument;
-  return writeReport(options.output, csv) ? kOk : kOutputFailed;
+  return writeReport(outputs, options.output, std::move(csv));
 }
 
 struct FurnaceOptions {
@@ -121,6 +142,8 @@ int runFurnace(const FurnaceOptions& options) {
   Session session;
   MaterialPipeline pipeline(session);
   if (int code = pipeline.run(options.file, options.materials); code != kOk) return code;
+  OutputSet outputs;
+  if (int code = declareReport(outputs, options.output, pipeline); code != kOk) return code;
   Device device(options.device);
   rt::AlbedoTables* tables = device.tables();
   if (!tables) return kInvalidDocument;
@@ -158,7 +181,7 @@ int runFurnace(const FurnaceOptions& options) {
     report["materials"].push_back(std::move(m));
   }
   if (!device.checkValidation()) return kInvalidDocument;
-  return writeReport(options.output, report.dump(2) + "\n") ? kOk : kOutputFailed;
+  return writeReport(outputs, options.output, report.dump(2) + "\n");
 }
 
 }  // namespace

@@ -9,6 +9,7 @@ enum ExitCode : int {
   kInvalidDocument = 1,  ///< the document or a library has errors (printed with file:line:column)
   kUsage = 2,            ///< bad command line
   kOutputFailed = 3,     ///< an output could not be written (nothing partial is left behind)
+  kOutOfMemory = 4,      ///< memory ran out (nothing partial is left behind)
 };
 
 }  // namespace mxc::cli

@@ -17,6 +17,8 @@ rt::VulkanContext* Device::context() {
   if (context_) return context_.get();
   try {
     context_ = std::make_unique<rt::VulkanContext>(rt::DeviceOptions{options_.device, options_.validation});
+  } catch (const std::bad_alloc&) {
+    throw;  // "out of memory", exit 4 (cli/Main.cpp)
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return nullptr;
@@ -30,6 +32,8 @@ rt::AlbedoTables* Device::tables() {
   if (!c) return nullptr;
   try {
     tables_ = std::make_unique<rt::AlbedoTables>(*c);
+  } catch (const std::bad_alloc&) {
+    throw;  // "out of memory", exit 4 (cli/Main.cpp)
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return nullptr;
@@ -51,9 +55,10 @@ std::optional<MaterialProgram> prepareMaterial(Session& session, rt::VulkanConte
   session.printDiagnostics();
   if (!words) return std::nullopt;
   program.spirv = std::move(*words);
-  std::vector<std::string> warnings;
-  program.resources = std::make_unique<rt::MaterialResources>(context, program.shader.interface, folder, warnings);
-  for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  const size_t errors = session.diagnostics.errorCount();
+  program.resources = std::make_unique<rt::MaterialResources>(context, program.shader.interface, folder, session.diagnostics);
+  session.printDiagnostics();
+  if (session.diagnostics.errorCount() > errors) return std::nullopt;
   return program;
 }
 

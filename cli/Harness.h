@@ -53,7 +53,8 @@ struct MaterialProgram {
 };
 
 /// Builds and compiles the material's shader of `kind` and loads its textures (relative paths
-/// from `folder`; warnings printed). Nullopt when it does not compile (diagnostics printed).
+/// from `folder`; warnings printed). Nullopt when it does not compile or a texture path is not a
+/// regular file (diagnostics printed).
 std::optional<MaterialProgram> prepareMaterial(Session& session, rt::VulkanContext& context, const ir::Material& material,
                                                glsl::ShaderKind kind, const std::filesystem::path& folder);
 

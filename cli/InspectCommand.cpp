@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "cli/AtomicFile.h"
+#include "cli/OutputSet.h"
 #include "cli/ExitCode.h"
 #include "cli/MaterialPipeline.h"
 #include "cli/Session.h"
@@ -34,6 +34,9 @@ struct InspectOptions {
 };
 
 int runInspect(const InspectOptions& options) {
+  const std::string output = options.output.empty() ? "-" : options.output;
+  OutputSet outputs;
+  if (printError(outputs.declare(output, "-o"))) return kOutputFailed;
   Session session;
   session.loadLibraries(options.libraries);
   doc::DocumentLoader loader(session.sources, session.diagnostics);
@@ -79,7 +82,9 @@ int runInspect(const InspectOptions& options) {
              : options.dot ? inspect::inspectDot(input)
                            : inspect::inspectText(input);
   }
-  if (!writeReport(options.output, report)) return kOutputFailed;
+  if (printError(session.checkOutputsAreNotSources(outputs))) return kUsage;
+  if (printError(outputs.stage(output, std::move(report)))) return kOutputFailed;
+  if (printError(outputs.commit())) return kOutputFailed;
   return failed || session.diagnostics.hasErrors() ? kInvalidDocument : kOk;
 }
 

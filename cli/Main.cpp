@@ -1,6 +1,7 @@
 // mxc: a compiler for MaterialX material documents. See README.md for the commands.
 
 #include <cstdio>
+#include <new>
 
 #include <CLI/CLI.hpp>
 
@@ -8,6 +9,7 @@
 #include "cli/CompileCommand.h"
 #include "cli/EvalCommand.h"
 #include "cli/InspectCommand.h"
+#include "cli/ProcessSetup.h"
 #include "cli/RenderCommand.h"
 #include "compiler/common/LargeStack.h"
 
@@ -20,7 +22,7 @@ int run(int argc, char** argv) {
   app.set_version_flag("--version", "mxc 0.1.0");
   app.footer(
       "Exit codes: 0 success, 1 invalid document or library (errors name file:line:column), 2 usage error, "
-      "3 an output could not be written.\nRun 'mxc COMMAND --help' for the options of a command.");
+      "3 an output could not be written, 4 out of memory.\nRun 'mxc COMMAND --help' for the options of a command.");
   int exitCode = kOk;
   registerInspect(app, exitCode);
   registerCompile(app, exitCode);
@@ -41,8 +43,22 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Deep node graphs recurse deeply in resolution and lowering: commands run on a large stack.
-  int exitCode = 0;
-  mxc::runWithLargeStack([&] { exitCode = run(argc, argv); });
+  using namespace mxc::cli;
+  setUpProcess();
+  int exitCode = kOk;
+  try {
+    // Deep node graphs recurse deeply in resolution and lowering: commands run on a large stack.
+    mxc::runWithLargeStack([&] { exitCode = run(argc, argv); });
+  } catch (const std::bad_alloc&) {
+    // Unwinding has removed every temporary of the command (OutputSet, StagedFile).
+    std::fprintf(stderr, "error: out of memory\n");
+    exitCode = kOutOfMemory;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    exitCode = kInvalidDocument;
+  }
+  // A command that failed to write its report has said so; everything else written to standard
+  // output (summaries, "wrote ...") is checked here.
+  if (exitCode != kOutputFailed && !flushStandardOutput() && exitCode == kOk) exitCode = kOutputFailed;
   return exitCode;
 }

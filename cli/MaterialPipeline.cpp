@@ -93,6 +93,18 @@ int MaterialPipeline::run(const std::string& file, const MaterialOptions& option
   return kOk;
 }
 
+std::optional<std::string> MaterialPipeline::checkOutputsAreNotInputs(const OutputSet& outputs) const {
+  if (auto error = session_.checkOutputsAreNotSources(outputs)) return error;
+  for (const ir::Material& m : materials) {
+    for (const ir::ImageFile& image : m.images) {
+      std::filesystem::path path = image.path;
+      if (path.is_relative()) path = documentFolder / path;
+      if (auto error = outputs.checkNotInput(path, "an image file this command reads")) return error;
+    }
+  }
+  return std::nullopt;
+}
+
 std::filesystem::path perMaterialPath(const std::filesystem::path& path, const std::string& material, bool several) {
   if (!several) return path;
   std::string safe;

@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/OutputSet.h"
 #include "cli/Session.h"
 #include "compiler/document/DocumentLoader.h"
 #include "compiler/ir/Material.h"
@@ -39,6 +40,9 @@ class MaterialPipeline {
   explicit MaterialPipeline(Session& session) : session_(session) {}
   /// Runs the front end. Returns kOk, or the exit code to stop with (the diagnostics are printed).
   int run(const std::string& file, const MaterialOptions& options);
+  /// A usage error when an output is a file the command reads: the document, an included
+  /// document, a library file, or an image file of a material.
+  std::optional<std::string> checkOutputsAreNotInputs(const OutputSet& outputs) const;
 
   std::vector<ir::Material> materials;
   /// The folder relative image paths are resolved from (the document's).

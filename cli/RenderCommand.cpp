@@ -9,6 +9,8 @@
 #include "cli/ExitCode.h"
 #include "cli/Harness.h"
 #include "cli/MaterialPipeline.h"
+#include "cli/OutputSet.h"
+#include "runtime/ImageIO.h"
 #include "runtime/Renderer.h"
 
 namespace mxc::cli {
@@ -122,6 +124,15 @@ int runRender(const RenderOptions& options) {
     std::fprintf(stderr, "error: --background %s: expected R,G,B\n", options.background.c_str());
     return kUsage;
   }
+  // Everything that can be refused is refused before the render: the image module, the
+  // formats, then the outputs.
+  if (printError(rt::loadImageModule())) return kOutputFailed;
+  for (const std::string& output : options.outputs) {
+    if (auto why = rt::checkImageFormat(output)) {
+      std::fprintf(stderr, "error: -o %s\n", why->c_str());
+      return kUsage;
+    }
+  }
   rt::Mesh mesh;
   if (options.mesh == "sphere") {
     mesh = rt::makeSphere();
@@ -140,21 +151,37 @@ int runRender(const RenderOptions& options) {
   Session session;
   MaterialPipeline pipeline(session);
   if (int code = pipeline.run(options.file, options.materials); code != kOk) return code;
+  const bool several = pipeline.materials.size() > 1;
+  OutputSet outputs;
+  for (const ir::Material& material : pipeline.materials) {
+    for (const std::string& output : options.outputs) {
+      if (printError(outputs.declare(perMaterialPath(output, material.name, several), "-o"))) return kOutputFailed;
+    }
+  }
+  if (printError(outputs.checkDistinct()) || printError(pipeline.checkOutputsAreNotInputs(outputs))) return kUsage;
+  if (options.mesh != "sphere" && options.mesh != "plane" && printError(outputs.checkNotInput(options.mesh, "the mesh"))) {
+    return kUsage;
+  }
   Device device(options.device);
   rt::AlbedoTables* tables = device.tables();
   if (!tables) return kInvalidDocument;
   int result = kOk;
+  std::vector<std::string> wrote;
   try {
-    rt::Renderer renderer(*device.context(), *tables);
-    const bool several = pipeline.materials.size() > 1;
+    // Every material is compiled (and its textures read) before the first frame: a material
+    // that fails stops the command before minutes of rendering, not after.
+    std::vector<MaterialProgram> programs;
     for (const ir::Material& material : pipeline.materials) {
       auto program = prepareMaterial(session, *device.context(), material, glsl::ShaderKind::Raster, pipeline.documentFolder);
-      if (!program) {
-        result = kInvalidDocument;
-        continue;
-      }
+      if (!program) return kInvalidDocument;
+      programs.push_back(std::move(*program));
+    }
+    rt::Renderer renderer(*device.context(), *tables);
+    for (size_t m = 0; m < programs.size(); ++m) {
+      const ir::Material& material = pipeline.materials[m];
+      const MaterialProgram& program = programs[m];
       Progress progress(settings.frames);
-      rt::RenderResult image = renderer.render(mesh, *program->resources, program->shader.interface, program->spirv,
+      rt::RenderResult image = renderer.render(mesh, *program.resources, program.shader.interface, program.spirv,
                                                settings, [&](uint32_t frame) {
                                                  progress.step(fmt::format("{}: frame {}", material.name, frame));
                                                });
@@ -171,10 +198,11 @@ int runRender(const RenderOptions& options) {
             for (int c = 0; c < 3; ++c) pixels.pixels[i + c] += uncovered * background[c];
           }
         }
-        if (auto error = rt::writeImage(path, pixels, options.exposure)) {
-          std::fprintf(stderr, "error: %s\n", error->c_str());
-          return kOutputFailed;
-        }
+        auto encoded = rt::encodeImage(path, pixels, options.exposure);
+        std::optional<std::string> error;
+        if (auto* why = std::get_if<1>(&encoded)) error = *why;
+        if (!error) error = outputs.stage(path, std::move(std::get<0>(encoded)));
+        if (printError(error)) return kOutputFailed;
         written.push_back(path.string());
       }
       if (bad > 0) {
@@ -182,16 +210,20 @@ int runRender(const RenderOptions& options) {
                      material.name.c_str(), bad);
         result = kInvalidDocument;
       }
-      std::printf("%s: wrote %s (%ux%u, %u spp, %.2f ms per frame on %s)\n", material.name.c_str(),
-                  fmt::format("{}", fmt::join(written, ", ")).c_str(),
-                  settings.width, settings.height, settings.frames, image.msPerFrame,
-                  device.context()->deviceName().c_str());
+      wrote.push_back(fmt::format("{}: wrote {} ({}x{}, {} spp, {:.2f} ms per frame on {})", material.name,
+                                  fmt::join(written, ", "), settings.width, settings.height, settings.frames,
+                                  image.msPerFrame, device.context()->deviceName()));
     }
+  } catch (const std::bad_alloc&) {
+    throw;  // "out of memory", exit 4 (cli/Main.cpp)
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return kInvalidDocument;
   }
   if (!device.checkValidation()) return kInvalidDocument;
+  // Every image of every material, together (cli/OutputSet.h).
+  if (printError(outputs.commit())) return kOutputFailed;
+  for (const std::string& line : wrote) std::printf("%s\n", line.c_str());
   return result;
 }
 
@@ -214,10 +246,11 @@ void registerRender(CLI::App& app, int& exitCode) {
   command->add_option("--env", options->environment, "Environment: none, white (the furnace) or sky")
       ->check(CLI::IsMember({"none", "white", "sky"}));
   command->add_option("--env-intensity", options->environmentIntensity, "Environment radiance scale")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finiteNumber(true));
   command->add_option("--emission-scale", options->emissionScale, "Radiance per unit of emission")
-      ->check(CLI::NonNegativeNumber);
-  command->add_option("--exposure", options->exposure, "Exposure of 8-bit outputs, in stops");
+      ->check(finiteNumber(true));
+  command->add_option("--exposure", options->exposure, "Exposure of 8-bit outputs, in stops")->check(finiteNumber(false))
+      ->check(CLI::Range(-64.0, 64.0));
   command->add_option("--background", options->background, "Background of 8-bit outputs, linear R,G,B");
   command->add_option("--mesh", options->mesh, "sphere, plane, or an .obj file");
   addMaterialOptions(*command, options->materials);

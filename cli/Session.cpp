@@ -1,5 +1,6 @@
 #include "cli/Session.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include <fmt/format.h>
@@ -11,6 +12,24 @@ void addLibraryOptions(CLI::App& command, LibraryOptions& options) {
                      "Node library folder (every .mtlx under it) or file, layered over the built-in library; "
                      "repeatable, later ones shadow earlier definitions of the same name");
   command.add_flag("--no-builtin", options.noBuiltin, "Do not load mxc's built-in node library");
+}
+
+CLI::Validator finiteNumber(bool nonNegative) {
+  return CLI::Validator(
+      [nonNegative](std::string& text) -> std::string {
+        size_t used = 0;
+        double v = 0.0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          return fmt::format("'{}' is not a number", text);
+        }
+        if (used != text.size()) return fmt::format("'{}' is not a number", text);
+        if (!std::isfinite(v)) return fmt::format("'{}' is not a finite number", text);
+        if (nonNegative && v < 0.0) return fmt::format("'{}' is negative", text);
+        return {};
+      },
+      nonNegative ? "NUMBER >= 0" : "NUMBER");
 }
 
 Session::Session() : libraries(sources, diagnostics) {}
@@ -33,6 +52,23 @@ bool Session::loadLibraries(const LibraryOptions& options) {
 void Session::printDiagnostics() {
   const auto& all = diagnostics.all();
   for (; printed_ < all.size(); ++printed_) std::fprintf(stderr, "%s\n", all[printed_].formatWithSource().c_str());
+  const size_t omitted = diagnostics.omittedErrors() + diagnostics.omittedWarnings();
+  if (omitted > omittedPrinted_) {
+    std::fprintf(stderr, "%s\n", diagnostics.omittedSummary().c_str());
+    omittedPrinted_ = omitted;
+  }
+}
+
+}  // namespace mxc::cli
+
+namespace mxc::cli {
+
+std::optional<std::string> Session::checkOutputsAreNotSources(const OutputSet& outputs) const {
+  // The built-in library's texts are not files and never match.
+  for (const auto& file : sources.files()) {
+    if (auto error = outputs.checkNotInput(file->path(), "a document this command reads")) return error;
+  }
+  return std::nullopt;
 }
 
 }  // namespace mxc::cli

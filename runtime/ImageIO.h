@@ -23,20 +23,55 @@ struct RgbaImage {
   const float* at(uint32_t x, uint32_t y) const { return &pixels[(size_t{y} * width + x) * 4]; }
 };
 
-/// Reads any format OpenImageIO reads, as RGBA: one channel becomes grey, two are grey and
-/// alpha, a missing alpha is 1. Returns an error message instead when the file cannot be read.
-std::variant<RgbaImage, std::string> readImage(const std::filesystem::path& path);
+/// How a texture is read.
+struct ImageReadOptions {
+  /// The largest width or height kept (the device's maxImageDimension2D); 0: no limit.
+  uint32_t maxDimension = 0;
+  /// The most texels kept: 2^26 (8192 x 8192, 1 GiB as RGBA32F) by default.
+  uint64_t maxTexels = uint64_t{1} << 26;
+  /// Decode sRGB-encoded values to linear (MaterialX "srgb_texture") before any downsampling,
+  /// so that texels are averaged as light, not as code values.
+  bool srgbDecode = false;
+};
 
-/// Writes `image` (linear) to `path`, atomically (a temporary file renamed when complete).
-/// `.exr`: linear half floats with alpha. Other formats: RGB tone-mapped with `exposure` (in
-/// stops) and encoded as sRGB, 8 bits. Returns an error message on failure.
+/// Reads any format OpenImageIO reads, as RGBA: one channel becomes grey, two are grey and
+/// alpha, a missing alpha is 1. The file must be a regular file (compiler/common/InputFile.h).
+/// An image larger than the options allow is box-filtered down by the smallest integer factor
+/// that fits, row by row, so memory stays bounded by the result; this and a damaged file that
+/// still decoded (a truncated JPEG) are reported in `warnings`. Returns an error message instead
+/// when the file cannot be read.
+std::variant<RgbaImage, std::string> readImage(const std::filesystem::path& path, const ImageReadOptions& options = {},
+                                               std::vector<std::string>* warnings = nullptr);
+
+/// The bytes of an image file in the format of `path`'s extension. `.exr`: linear half floats
+/// with alpha. Other formats: RGB tone-mapped with `exposure` (in stops) and encoded as sRGB, 8
+/// bits. Returns an error message instead.
+std::variant<std::string, std::string> encodeImage(const std::filesystem::path& path, const RgbaImage& image,
+                                                   float exposure = 0.0f);
+
+/// Loads the image module (OpenImageIO) now: nullopt, or why it cannot be loaded. A command
+/// that writes images calls it before long work, so a missing module is known at once.
+std::optional<std::string> loadImageModule();
+
+/// Whether images can be written in the format of `path`'s extension: nullopt, or why not (no
+/// extension, an unknown format, a format OpenImageIO cannot write to memory), listing the
+/// formats that can be.
+std::optional<std::string> checkImageFormat(const std::filesystem::path& path);
+
+/// encodeImage, then writes the file atomically (compiler/common/OutputFile.h). Returns an
+/// error message on failure.
 std::optional<std::string> writeImage(const std::filesystem::path& path, const RgbaImage& image, float exposure = 0.0f);
 
-/// What the OpenImageIO module (runtime/ImageIOPlugin.cpp) provides; readImage and writeImage
-/// load it on first use.
+/// What the OpenImageIO module (runtime/ImageIOPlugin.cpp) provides. readImage, encodeImage and
+/// checkImageFormat load it on first use.
 struct ImageCodec {
-  std::variant<RgbaImage, std::string> (*read)(const std::filesystem::path& path);
-  std::optional<std::string> (*write)(const std::filesystem::path& path, const RgbaImage& image, float exposure);
+  /// `bytes`: the file's content, read by the caller (a format that cannot read from memory is
+  /// opened by `path`, which the caller has checked is a regular file).
+  std::variant<RgbaImage, std::string> (*read)(const std::filesystem::path& path, const std::string& bytes,
+                                               const ImageReadOptions& options, std::vector<std::string>& warnings);
+  std::variant<std::string, std::string> (*encode)(const std::string& extension, const RgbaImage& image, float exposure);
+  /// nullopt when `extension` (".png") can be encoded, else why not.
+  std::optional<std::string> (*writable)(const std::string& extension);
 };
 
 /// The sRGB transfer function, decoded (IEC 61966-2-1): texture values to linear.

@@ -1,13 +1,17 @@
 // The OpenImageIO side of runtime/ImageIO: built as a module that the runtime loads on first
 // use, so that commands which read and write no image (compile, inspect) do not load
 // OpenImageIO and the 260 libraries it depends on (about 130 MB of resident memory).
+//
+// Images are decoded from and encoded to memory (OpenImageIO's IOProxy): the file itself is
+// read and written by mxc's own checked code (compiler/common/InputFile.h, OutputFile.h), so a
+// full disk or a special file is never OpenImageIO's to get wrong.
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <system_error>
 
 #include <fmt/format.h>
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "runtime/ImageIO.h"
@@ -15,56 +19,153 @@
 namespace mxc::rt {
 namespace {
 
-std::variant<RgbaImage, std::string> read(const std::filesystem::path& path) {
-  auto input = OIIO::ImageInput::open(path.string());
+/// Formats mxc writes: those of OpenImageIO that can encode to memory. Probed, not assumed.
+const std::vector<std::string>& writableExtensions() {
+  static const std::vector<std::string> list = [] {
+    std::vector<std::string> found;
+    for (const char* ext : {".png", ".jpg", ".exr", ".tif", ".bmp", ".tga", ".hdr", ".ppm", ".dpx", ".webp", ".gif", ".jp2"}) {
+      auto out = OIIO::ImageOutput::create(std::string("x") + ext);
+      if (out && out->supports("ioproxy")) found.push_back(ext);
+    }
+    return found;
+  }();
+  return list;
+}
+
+/// One pixel of `channels` values to RGBA (one channel is grey, two are grey and alpha, a
+/// missing alpha is 1), decoded from sRGB when asked.
+void toRgba(const float* s, int channels, bool srgb, float* d) {
+  if (channels <= 2) {
+    d[0] = d[1] = d[2] = s[0];
+    d[3] = channels == 2 ? s[1] : 1.0f;
+  } else {
+    d[0] = s[0];
+    d[1] = s[1];
+    d[2] = s[2];
+    d[3] = channels >= 4 ? s[3] : 1.0f;
+  }
+  if (srgb) {
+    for (int c = 0; c < 3; ++c) d[c] = srgbToLinear(d[c]);
+  }
+}
+
+std::variant<RgbaImage, std::string> read(const std::filesystem::path& path, const std::string& bytes,
+                                          const ImageReadOptions& options, std::vector<std::string>& warnings) {
+  const std::string name = path.string();
+  OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+  // The format by the extension; from memory where the format can, else from the path (the
+  // caller checked it is a regular file).
+  auto probe = OIIO::ImageInput::create(name);
+  const bool fromMemory = probe && probe->supports("ioproxy");
+  probe.reset();
+  auto input = OIIO::ImageInput::open(name, nullptr, fromMemory ? &memory : nullptr);
   if (!input) {
     std::string why = OIIO::geterror();
-    return fmt::format("cannot read image {}: {}", path.string(), why.empty() ? "unknown error" : why);
+    return fmt::format("cannot read image '{}': {}", name, why.empty() ? "not an image file OpenImageIO reads" : why);
   }
-  const OIIO::ImageSpec& spec = input->spec();
+  const OIIO::ImageSpec spec = input->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1) {
-    return fmt::format("cannot read image {}: unsupported size or channels", path.string());
+    return fmt::format("cannot read image '{}': unsupported size or channels", name);
   }
-  const int channels = std::min(spec.nchannels, 4);
-  std::vector<float> data(size_t(spec.width) * spec.height * channels);
-  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data())) {
-    return fmt::format("cannot read image {}: {}", path.string(), input->geterror());
-  }
+  const uint64_t width = static_cast<uint64_t>(spec.width), height = static_cast<uint64_t>(spec.height);
+  const int channels = spec.nchannels;
+  // The smallest integer box-filter factor k that fits the device and the texel budget. k grows
+  // by one per step and ends by max(width, height) at the latest (a 1x1 result fits any limit).
+  auto fits = [&](uint64_t k) {
+    const uint64_t w = (width + k - 1) / k, h = (height + k - 1) / k;
+    const bool side = options.maxDimension == 0 || (w <= options.maxDimension && h <= options.maxDimension);
+    return side && w * h <= std::max<uint64_t>(options.maxTexels, 1);
+  };
+  uint64_t k = 1;
+  while (!fits(k)) ++k;
   RgbaImage image;
-  image.width = static_cast<uint32_t>(spec.width);
-  image.height = static_cast<uint32_t>(spec.height);
-  image.pixels.resize(size_t(image.width) * image.height * 4);
-  for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
-    const float* s = &data[i * channels];
-    float* d = &image.pixels[i * 4];
-    if (channels <= 2) {
-      d[0] = d[1] = d[2] = s[0];
-      d[3] = channels == 2 ? s[1] : 1.0f;
-    } else {
-      d[0] = s[0];
-      d[1] = s[1];
-      d[2] = s[2];
-      d[3] = channels == 4 ? s[3] : 1.0f;
+  image.width = static_cast<uint32_t>((width + k - 1) / k);
+  image.height = static_cast<uint32_t>((height + k - 1) / k);
+  image.pixels.assign(size_t{image.width} * image.height * 4, 0.0f);
+  if (k == 1) {
+    // Straight into the RGBA layout (x stride of 4 floats), then widened in place.
+    const int read = std::min(channels, 4);
+    if (!input->read_image(0, 0, 0, read, OIIO::TypeDesc::FLOAT, image.pixels.data(), 4 * sizeof(float))) {
+      return fmt::format("cannot read image '{}': {}", name, input->geterror());
     }
+    for (size_t i = 0; i < size_t{image.width} * image.height; ++i) {
+      float* p = &image.pixels[i * 4];
+      const float s[4] = {p[0], p[1], p[2], p[3]};
+      toRgba(s, read, options.srgbDecode, p);
+    }
+  } else {
+    // Row by row: memory is one input row plus one output row of sums, whatever the input size.
+    std::vector<float> row(width * static_cast<uint64_t>(channels));
+    std::vector<double> sums(size_t{image.width} * 4, 0.0);
+    for (uint64_t y = 0; y < height; ++y) {
+      if (!input->read_scanline(static_cast<int>(y), 0, OIIO::TypeDesc::FLOAT, row.data())) {
+        return fmt::format("cannot read image '{}': {}", name, input->geterror());
+      }
+      for (uint64_t x = 0; x < width; ++x) {
+        float rgba[4];
+        toRgba(&row[x * static_cast<uint64_t>(channels)], channels, options.srgbDecode, rgba);
+        for (int c = 0; c < 4; ++c) sums[(x / k) * 4 + static_cast<uint64_t>(c)] += rgba[c];
+      }
+      if ((y + 1) % k != 0 && y + 1 != height) continue;
+      // The block rows are complete: each output texel is the mean of the input texels it
+      // covers (fewer at the right and bottom edges; at least one, so the division is safe).
+      const uint64_t outY = y / k, rows = y + 1 - outY * k;
+      for (uint64_t X = 0; X < image.width; ++X) {
+        const uint64_t columns = std::min(k, width - X * k);
+        const double count = static_cast<double>(rows * columns);
+        for (int c = 0; c < 4; ++c) {
+          image.pixels[(outY * image.width + X) * 4 + static_cast<uint64_t>(c)] = static_cast<float>(sums[X * 4 + static_cast<uint64_t>(c)] / count);
+        }
+      }
+      std::fill(sums.begin(), sums.end(), 0.0);
+    }
+    warnings.push_back(fmt::format(
+        "image '{}' is {}x{}, more than the device ({} per side) or mxc's budget ({} texels) takes: box-filtered "
+        "by {} to {}x{}",
+        name, width, height, options.maxDimension, options.maxTexels, k, image.width, image.height));
   }
+  // A damaged file can decode "successfully" with a message: libjpeg fills a truncated JPEG
+  // with grey and says "Premature end of JPEG file".
+  if (std::string why = input->geterror(); !why.empty()) {
+    warnings.push_back(fmt::format("image '{}' is damaged and may be incomplete: {}", name, why));
+  }
+  input->close();
   return image;
 }
 
-std::optional<std::string> write(const std::filesystem::path& path, const RgbaImage& image, float exposure) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  const bool linear = ext == ".exr";
-  // The temporary keeps the extension: OpenImageIO chooses the format by it.
-  std::filesystem::path temp = path;
-  temp.replace_filename(fmt::format(".{}.tmp{}", path.stem().string(), path.extension().string()));
-  auto output = OIIO::ImageOutput::create(temp.string());
-  if (!output) return fmt::format("cannot write {}: no image format for '{}'", path.string(), ext);
+std::optional<std::string> writable(const std::string& extension) {
+  const auto& list = writableExtensions();
+  const std::string known = fmt::format("{}", fmt::join(list, ", "));
+  if (extension.empty()) return fmt::format("no file extension to choose the image format by ({})", known);
+  if (std::find(list.begin(), list.end(), extension) != list.end()) return std::nullopt;
+  if (auto out = OIIO::ImageOutput::create("x" + extension); !out) {
+    return fmt::format("no image format has the extension '{}' (mxc writes {})", extension, known);
+  }
+  return fmt::format("mxc does not write the '{}' format (it writes {})", extension, known);
+}
+
+std::variant<std::string, std::string> encode(const std::string& extension, const RgbaImage& image, float exposure) {
+  using Result = std::variant<std::string, std::string>;
+  if (auto why = writable(extension)) return Result(std::in_place_index<1>, *why);
+  std::vector<unsigned char> buffer;
+  OIIO::Filesystem::IOVecOutput memory(buffer);
+  const std::string name = "image" + extension;
+  auto output = OIIO::ImageOutput::create(name, &memory);
+  if (!output) return Result(std::in_place_index<1>, OIIO::geterror());
   const size_t count = size_t(image.width) * image.height;
   bool ok = false;
-  if (linear) {
+  if (extension == ".exr") {
     OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::HALF);
     spec.attribute("compression", "zip");
-    ok = output->open(temp.string(), spec) && output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
+    ok = output->open(name, spec) && output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
+  } else if (extension == ".hdr") {
+    // Radiance RGBE: linear RGB, no alpha.
+    std::vector<float> rgb(count * 3);
+    for (size_t i = 0; i < count; ++i) {
+      for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = image.pixels[i * 4 + c];
+    }
+    OIIO::ImageSpec spec(int(image.width), int(image.height), 3, OIIO::TypeDesc::FLOAT);
+    ok = output->open(name, spec) && output->write_image(OIIO::TypeDesc::FLOAT, rgb.data());
   } else {
     const float scale = std::exp2(exposure);
     std::vector<uint8_t> bytes(count * 3);
@@ -75,21 +176,16 @@ std::optional<std::string> write(const std::filesystem::path& path, const RgbaIm
       }
     }
     OIIO::ImageSpec spec(int(image.width), int(image.height), 3, OIIO::TypeDesc::UINT8);
-    ok = output->open(temp.string(), spec) && output->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+    ok = output->open(name, spec) && output->write_image(OIIO::TypeDesc::UINT8, bytes.data());
   }
   std::string why = ok ? "" : output->geterror();
   ok = output->close() && ok;
-  output.reset();
-  std::error_code ec;
-  if (ok) std::filesystem::rename(temp, path, ec);
-  if (!ok || ec) {
-    std::filesystem::remove(temp, ec);
-    return fmt::format("cannot write {}: {}", path.string(), why.empty() ? ec.message() : why);
-  }
-  return std::nullopt;
+  if (why.empty()) why = output->geterror();
+  if (!ok || buffer.empty()) return Result(std::in_place_index<1>, why.empty() ? "the encoder failed" : why);
+  return Result(std::in_place_index<0>, std::string(buffer.begin(), buffer.end()));
 }
 
-const ImageCodec kCodec{read, write};
+const ImageCodec kCodec{read, encode, writable};
 
 }  // namespace
 }  // namespace mxc::rt

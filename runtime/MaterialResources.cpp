@@ -4,12 +4,13 @@
 
 #include <fmt/format.h>
 
+#include "compiler/common/InputFile.h"
 #include "runtime/ImageIO.h"
 
 namespace mxc::rt {
 
 MaterialResources::MaterialResources(VulkanContext& context, const glsl::MaterialInterface& material,
-                                     const std::filesystem::path& folder, std::vector<std::string>& warnings)
+                                     const std::filesystem::path& folder, Diagnostics& diagnostics)
     : context_(context), material_(material) {
   uint32_t missing = 0;
   for (size_t k = 0; k < material.textures.size(); ++k) {
@@ -18,24 +19,28 @@ MaterialResources::MaterialResources(VulkanContext& context, const glsl::Materia
     if (path.is_relative()) path = folder / path;
     RgbaImage pixels;
     if (t.path.empty()) {
-      warnings.push_back(fmt::format("an image node has no file: its default value is used"));
-      missing |= 1u << (k % 32);
+      diagnostics.warning(t.origin, "an image node has no file: its default value is used");
+    } else if (auto problem = inputFileProblem(path); problem && *problem != "it does not exist") {
+      // A FIFO would block and /dev/zero would never end: refused before anything opens them.
+      diagnostics.error(t.origin, fmt::format("cannot read image '{}': {}", path.string(), *problem));
     } else {
-      auto read = readImage(path);
+      ImageReadOptions options;
+      options.maxDimension = context.maxImageDimension2D();
+      // MaterialX colour space "srgb_texture": sRGB-encoded values, decoded to linear on reading.
+      options.srgbDecode = t.colorspace == "srgb_texture";
+      std::vector<std::string> warnings;
+      auto read = readImage(path, options, &warnings);
+      for (const std::string& w : warnings) diagnostics.warning(t.origin, w);
       if (auto* error = std::get_if<std::string>(&read)) {
-        warnings.push_back(*error + ": the image node's default value is used");
-        missing |= 1u << (k % 32);
+        diagnostics.warning(t.origin, *error + ": the image node's default value is used");
       } else {
         pixels = std::move(std::get<RgbaImage>(read));
-        if (t.colorspace == "srgb_texture") {
-          // MaterialX colour space "srgb_texture": sRGB-encoded values, decoded to linear here.
-          for (size_t i = 0; i < pixels.pixels.size(); ++i) {
-            if (i % 4 != 3) pixels.pixels[i] = srgbToLinear(pixels.pixels[i]);
-          }
-        }
       }
     }
-    if (pixels.pixels.empty()) pixels = RgbaImage{1, 1, {0.0f, 0.0f, 0.0f, 1.0f}};
+    if (pixels.pixels.empty()) {
+      missing |= 1u << (k % 32);
+      pixels = RgbaImage{1, 1, {0.0f, 0.0f, 0.0f, 1.0f}};
+    }
     Image image = context.createImage(pixels.width, pixels.height, VK_FORMAT_R32G32B32A32_SFLOAT,
                                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
     context.upload(image, pixels.pixels.data());

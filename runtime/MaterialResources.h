@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "compiler/common/Diagnostic.h"
 #include "compiler/glsl/ShaderBuilder.h"
 #include "runtime/AlbedoTables.h"
 #include "runtime/Descriptors.h"
@@ -15,10 +16,12 @@ namespace mxc::rt {
 
 class MaterialResources {
  public:
-  /// Reads the material's textures, relative paths from `folder`. A texture that cannot be read
-  /// is reported in `warnings` and the shader uses the image node's default instead.
+  /// Reads the material's textures, relative paths from `folder`, reported at the image node's
+  /// `file` input: a missing or unreadable file is a warning and the shader uses the node's
+  /// default instead; a path that is not a regular file (a FIFO, a device, a directory) is an
+  /// error. Images beyond the device's size limit are downsampled (a warning).
   MaterialResources(VulkanContext& context, const glsl::MaterialInterface& material, const std::filesystem::path& folder,
-                    std::vector<std::string>& warnings);
+                    Diagnostics& diagnostics);
   ~MaterialResources();
   MaterialResources(const MaterialResources&) = delete;
   MaterialResources& operator=(const MaterialResources&) = delete;

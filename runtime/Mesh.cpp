@@ -1,11 +1,12 @@
 #include "runtime/Mesh.h"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
+
+#include "compiler/common/InputFile.h"
 
 namespace mxc::rt {
 
@@ -85,8 +86,11 @@ Mesh makePlane() {
 }
 
 std::variant<Mesh, std::string> loadObj(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) return fmt::format("{}: cannot read the file", path.string());
+  // A regular file of bounded size: `--mesh /dev/zero` would read forever and a FIFO block.
+  constexpr size_t kMaxMeshBytes = size_t{2} << 30;
+  auto bytes = readInputFile(path, kMaxMeshBytes);
+  if (auto* why = std::get_if<1>(&bytes)) return fmt::format("cannot read the mesh '{}': {}", path.string(), *why);
+  std::istringstream in(std::move(std::get<0>(bytes)));
   std::vector<glm::vec3> positions, normals;
   std::vector<glm::vec2> uvs;
   Mesh mesh;
@@ -140,7 +144,7 @@ std::variant<Mesh, std::string> loadObj(const std::filesystem::path& path) {
       for (size_t k = 1; k + 1 < face.size(); ++k) mesh.indices.insert(mesh.indices.end(), {face[0], face[k], face[k + 1]});
     }
   }
-  if (mesh.indices.empty()) return fmt::format("{}: no faces", path.string());
+  if (mesh.indices.empty()) return fmt::format("{}: the mesh has no faces (f lines)", path.string());
   if (computeNormals) {
     for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
       Vertex* v[3] = {&mesh.vertices[mesh.indices[i]], &mesh.vertices[mesh.indices[i + 1]], &mesh.vertices[mesh.indices[i + 2]]};

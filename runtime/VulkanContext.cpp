@@ -126,6 +126,7 @@ VulkanContext::VulkanContext(const DeviceOptions& options) {
   }
   physical_ = devices[static_cast<size_t>(chosen)];
   deviceName_ = properties[static_cast<size_t>(chosen)].deviceName;
+  maxImageDimension2D_ = properties[static_cast<size_t>(chosen)].limits.maxImageDimension2D;
 
   uint32_t families = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physical_, &families, nullptr);
@@ -207,6 +208,11 @@ void VulkanContext::destroy(Buffer& b) {
 
 Image VulkanContext::createImage(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
                                  VkSamplerAddressMode addressU, VkSamplerAddressMode addressV) {
+  // vkCreateImage with an extent past the device's limit is undefined behaviour (VUID-VkImageCreateInfo-extent-02252).
+  if (width == 0 || height == 0 || width > maxImageDimension2D_ || height > maxImageDimension2D_) {
+    throw VulkanError(fmt::format("an image of {}x{} is beyond the device's limit of {} per side", width, height,
+                                  maxImageDimension2D_));
+  }
   Image img;
   img.width = width;
   img.height = height;

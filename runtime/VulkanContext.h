@@ -62,6 +62,8 @@ class VulkanContext {
   VkQueue queue() const { return queue_; }
   uint32_t queueFamily() const { return queueFamily_; }
   const std::string& deviceName() const { return deviceName_; }
+  /// The largest width or height of a 2D image the device takes (VkPhysicalDeviceLimits).
+  uint32_t maxImageDimension2D() const { return maxImageDimension2D_; }
   /// Every device the loader sees, "index: name (type)".
   static std::vector<std::string> listDevices();
 
@@ -71,6 +73,7 @@ class VulkanContext {
 
   Buffer createBuffer(VkDeviceSize size, VkBufferUsageFlags usage);
   void destroy(Buffer& buffer);
+  /// Throws VulkanError for a size the device does not take (callers downsample first).
   /// A sampled image's sampler clamps unless told otherwise: mxc's shaders address in the
   /// shader (MaterialX address modes); other generators' shaders rely on the sampler.
   Image createImage(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
@@ -110,6 +113,7 @@ class VulkanContext {
   VkCommandPool pool_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
   std::string deviceName_;
+  uint32_t maxImageDimension2D_ = 4096;  // the least any Vulkan 1.0 device guarantees
   std::unique_ptr<std::vector<std::string>> messages_ = std::make_unique<std::vector<std::string>>();
 };
 

@@ -60,6 +60,8 @@ class SourceManager {
  public:
   /// Keeps a text in memory under a name; returns the stable file object.
   const SourceFile& add(std::string path, std::string text);
+  /// Every text kept so far, in the order they were added.
+  const std::deque<std::unique_ptr<SourceFile>>& files() const { return files_; }
 
  private:
   std::deque<std::unique_ptr<SourceFile>> files_;

@@ -137,7 +137,11 @@ std::string ExprEmitter::texture(const std::string& path, const std::string& col
   for (const TextureBinding& t : textures_) {
     if (t.path == path && t.colorspace == colorspace) return t.name;
   }
-  TextureBinding t{path, colorspace, nextTexture_++, fmt::format("mxc_texture_{}", textures_.size())};
+  SourceLocation origin;
+  for (const ir::ImageFile& image : m_.images) {
+    if (image.path == path) origin = image.origin.location;
+  }
+  TextureBinding t{path, colorspace, nextTexture_++, fmt::format("mxc_texture_{}", textures_.size()), origin};
   textures_.push_back(t);
   return t.name;
 }

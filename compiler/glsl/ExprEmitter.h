@@ -18,6 +18,7 @@ struct TextureBinding {
   std::string colorspace;  ///< the file input's colour space ("srgb_texture" is decoded to linear)
   uint32_t binding = 0;
   std::string name;  ///< GLSL sampler name
+  SourceLocation origin;  ///< the image node's `file` input, for errors about the file
 };
 
 /// GLSL lines with the document position each came from (for error mapping).

@@ -33,6 +33,12 @@ struct Parameter {
   Origin origin;
 };
 
+/// An image file a material reads, with the input that names it (for errors about the file).
+struct ImageFile {
+  std::string path;  ///< as the document resolves it (fileprefix applied), as in Op::Texture
+  Origin origin;     ///< the first `file` input that names it
+};
+
 struct Material {
   std::string name;          ///< the material node's name (or a graph output's, for pbrlib graphs)
   std::string shader;        ///< the shading node's category (open_pbr_surface, standard_surface, surface)
@@ -48,7 +54,15 @@ struct Material {
   std::vector<Effect> effects;
   std::vector<Note> notes;
   std::vector<Parameter> parameters;
+  std::vector<ImageFile> images;
 
+  /// Records that an image node reads `path` (once per path).
+  void addImage(const std::string& path, Origin from) {
+    for (const ImageFile& i : images) {
+      if (i.path == path) return;
+    }
+    images.push_back({path, from});
+  }
   Index addNode(ScatterNode node) {
     nodes.push_back(std::move(node));
     return static_cast<Index>(nodes.size() - 1);

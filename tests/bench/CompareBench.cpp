@@ -203,8 +203,10 @@ json renderBoth(RenderRig& rig, const json& entry, const mxc::glsl::MaterialShad
   const std::string name = entry.at("name");
   const fs::path folder = fs::path(entry.at("mtlx").get<std::string>()).parent_path();
   json out;
+  mxc::Diagnostics diagnostics;
+  mxc::rt::MaterialResources resources(rig.context, ours.interface, folder, diagnostics);
   std::vector<std::string> warnings;
-  mxc::rt::MaterialResources resources(rig.context, ours.interface, folder, warnings);
+  for (const mxc::Diagnostic& d : diagnostics.all()) warnings.push_back(d.format());
   mxc::rt::RenderResult mine = rig.renderer.render(rig.sphere, resources, ours.interface, ourWords, rig.settings);
   auto loaded = mxc::bench::MaterialXShader::load(readText(entry.at("vertex").get<std::string>()),
                                                   readText(entry.at("pixel").get<std::string>()),

@@ -114,8 +114,7 @@ int main(int argc, char** argv) {
   settings.frames = frames;
   settings.lights.push_back({mxc::rt::Light::Kind::Directional, glm::normalize(glm::vec3(-1, 1.2f, 1.5f)), glm::vec3(1), 2});
   auto frameMs = [&](const Compiled& c) {
-    std::vector<std::string> warnings;
-    mxc::rt::MaterialResources resources(context, c.shader.interface, {}, warnings);
+    mxc::rt::MaterialResources resources(context, c.shader.interface, {}, diagnostics);
     std::vector<double> times;
     for (int r = 0; r < std::max(1, repeat / 2); ++r) {
       times.push_back(renderer.render(sphere, resources, c.shader.interface, c.words, settings).msPerFrame);

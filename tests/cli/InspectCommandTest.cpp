@@ -113,7 +113,8 @@ TEST(InspectCommand, MissingFileExitsOne) {
 }
 
 TEST(InspectCommand, OutputFileIsWrittenWholeOrNotAtAll) {
-  fs::path out = fs::temp_directory_path() / ("mxc_cli_report_" + std::to_string(::getpid()) + ".json");
+  TempFolder folder("report");
+  const fs::path out = folder / "report.json";
   std::ofstream(out) << "previous";
   // A failing run leaves the previous file as it was.
   fs::path bad = writeTemp("bad2.mtlx", mtlx("  <nosuchnode name=\"a\" type=\"float\"/>\n"));
@@ -125,12 +126,9 @@ TEST(InspectCommand, OutputFileIsWrittenWholeOrNotAtAll) {
   std::ifstream after(out);
   nlohmann::json j = nlohmann::json::parse(std::string(std::istreambuf_iterator<char>(after), {}));
   EXPECT_EQ(j["schema"], "mxc-inspect-1");
-  for (const auto& entry : fs::directory_iterator(out.parent_path())) {
-    EXPECT_EQ(entry.path().filename().string().find(".mxc_cli_report_"), std::string::npos) << entry.path();
-  }
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"report.json"}));
   // An output folder that does not exist is an output failure (3), not a document error.
   EXPECT_EQ(mxc("inspect -o /no/such/folder/r.txt " + corpus("openpbr-presets/open_pbr_glass.mtlx")).exitCode, 3);
-  fs::remove(out);
   fs::remove(bad);
 }
 

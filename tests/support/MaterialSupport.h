@@ -94,8 +94,9 @@ inline Prepared prepare(const ir::Material& material, glsl::ShaderKind kind, con
   Prepared p;
   p.shader = glsl::buildMaterialShader(material, kind);
   p.words = compileShader(p.shader);
-  std::vector<std::string> warnings;
-  if (p.ok()) p.resources = std::make_unique<rt::MaterialResources>(Device::get().context, p.shader.interface, folder, warnings);
+  Diagnostics diagnostics;
+  if (p.ok()) p.resources = std::make_unique<rt::MaterialResources>(Device::get().context, p.shader.interface, folder, diagnostics);
+  EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.format();
   return p;
 }
 

@@ -1,0 +1,195 @@
+// Inputs that would hang, exhaust memory or mislead: special files where files are expected,
+// graphs deep enough to blow up a report, images past the device's limits, documents with a
+// million errors, damaged images, and an mxc moved away from its build tree.
+
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+
+#include <thread>
+
+#include "runtime/ImageIO.h"
+#include "support/CommandSupport.h"
+
+namespace mxc::test {
+namespace {
+
+const std::string kDefault = "materialx/examples/OpenPbr/open_pbr_default.mtlx";
+
+
+/// A chain of `n` add nodes feeding base_weight: n + 5 lines.
+std::string chainDocument(int n) {
+  std::string body = "  <constant name=\"n0\" type=\"float\"><input name=\"value\" type=\"float\" value=\"0.5\"/></constant>\n";
+  for (int i = 1; i < n; ++i) {
+    body += "  <add name=\"n" + std::to_string(i) + "\" type=\"float\"><input name=\"in1\" type=\"float\" nodename=\"n" +
+            std::to_string(i - 1) + "\"/></add>\n";
+  }
+  body += "  <open_pbr_surface name=\"s\" type=\"surfaceshader\"><input name=\"base_weight\" type=\"float\" nodename=\"n" +
+          std::to_string(n - 1) + "\"/></open_pbr_surface>\n";
+  return mtlx(body);
+}
+
+// --- Inputs that are not regular files -------------------------------------------------------
+
+TEST(InputSafety, SpecialFilesAreRefusedNotRead) {
+  TempFolder folder("inputs");
+  const fs::path fifo = folder / "fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+  fs::create_directories(folder / "dir");
+  // `timeout` guards the test itself: before the fix a FIFO blocked and /dev/zero spun forever.
+  const std::string guard = "timeout 120";
+  struct Case {
+    std::string what, arguments, message;
+  };
+  std::vector<Case> cases;
+  for (const auto& [path, kind] : {std::pair{fifo.string(), "it is a FIFO"}, std::pair{std::string("/dev/zero"), "it is a character device"},
+                                   std::pair{(folder / "dir").string(), "it is a directory"}}) {
+    const fs::path doc = folder / ("image_" + std::to_string(cases.size()) + ".mtlx");
+    writeText(doc, imageDocument(path));
+    // The image error is at the file input: line 4 of the document.
+    cases.push_back({"image " + path, "render " + doc.string() + " -o " + (folder / "x.png").string() + " --size 8 --spp 1",
+                     doc.string() + ":4:5: error: cannot read image '" + path + "': " + kind});
+    cases.push_back({"mesh " + path, "render " + corpus(kDefault) + " -o " + (folder / "x.png").string() + " --mesh " + path,
+                     "cannot read the mesh '" + path + "': " + kind});
+    cases.push_back({"document " + path, "inspect " + path, "cannot read '" + path + "': " + kind});
+    cases.push_back({"directions " + path, "eval " + corpus(kDefault) + " --dirs " + path,
+                     "cannot read the directions '" + path + "': " + kind});
+    if (path != (folder / "dir").string()) {
+      cases.push_back({"library " + path, "inspect --library " + path + " " + corpus(kDefault),
+                       "cannot read the library '" + path + "': " + kind});
+    }
+    const fs::path includer = folder / ("include_" + std::to_string(cases.size()) + ".mtlx");
+    writeText(includer, "<?xml version=\"1.0\"?>\n<materialx version=\"1.39\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
+                        "  <xi:include href=\"" + path + "\" />\n</materialx>\n");
+    cases.push_back({"include " + path, "inspect " + includer.string(),
+                     includer.string() + ":3:21: error: cannot read the included file '" + path + "': " + kind});
+  }
+  for (const Case& c : cases) {
+    CommandRun r = mxc(c.arguments, guard);
+    EXPECT_EQ(r.exitCode, 1) << c.what << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.what << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(folder / "x.png"));
+}
+
+// --- Blow-ups ------------------------------------------------------------------------------
+
+TEST(InputSafety, TheTextReportOfADeepGraphIsLinear) {
+  // Indenting each node by its depth made a 10,000-node chain a 601 MB report.
+  TempFolder folder("deep");
+  writeText(folder / "deep.mtlx", chainDocument(10000));
+  CommandRun r = mxc("inspect " + (folder / "deep.mtlx").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_LT(r.out.size(), 4u << 20) << "bytes of report for 10,000 nodes";
+  EXPECT_NE(r.out.find("n1 <add> ND_add_float  line 4"), std::string::npos) << "every node is still shown";
+  EXPECT_NE(r.out.find("(continued below)"), std::string::npos);
+}
+
+TEST(InputSafety, RunningOutOfMemoryIsAnErrorNotAnAbort) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit this test sets";
+#endif
+  TempFolder folder("memory");
+  // 100,000 independent nodes (no deep recursion): about 250 MB to inspect, in 150 MB of
+  // address space.
+  std::string body;
+  for (int i = 0; i < 100000; ++i) {
+    body += "  <constant name=\"k" + std::to_string(i) + "\" type=\"float\"><input name=\"value\" type=\"float\" value=\"" +
+            std::to_string(i) + "\"/></constant>\n";
+  }
+  writeText(folder / "deep.mtlx", mtlx(body));
+  CommandRun r = mxc("inspect " + (folder / "deep.mtlx").string() + " -o " + (folder / "report.txt").string(),
+                     "ulimit -v 150000;");
+  EXPECT_EQ(r.exitCode, 4) << r.err;
+  EXPECT_NE(r.err.find("error: out of memory"), std::string::npos) << r.err;
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"deep.mtlx"})) << "no report and no temporary";
+}
+
+TEST(InputSafety, ImagesBeyondTheDeviceLimitAreDownsampled) {
+  // Lavapipe takes 16384 texels per side: a 20000 x 4 image went to vkCreateImage as it was.
+  TempFolder folder("large");
+  rt::RgbaImage wide{20000, 4, std::vector<float>(20000 * 4 * 4, 0.5f)};
+  ASSERT_FALSE(rt::writeImage(folder / "wide.exr", wide).has_value());
+  writeText(folder / "wide.mtlx", imageDocument("wide.exr"));
+  CommandRun r = mxc("render " + (folder / "wide.mtlx").string() + " -o " + (folder / "x.exr").string() +
+                     " --size 8 --spp 1 --validation");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("wide.mtlx:4:5: warning: image '" + (folder / "wide.exr").string() + "' is 20000x4"),
+            std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("box-filtered by 2 to 10000x2"), std::string::npos) << r.err;
+}
+
+TEST(InputSafety, AMillionErrorsPrintAFewHundred) {
+  TempFolder folder("errors");
+  std::string body;
+  for (int i = 0; i < 20000; ++i) body += "  <nosuchnode name=\"a" + std::to_string(i) + "\" type=\"float\"/>\n";
+  writeText(folder / "errors.mtlx", mtlx(body));
+  CommandRun r = mxc("inspect " + (folder / "errors.mtlx").string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_LT(r.err.size(), 200u << 10) << "bytes of diagnostics";
+  EXPECT_NE(r.err.find("19800 more error(s)"), std::string::npos) << r.err.substr(r.err.size() - 300);
+  // A 10 MB attribute value is not echoed whole.
+  writeText(folder / "value.mtlx", mtlx("  <open_pbr_surface name=\"s\" type=\"surfaceshader\"><input name=\"base_weight\" "
+                                        "type=\"float\" value=\"" + std::string(10 << 20, 'x') + "\"/></open_pbr_surface>\n"));
+  r = mxc("inspect " + (folder / "value.mtlx").string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_LT(r.err.size(), 4096u) << r.err.substr(0, 300);
+}
+
+// --- Misleading or missing messages ----------------------------------------------------------
+
+TEST(InputSafety, ATruncatedJpegIsAWarning) {
+  TempFolder folder("jpeg");
+  // Cut after its headers: libjpeg decodes what there is, fills the rest with grey, and says so.
+  rt::RgbaImage image{256, 256, {}};
+  for (uint32_t i = 0; i < 256 * 256; ++i) {
+    image.pixels.insert(image.pixels.end(), {float(i % 256) / 256.0f, float(i / 256) / 256.0f, 0.7f, 1.0f});
+  }
+  ASSERT_FALSE(rt::writeImage(folder / "full.jpg", image).has_value());
+  const std::string bytes = readFileBytes(folder / "full.jpg");
+  writeText(folder / "cut.jpg", bytes.substr(0, bytes.size() * 3 / 4));
+  writeText(folder / "cut.mtlx", imageDocument("cut.jpg"));
+  CommandRun r = mxc("render " + (folder / "cut.mtlx").string() + " -o " + (folder / "x.png").string() + " --size 8 --spp 1");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("cut.mtlx:4:5: warning: image '" + (folder / "cut.jpg").string() + "' is damaged"),
+            std::string::npos) << r.err;
+}
+
+TEST(InputSafety, ControlCharactersOfADocumentAreNotEchoedRaw) {
+  TempFolder folder("escape");
+  writeText(folder / "esc.mtlx", mtlx("  <foo name=\"a\x1b[31mRED\x07\" />\n"));
+  CommandRun r = mxc("inspect " + (folder / "esc.mtlx").string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << "an ESC byte reached the terminal";
+  EXPECT_EQ(r.err.find('\x07'), std::string::npos);
+  EXPECT_NE(r.err.find("a?[31mRED"), std::string::npos) << r.err;
+}
+
+// --- Where mxc finds its image module --------------------------------------------------------
+
+TEST(InputSafety, AnInstalledMxcRendersFromAnotherFolder) {
+  TempFolder folder("install");
+  const fs::path first = folder / "first", moved = folder / "moved";
+  const std::string install = std::string(MXC_CMAKE) + " --install " + MXC_BUILD_DIR + " --prefix " + first.string() +
+                              " > /dev/null";
+  ASSERT_EQ(std::system(install.c_str()), 0);
+  fs::rename(first, moved);  // relocatable: nothing of the first prefix may be needed
+  const std::string binary = (moved / "bin/mxc").string();
+  const std::string run = "cd " + folder.path().string() + " && " + binary + " render " + corpus(kDefault) +
+                          " -o out.png --size 16 --spp 1 > /dev/null";
+  EXPECT_EQ(std::system(run.c_str()), 0);
+  auto image = rt::readImage(folder / "out.png");
+  ASSERT_TRUE(std::holds_alternative<rt::RgbaImage>(image));
+  EXPECT_EQ(std::get<rt::RgbaImage>(image).width, 16u);
+  // Without its module, mxc says so before rendering, with exit code 3.
+  fs::copy_file(moved / "bin/mxc", folder / "lone-mxc");
+  const std::string lone = "cd " + folder.path().string() + " && ./lone-mxc render " + corpus(kDefault) +
+                           " -o lone.png --size 16 --spp 1 2> lone.err";
+  const int status = std::system(lone.c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 3) << status;
+  EXPECT_NE(readFileBytes(folder / "lone.err").find("cannot load the image I/O module libmxc_imageio.so"), std::string::npos);
+  EXPECT_FALSE(fs::exists(folder / "lone.png"));
+}
+
+}  // namespace
+}  // namespace mxc::test
