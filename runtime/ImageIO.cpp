@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <vector>
 
 #include <dlfcn.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "compiler/common/InputFile.h"
 #include "compiler/common/OutputFile.h"
@@ -20,19 +22,43 @@ constexpr const char* kImageModuleName = "libmxc_imageio.so";
 /// Image files larger than this are refused before they are read: 2 GiB.
 constexpr size_t kMaxImageFileBytes = size_t{2} << 30;
 
+/// Where the module is looked for: beside the executable (the build tree; test programs get a
+/// copy beside them), then in ../lib/mxc (an install, runtime/CMakeLists.txt). Relative to the
+/// executable's real path, so a moved build tree or install works. (Not by the dynamic loader's
+/// RUNPATH: under AddressSanitizer, dlopen is called from the sanitizer's runtime, whose RUNPATH
+/// is not the executable's.)
+std::vector<std::filesystem::path> moduleCandidates() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  const std::filesystem::path folder = exe.parent_path();
+  return {folder / kImageModuleName, (folder / ".." / "lib" / "mxc" / kImageModuleName).lexically_normal()};
+}
+
 /// The codec of the OpenImageIO module, loaded once; null with `error` set when it cannot be.
 const ImageCodec* codec(std::string& error) {
   static std::string loadError;
   static const ImageCodec* loaded = []() -> const ImageCodec* {
-    // By name, not by path: the dynamic loader searches the executable's RUNPATH, which is
-    // $ORIGIN in the build tree (the module sits beside mxc) and $ORIGIN/../lib/mxc in an
-    // install (runtime/CMakeLists.txt), so a moved or installed mxc finds its own module.
-    void* module = dlopen(kImageModuleName, RTLD_NOW | RTLD_LOCAL);
+    std::vector<std::string> tried;
+    void* module = nullptr;
+    for (const std::filesystem::path& candidate : moduleCandidates()) {
+      std::error_code ec;
+      if (!std::filesystem::exists(candidate, ec)) {
+        tried.push_back(candidate.string());
+        continue;
+      }
+      module = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+      if (!module) {
+        const char* why = dlerror();
+        loadError = fmt::format("cannot load the image I/O module {}: {}", candidate.string(), why ? why : "unknown error");
+        return nullptr;
+      }
+      break;
+    }
     if (!module) {
-      const char* why = dlerror();
-      loadError = fmt::format(
-          "cannot load the image I/O module {} (looked for beside the executable and in ../lib/mxc): {}",
-          kImageModuleName, why ? why : "unknown error");
+      loadError = fmt::format("cannot load the image I/O module {}: it is neither beside the executable nor in "
+                              "../lib/mxc (looked for {})",
+                              kImageModuleName, fmt::join(tried, " and "));
       return nullptr;
     }
     auto entry = reinterpret_cast<const ImageCodec* (*)()>(dlsym(module, "mxc_image_codec"));

@@ -119,15 +119,15 @@ TEST(InputSafety, ImagesBeyondTheDeviceLimitAreDownsampled) {
   EXPECT_NE(r.err.find("box-filtered by 2 to 10000x2"), std::string::npos) << r.err;
 }
 
-TEST(InputSafety, AMillionErrorsPrintAFewHundred) {
+TEST(InputSafety, ThousandsOfErrorsPrintAFewHundred) {
   TempFolder folder("errors");
   std::string body;
-  for (int i = 0; i < 20000; ++i) body += "  <nosuchnode name=\"a" + std::to_string(i) + "\" type=\"float\"/>\n";
+  for (int i = 0; i < 5000; ++i) body += "  <nosuchnode name=\"a" + std::to_string(i) + "\" type=\"float\"/>\n";
   writeText(folder / "errors.mtlx", mtlx(body));
   CommandRun r = mxc("inspect " + (folder / "errors.mtlx").string());
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_LT(r.err.size(), 200u << 10) << "bytes of diagnostics";
-  EXPECT_NE(r.err.find("19800 more error(s)"), std::string::npos) << r.err.substr(r.err.size() - 300);
+  EXPECT_NE(r.err.find("4800 more error(s)"), std::string::npos) << r.err.substr(r.err.size() - 300);
   // A 10 MB attribute value is not echoed whole.
   writeText(folder / "value.mtlx", mtlx("  <open_pbr_surface name=\"s\" type=\"surfaceshader\"><input name=\"base_weight\" "
                                         "type=\"float\" value=\"" + std::string(10 << 20, 'x') + "\"/></open_pbr_surface>\n"));
@@ -187,7 +187,8 @@ TEST(InputSafety, AnInstalledMxcRendersFromAnotherFolder) {
                            " -o lone.png --size 16 --spp 1 2> lone.err";
   const int status = std::system(lone.c_str());
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 3) << status;
-  EXPECT_NE(readFileBytes(folder / "lone.err").find("cannot load the image I/O module libmxc_imageio.so"), std::string::npos);
+  EXPECT_NE(readFileBytes(folder / "lone.err").find("cannot load the image I/O module libmxc_imageio.so"), std::string::npos)
+      << readFileBytes(folder / "lone.err");
   EXPECT_FALSE(fs::exists(folder / "lone.png"));
 }
 
