@@ -37,11 +37,16 @@ int runCompile(const CompileOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   Session session;
   MaterialPipeline pipeline(session);
-  if (int code = pipeline.run(options.file, options.materials); code != kOk) return code;
-  const bool several = pipeline.materials.size() > 1;
+  CompileRequest request;
+  request.document = options.file;
+  request.stage = kindOf(options.stage);
+  request.optimize = options.optimize;
+  if (int code = pipeline.run(std::move(request), options.materials); code != kOk) return code;
+  Compiler& compiler = pipeline.compiler();
+  const bool several = pipeline.materials().size() > 1;
   // Every output is declared and checked before anything is compiled or written.
   OutputSet outputs;
-  for (const ir::Material& material : pipeline.materials) {
+  for (const ir::Material& material : pipeline.materials()) {
     for (const auto& [path, option] : {std::pair{options.output, "-o"}, std::pair{options.glsl, "--glsl"}}) {
       if (path.empty()) continue;
       if (printError(outputs.declare(perMaterialPath(path, material.name, several), option))) return kOutputFailed;
@@ -51,11 +56,9 @@ int runCompile(const CompileOptions& options) {
   // A module on standard output would be mixed with the summary lines.
   const bool quiet = options.quiet || options.output == "-" || options.glsl == "-";
   int result = kOk;
-  for (const ir::Material& material : pipeline.materials) {
-    glsl::MaterialShader shader = glsl::buildMaterialShader(material, kindOf(options.stage));
-    spirv::CompileOptions compile;
-    compile.optimize = options.optimize;
-    std::optional<std::vector<uint32_t>> words = spirv::compile(shader.glsl, compile, session.diagnostics);
+  for (const ir::Material& material : pipeline.materials()) {
+    glsl::MaterialShader shader = compiler.shader(material);
+    std::optional<std::vector<uint32_t>> words = compiler.spirv(shader);
     session.printDiagnostics();
     if (!options.glsl.empty()) {
       // The GLSL is produced even when glslang rejects it, so that the failing line can be read.
@@ -73,10 +76,11 @@ int runCompile(const CompileOptions& options) {
     }
     if (!quiet) {
       std::vector<std::string> lobes;
-      for (const std::string& k : shader.interface.features.lobeKinds) lobes.push_back(k.substr(9));
+      shader.interface.lobeKinds.forEach([&](ir::LobeKind k) { lobes.emplace_back(ir::lobeKindName(k)); });
+      std::sort(lobes.begin(), lobes.end());
       std::printf("%s: %s shader, %zu GLSL lines, %zu SPIR-V instructions; lobes %d (%s)%s%s\n", material.name.c_str(),
                   std::string(glsl::shaderKindName(kindOf(options.stage))).c_str(),
-                  shader.glsl.origins.size(), spirv::instructionCount(*words), shader.interface.features.lobes,
+                  shader.glsl.origins.size(), spirv::instructionCount(*words), shader.interface.lobes,
                   fmt::format("{}", fmt::join(lobes, ", ")).c_str(),
                   shader.interface.textures.empty() ? "" : fmt::format("; {} texture(s)", shader.interface.textures.size()).c_str(),
                   shader.interface.parameters.size() > 3
@@ -92,7 +96,7 @@ int runCompile(const CompileOptions& options) {
   }
   if (!quiet) {
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::printf("compiled %zu material(s) in %.1f ms\n", pipeline.materials.size(), ms);
+    std::printf("compiled %zu material(s) in %.1f ms\n", pipeline.materials().size(), ms);
   }
   return result;
 }

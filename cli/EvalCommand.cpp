@@ -104,15 +104,17 @@ int runEval(const EvalOptions& options) {
   if (!readDirections(options.dirs, rows)) return kInvalidDocument;
   Session session;
   MaterialPipeline pipeline(session);
-  if (int code = pipeline.run(options.file, options.materials); code != kOk) return code;
+  CompileRequest request;
+  request.document = options.file;
+  if (int code = pipeline.run(std::move(request), options.materials); code != kOk) return code;
   OutputSet outputs;
   if (int code = declareReport(outputs, options.output, pipeline, options.dirs); code != kOk) return code;
   Device device(options.device);
   rt::AlbedoTables* tables = device.tables();
   if (!tables) return kInvalidDocument;
   std::string csv = "material,row,fcos_r,fcos_g,fcos_b,pdf\n";
-  for (const ir::Material& material : pipeline.materials) {
-    auto program = prepareMaterial(session, *device.context(), material, glsl::ShaderKind::Eval, pipeline.documentFolder);
+  for (const ir::Material& material : pipeline.materials()) {
+    auto program = prepareMaterial(pipeline, session, *device.context(), material, glsl::ShaderKind::Eval);
     if (!program) return kInvalidDocument;
     rt::MaterialEvaluator evaluator(*device.context(), *tables, *program->resources, program->shader.interface,
                                     program->spirv);
@@ -141,7 +143,9 @@ nlohmann::json vec(glm::vec3 v) { return nlohmann::json::array({v.x, v.y, v.z});
 int runFurnace(const FurnaceOptions& options) {
   Session session;
   MaterialPipeline pipeline(session);
-  if (int code = pipeline.run(options.file, options.materials); code != kOk) return code;
+  CompileRequest request;
+  request.document = options.file;
+  if (int code = pipeline.run(std::move(request), options.materials); code != kOk) return code;
   OutputSet outputs;
   if (int code = declareReport(outputs, options.output, pipeline); code != kOk) return code;
   Device device(options.device);
@@ -159,10 +163,10 @@ int runFurnace(const FurnaceOptions& options) {
                         {"samples", options.samples},
                         {"device", device.context()->deviceName()},
                         {"materials", nlohmann::json::array()}};
-  Progress progress(pipeline.materials.size());
-  for (const ir::Material& material : pipeline.materials) {
+  Progress progress(pipeline.materials().size());
+  for (const ir::Material& material : pipeline.materials()) {
     progress.step(material.name);
-    auto program = prepareMaterial(session, *device.context(), material, glsl::ShaderKind::Furnace, pipeline.documentFolder);
+    auto program = prepareMaterial(pipeline, session, *device.context(), material, glsl::ShaderKind::Furnace);
     if (!program) return kInvalidDocument;
     rt::FurnaceEstimator furnace(*device.context(), *tables, *program->resources, program->shader.interface,
                                  program->spirv);

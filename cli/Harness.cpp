@@ -47,18 +47,20 @@ bool Device::checkValidation() {
   return context_->validationMessages().empty();
 }
 
-std::optional<MaterialProgram> prepareMaterial(Session& session, rt::VulkanContext& context, const ir::Material& material,
-                                               glsl::ShaderKind kind, const std::filesystem::path& folder) {
+std::optional<MaterialProgram> prepareMaterial(MaterialPipeline& pipeline, Session& session, rt::VulkanContext& context,
+                                               const ir::Material& material, glsl::ShaderKind kind) {
   MaterialProgram program;
-  program.shader = glsl::buildMaterialShader(material, kind);
-  auto words = spirv::compile(program.shader.glsl, {}, session.diagnostics);
+  program.shader = pipeline.compiler().shader(material, kind);
+  auto words = pipeline.compiler().spirv(program.shader);
   session.printDiagnostics();
   if (!words) return std::nullopt;
   program.spirv = std::move(*words);
-  const size_t errors = session.diagnostics.errorCount();
-  program.resources = std::make_unique<rt::MaterialResources>(context, program.shader.interface, folder, session.diagnostics);
+  Diagnostics& diagnostics = session.workspace.diagnostics;
+  const size_t errors = diagnostics.errorCount();
+  program.resources =
+      std::make_unique<rt::MaterialResources>(context, program.shader.interface, pipeline.documentFolder(), diagnostics);
   session.printDiagnostics();
-  if (session.diagnostics.errorCount() > errors) return std::nullopt;
+  if (diagnostics.errorCount() > errors) return std::nullopt;
   return program;
 }
 

@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/MaterialPipeline.h"
 #include "cli/Session.h"
 #include "compiler/glsl/ShaderBuilder.h"
 #include "runtime/AlbedoTables.h"
@@ -53,10 +54,10 @@ struct MaterialProgram {
 };
 
 /// Builds and compiles the material's shader of `kind` and loads its textures (relative paths
-/// from `folder`; warnings printed). Nullopt when it does not compile or a texture path is not a
+/// from the document's folder; warnings printed). Nullopt when it does not compile or a texture path is not a
 /// regular file (diagnostics printed).
-std::optional<MaterialProgram> prepareMaterial(Session& session, rt::VulkanContext& context, const ir::Material& material,
-                                               glsl::ShaderKind kind, const std::filesystem::path& folder);
+std::optional<MaterialProgram> prepareMaterial(MaterialPipeline& pipeline, Session& session, rt::VulkanContext& context,
+                                               const ir::Material& material, glsl::ShaderKind kind);
 
 /// "[k/n] what" on stderr, rewritten in place, only when stderr is a terminal.
 class Progress {

@@ -9,13 +9,9 @@
 #include "cli/ExitCode.h"
 #include "cli/MaterialPipeline.h"
 #include "cli/Session.h"
-#include "compiler/document/DocumentLoader.h"
+#include "compiler/driver/Compiler.h"
 #include "compiler/inspect/Inspect.h"
-#include "compiler/ir/Effects.h"
 #include "compiler/ir/Print.h"
-#include "compiler/ir/passes/Pass.h"
-#include "compiler/lower/Lowering.h"
-#include "compiler/resolve/Resolver.h"
 
 namespace mxc::cli {
 
@@ -38,37 +34,30 @@ int runInspect(const InspectOptions& options) {
   OutputSet outputs;
   if (printError(outputs.declare(output, "-o"))) return kOutputFailed;
   Session session;
-  session.loadLibraries(options.libraries);
-  doc::DocumentLoader loader(session.sources, session.diagnostics);
-  const doc::Document* document = session.diagnostics.hasErrors() ? nullptr : loader.loadFile(options.file);
-  if (!document) {
-    session.printDiagnostics();
-    return kInvalidDocument;
-  }
-  resolve::ResolvedDocument resolved = resolve::resolveDocument(*document, session.libraries.top(), session.diagnostics);
+  CompileRequest request;
+  request.document = options.file;
+  request.partial = options.partial;
+  request.lowering.useShadingModelGraphs = options.shadingModelGraphs;
+  if (!requestInputs(options.inputs, request)) return kUsage;
+  const bool libraries = session.loadLibraries(options.libraries);
+  Compiler compiler(session.workspace, std::move(request));
+  const doc::Document* document = libraries ? compiler.document() : nullptr;
+  const resolve::ResolvedDocument* resolved = document ? compiler.resolved() : nullptr;
   session.printDiagnostics();
-  bool failed = session.diagnostics.hasErrors();
-  if (failed && !options.partial) {
+  if (!resolved) return kInvalidDocument;
+  const Diagnostics& diagnostics = session.workspace.diagnostics;
+  auto stop = [&] {
     std::fprintf(stderr, "%s: %zu error(s); no report written (--partial writes one anyway)\n", options.file.c_str(),
-                 session.diagnostics.errorCount());
+                 diagnostics.errorCount());
     return kInvalidDocument;
-  }
+  };
+  bool failed = diagnostics.hasErrors();
+  if (failed && !options.partial) return stop();
   std::string report;
   if (options.ir) {
-    lower::LoweringOptions lowering;
-    if (!inputOptions(options.inputs, lowering)) return kUsage;
-    lowering.useShadingModelGraphs = options.shadingModelGraphs;
-    std::vector<ir::Material> materials = lower::lowerDocument(resolved, lowering, session.diagnostics);
-    for (ir::Material& m : materials) {
-      ir::runPasses(m);
-      ir::summarizeEffects(m);
-    }
+    const std::vector<ir::Material>& materials = compiler.materials();
     session.printDiagnostics();
-    if (session.diagnostics.hasErrors() && !options.partial) {
-      std::fprintf(stderr, "%s: %zu error(s); no report written (--partial writes one anyway)\n", options.file.c_str(),
-                   session.diagnostics.errorCount());
-      return kInvalidDocument;
-    }
+    if (diagnostics.hasErrors() && !options.partial) return stop();
     if (options.json) {
       nlohmann::json j{{"schema", "mxc-ir-1"}, {"document", document->path()}, {"materials", nlohmann::json::array()}};
       for (const ir::Material& m : materials) j["materials"].push_back(ir::materialJson(m));
@@ -77,7 +66,7 @@ int runInspect(const InspectOptions& options) {
       for (const ir::Material& m : materials) report += ir::printMaterial(m, &document->source()) + "\n";
     }
   } else {
-    inspect::InspectInput input{resolved, session.diagnostics, session.libraryInfo};
+    inspect::InspectInput input{*resolved, diagnostics, session.workspace.libraryInfo};
     report = options.json  ? inspect::inspectJson(input).dump(2) + "\n"
              : options.dot ? inspect::inspectDot(input)
                            : inspect::inspectText(input);
@@ -85,7 +74,7 @@ int runInspect(const InspectOptions& options) {
   if (printError(session.checkOutputsAreNotSources(outputs))) return kUsage;
   if (printError(outputs.stage(output, std::move(report)))) return kOutputFailed;
   if (printError(outputs.commit())) return kOutputFailed;
-  return failed || session.diagnostics.hasErrors() ? kInvalidDocument : kOk;
+  return failed || diagnostics.hasErrors() ? kInvalidDocument : kOk;
 }
 
 }  // namespace

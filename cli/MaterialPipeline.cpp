@@ -5,10 +5,6 @@
 #include <fmt/format.h>
 
 #include "cli/ExitCode.h"
-#include "compiler/ir/Effects.h"
-#include "compiler/ir/passes/Pass.h"
-#include "compiler/lower/Lowering.h"
-#include "compiler/resolve/Resolver.h"
 
 namespace mxc::cli {
 
@@ -26,16 +22,17 @@ void addInputOptions(CLI::App& command, MaterialOptions& options) {
       ->allow_extra_args(false);
 }
 
-bool inputOptions(const MaterialOptions& options, lower::LoweringOptions& lowering) {
+bool requestInputs(const MaterialOptions& options, CompileRequest& request) {
   for (const std::string& s : options.set) {
     const size_t eq = s.find('=');
     if (eq == std::string::npos || eq == 0) {
       std::fprintf(stderr, "error: --set %s: expected INPUT=VALUE\n", s.c_str());
       return false;
     }
-    lowering.overrides.emplace_back(s.substr(0, eq), s.substr(eq + 1));
+    request.lowering.overrides.emplace_back(s.substr(0, eq), s.substr(eq + 1));
   }
-  lowering.parameters = options.parameters;
+  request.lowering.parameters = options.parameters;
+  request.material = options.material;
   return true;
 }
 
@@ -45,60 +42,39 @@ void addMaterialOptions(CLI::App& command, MaterialOptions& options) {
   addLibraryOptions(command, options.libraries);
 }
 
-int MaterialPipeline::run(const std::string& file, const MaterialOptions& options) {
-  lower::LoweringOptions lowering;
-  if (!inputOptions(options, lowering)) return kUsage;
-  session_.loadLibraries(options.libraries);
-  loader_ = std::make_unique<doc::DocumentLoader>(session_.sources, session_.diagnostics);
-  document = session_.diagnostics.hasErrors() ? nullptr : loader_->loadFile(file);
-  if (!document) {
+int MaterialPipeline::run(CompileRequest request, const MaterialOptions& options) {
+  if (!requestInputs(options, request)) return kUsage;
+  const std::string file = request.document.string();
+  const bool libraries = session_.loadLibraries(options.libraries);
+  compiler_ = std::make_unique<Compiler>(session_.workspace, std::move(request));
+  if (!libraries || !compiler_->document()) {
     session_.printDiagnostics();
     return kInvalidDocument;
   }
-  documentFolder = std::filesystem::absolute(file).parent_path();
-  // Built in place (a prvalue initialising the new object is never moved): resolved nodes
-  // point at their document's `top` scope, so a ResolvedDocument must not be moved.
-  resolved_.reset(new resolve::ResolvedDocument(
-      resolve::resolveDocument(*document, session_.libraries.top(), session_.diagnostics)));
-  if (!session_.diagnostics.hasErrors()) {
-    materials = lower::lowerDocument(*resolved_, lowering, session_.diagnostics);
-  }
+  compiler_->materials();
   session_.printDiagnostics();
-  if (session_.diagnostics.hasErrors()) {
-    std::fprintf(stderr, "%s: %zu error(s)\n", file.c_str(), session_.diagnostics.errorCount());
+  if (session_.workspace.diagnostics.hasErrors()) {
+    std::fprintf(stderr, "%s: %zu error(s)\n", file.c_str(), session_.workspace.diagnostics.errorCount());
     return kInvalidDocument;
   }
-  if (!options.material.empty()) {
-    std::vector<ir::Material> chosen;
-    std::vector<std::string> names;
-    for (ir::Material& m : materials) {
-      names.push_back(m.name);
-      if (m.name == options.material) chosen.push_back(std::move(m));
-    }
-    if (chosen.empty()) {
-      std::fprintf(stderr, "error: %s has no material '%s' (it has: %s)\n", file.c_str(), options.material.c_str(),
-                   fmt::format("{}", fmt::join(names, ", ")).c_str());
-      return kUsage;
-    }
-    materials = std::move(chosen);
+  if (!options.material.empty() && compiler_->materials().empty() && !compiler_->materialNames().empty()) {
+    std::fprintf(stderr, "error: %s has no material '%s' (it has: %s)\n", file.c_str(), options.material.c_str(),
+                 fmt::format("{}", fmt::join(compiler_->materialNames(), ", ")).c_str());
+    return kUsage;
   }
-  if (materials.empty()) {
+  if (compiler_->materials().empty()) {
     std::fprintf(stderr, "error: %s has no material and no surface shader to compile\n", file.c_str());
     return kInvalidDocument;
-  }
-  for (ir::Material& m : materials) {
-    ir::runPasses(m);
-    ir::summarizeEffects(m);
   }
   return kOk;
 }
 
 std::optional<std::string> MaterialPipeline::checkOutputsAreNotInputs(const OutputSet& outputs) const {
   if (auto error = session_.checkOutputsAreNotSources(outputs)) return error;
-  for (const ir::Material& m : materials) {
+  for (const ir::Material& m : compiler_->materials()) {
     for (const ir::ImageFile& image : m.images) {
       std::filesystem::path path = image.path;
-      if (path.is_relative()) path = documentFolder / path;
+      if (path.is_relative()) path = compiler_->documentFolder() / path;
       if (auto error = outputs.checkNotInput(path, "an image file this command reads")) return error;
     }
   }

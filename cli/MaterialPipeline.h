@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// What the commands that compile materials share: load, resolve, lower (with `--set` and
-/// `--param`), run the passes, and pick the materials a user asked for.
+/// The command-line options that choose what to compile (`--set`, `--param`, `--material`,
+/// `--library`), turned into a compile request for the compiler (compiler/driver/Compiler.h),
+/// whose materials the commands then use.
 
 #include <filesystem>
 #include <memory>
@@ -12,10 +13,7 @@
 
 #include "cli/OutputSet.h"
 #include "cli/Session.h"
-#include "compiler/document/DocumentLoader.h"
-#include "compiler/ir/Material.h"
-#include "compiler/lower/Lowering.h"
-#include "compiler/resolve/ResolvedGraph.h"
+#include "compiler/driver/Compiler.h"
 
 namespace mxc::cli {
 
@@ -30,29 +28,30 @@ void addMaterialOptions(CLI::App& command, MaterialOptions& options);
 /// Only --set and --param (for commands that have no --material).
 void addInputOptions(CLI::App& command, MaterialOptions& options);
 
-/// --set and --param as lowering options; false (with the error printed) for a malformed --set.
-bool inputOptions(const MaterialOptions& options, lower::LoweringOptions& lowering);
+/// --set, --param and --material into `request`; false (with the error printed) for a
+/// malformed --set.
+bool requestInputs(const MaterialOptions& options, CompileRequest& request);
 
-/// A document lowered to IR materials after the passes. Keeps the document alive (the IR's
-/// origins point into it).
+/// A document compiled to IR materials by the compiler, for a command.
 class MaterialPipeline {
  public:
   explicit MaterialPipeline(Session& session) : session_(session) {}
-  /// Runs the front end. Returns kOk, or the exit code to stop with (the diagnostics are printed).
-  int run(const std::string& file, const MaterialOptions& options);
+  /// Loads the libraries and runs the compiler to the IR stage on `request` (its document, and
+  /// the inputs and materials `options` choose). Returns kOk, or the exit code to stop with
+  /// (the diagnostics are printed).
+  int run(CompileRequest request, const MaterialOptions& options);
   /// A usage error when an output is a file the command reads: the document, an included
   /// document, a library file, or an image file of a material.
   std::optional<std::string> checkOutputsAreNotInputs(const OutputSet& outputs) const;
 
-  std::vector<ir::Material> materials;
-  /// The folder relative image paths are resolved from (the document's).
-  std::filesystem::path documentFolder;
-  const doc::Document* document = nullptr;
+  Compiler& compiler() { return *compiler_; }
+  /// The materials chosen, after the passes.
+  std::vector<ir::Material>& materials() { return compiler_->materials(); }
+  std::filesystem::path documentFolder() const { return compiler_->documentFolder(); }
 
  private:
   Session& session_;
-  std::unique_ptr<doc::DocumentLoader> loader_;
-  std::unique_ptr<resolve::ResolvedDocument> resolved_;
+  std::unique_ptr<Compiler> compiler_;
 };
 
 /// `path` with `_<material>` inserted before its extension, for one output file per material.

@@ -10,6 +10,7 @@
 #include "cli/Harness.h"
 #include "cli/MaterialPipeline.h"
 #include "cli/OutputSet.h"
+#include "compiler/glsl/Contract.h"
 #include "runtime/ImageIO.h"
 #include "runtime/Renderer.h"
 
@@ -115,8 +116,8 @@ int runRender(const RenderOptions& options) {
     }
     settings.lights.push_back(light);
   }
-  if (settings.lights.size() > 8) {
-    std::fprintf(stderr, "error: at most 8 lights\n");
+  if (settings.lights.size() > glsl::kMaxLights) {
+    std::fprintf(stderr, "error: at most %u lights\n", glsl::kMaxLights);
     return kUsage;
   }
   std::vector<float> background;
@@ -150,10 +151,12 @@ int runRender(const RenderOptions& options) {
 
   Session session;
   MaterialPipeline pipeline(session);
-  if (int code = pipeline.run(options.file, options.materials); code != kOk) return code;
-  const bool several = pipeline.materials.size() > 1;
+  CompileRequest request;
+  request.document = options.file;
+  if (int code = pipeline.run(std::move(request), options.materials); code != kOk) return code;
+  const bool several = pipeline.materials().size() > 1;
   OutputSet outputs;
-  for (const ir::Material& material : pipeline.materials) {
+  for (const ir::Material& material : pipeline.materials()) {
     for (const std::string& output : options.outputs) {
       if (printError(outputs.declare(perMaterialPath(output, material.name, several), "-o"))) return kOutputFailed;
     }
@@ -171,14 +174,14 @@ int runRender(const RenderOptions& options) {
     // Every material is compiled (and its textures read) before the first frame: a material
     // that fails stops the command before minutes of rendering, not after.
     std::vector<MaterialProgram> programs;
-    for (const ir::Material& material : pipeline.materials) {
-      auto program = prepareMaterial(session, *device.context(), material, glsl::ShaderKind::Raster, pipeline.documentFolder);
+    for (const ir::Material& material : pipeline.materials()) {
+      auto program = prepareMaterial(pipeline, session, *device.context(), material, glsl::ShaderKind::Raster);
       if (!program) return kInvalidDocument;
       programs.push_back(std::move(*program));
     }
     rt::Renderer renderer(*device.context(), *tables);
     for (size_t m = 0; m < programs.size(); ++m) {
-      const ir::Material& material = pipeline.materials[m];
+      const ir::Material& material = pipeline.materials()[m];
       const MaterialProgram& program = programs[m];
       Progress progress(settings.frames);
       rt::RenderResult image = renderer.render(mesh, *program.resources, program.shader.interface, program.spirv,

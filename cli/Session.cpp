@@ -32,24 +32,12 @@ CLI::Validator finiteNumber(bool nonNegative) {
       nonNegative ? "NUMBER >= 0" : "NUMBER");
 }
 
-Session::Session() : libraries(sources, diagnostics) {}
-
 bool Session::loadLibraries(const LibraryOptions& options) {
-  const size_t before = diagnostics.errorCount();
-  if (!options.noBuiltin) {
-    libraries.addBuiltin();
-    libraryInfo.push_back({"builtin", libraries.top().nodeDefCount()});
-  }
-  for (const std::string& folder : options.folders) {
-    if (libraries.addFolder(folder)) libraryInfo.push_back({folder, libraries.top().nodeDefCount()});
-  }
-  if (libraries.empty()) {
-    diagnostics.error({}, "no node library: --no-builtin needs at least one --library");
-  }
-  return diagnostics.errorCount() == before;
+  return workspace.loadLibraries(!options.noBuiltin, options.folders);
 }
 
 void Session::printDiagnostics() {
+  const Diagnostics& diagnostics = workspace.diagnostics;
   const auto& all = diagnostics.all();
   for (; printed_ < all.size(); ++printed_) std::fprintf(stderr, "%s\n", all[printed_].formatWithSource().c_str());
   const size_t omitted = diagnostics.omittedErrors() + diagnostics.omittedWarnings();
@@ -59,13 +47,9 @@ void Session::printDiagnostics() {
   }
 }
 
-}  // namespace mxc::cli
-
-namespace mxc::cli {
-
 std::optional<std::string> Session::checkOutputsAreNotSources(const OutputSet& outputs) const {
   // The built-in library's texts are not files and never match.
-  for (const auto& file : sources.files()) {
+  for (const auto& file : workspace.sources.files()) {
     if (auto error = outputs.checkNotInput(file->path(), "a document this command reads")) return error;
   }
   return std::nullopt;

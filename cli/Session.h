@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// What every mxc command shares: sources, diagnostics and the node libraries.
+/// What every mxc command shares: the compiler's workspace (sources, diagnostics, libraries),
+/// the library options, and printing the diagnostics as they come.
 
 #include <optional>
 #include <string>
@@ -9,9 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/OutputSet.h"
-#include "compiler/common/Diagnostic.h"
-#include "compiler/inspect/Inspect.h"
-#include "compiler/library/LibraryStack.h"
+#include "compiler/driver/Compiler.h"
 
 namespace mxc::cli {
 
@@ -27,22 +26,19 @@ void addLibraryOptions(CLI::App& command, LibraryOptions& options);
 /// number checks let "nan" and "inf" through, and both parse as floats).
 CLI::Validator finiteNumber(bool nonNegative);
 
-/// Sources, diagnostics and libraries of one command run.
+/// The workspace of one command run, and what of its diagnostics has been printed.
 class Session {
  public:
-  Session();
   /// Loads the libraries the options ask for; false when one of them has errors.
   bool loadLibraries(const LibraryOptions& options);
-  /// Prints the diagnostics gathered so far to stderr (with source lines) and forgets them.
+  /// Prints the diagnostics not printed yet to stderr (with source lines), then a count of
+  /// those not kept (Diagnostics::kMaxKept).
   void printDiagnostics();
   /// A usage error when an output of `outputs` is a file this session read (the document, an
   /// included document, a library file).
   std::optional<std::string> checkOutputsAreNotSources(const OutputSet& outputs) const;
 
-  SourceManager sources;
-  Diagnostics diagnostics;
-  lib::LibraryStack libraries;
-  std::vector<inspect::LibraryInfo> libraryInfo;
+  Workspace workspace;
 
  private:
   size_t printed_ = 0;

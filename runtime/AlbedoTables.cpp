@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "compiler/glsl/Contract.h"
 #include "compiler/glsl/ShaderBuilder.h"
 #include "runtime/ComputeKernel.h"
 
@@ -16,8 +17,9 @@ AlbedoTables::AlbedoTables(VulkanContext& context) : context_(context) {
   Buffer out = context.createBuffer(VkDeviceSize{n} * rows * 4 * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   {
     ComputeKernel kernel(context, *words, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, 0);
-    kernel.descriptors().bind(0, out);
-    kernel.dispatch((n + 7) / 8, (rows + 7) / 8, nullptr);
+    kernel.descriptors().bind(glsl::kTablesOutputBinding, out);
+    const uint32_t g = glsl::kTablesGroupSize;
+    kernel.dispatch((n + g - 1) / g, (rows + g - 1) / g, nullptr);
   }
   values_.resize(size_t{n} * rows * 4);
   std::memcpy(values_.data(), out.mapped, values_.size() * sizeof(float));

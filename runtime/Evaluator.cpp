@@ -4,17 +4,13 @@
 #include <cmath>
 #include <cstring>
 
+#include "compiler/glsl/Contract.h"
+
 namespace mxc::rt {
 
 namespace {
 
-/// The MxcBatch block of compiler/glsl/stages/mxc_batch.glsl (std140).
-struct BatchBlock {
-  uint32_t counts[4];
-  float uv[4];
-};
-
-constexpr uint32_t kGroup = 64;  // local_size_x of the compute stages
+constexpr uint32_t kGroup = glsl::kWorkGroupSize;  // local_size_x of the compute stages
 
 }  // namespace
 
@@ -22,7 +18,7 @@ MaterialKernel::MaterialKernel(VulkanContext& context, const AlbedoTables& table
                                const glsl::MaterialInterface& material, const std::vector<uint32_t>& spirv)
     : context_(context) {
   kernel_ = std::make_unique<ComputeKernel>(context, spirv, MaterialResources::layout(material), 0);
-  batch_ = context.createBuffer(sizeof(BatchBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  batch_ = context.createBuffer(glsl::std140Layout(glsl::batchMembers()).size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   resources.bind(kernel_->descriptors(), tables);
   kernel_->descriptors().bind(glsl::kStageBinding, batch_);
 }
@@ -34,8 +30,11 @@ MaterialKernel::~MaterialKernel() {
 
 void MaterialKernel::run(const Buffer& in, const Buffer& out, uint32_t groups, uint32_t rows, uint32_t samples,
                          uint32_t seed) {
-  BatchBlock block{{rows, samples, seed, 0}, {0.5f, 0.5f, 0.0f, 0.0f}};
-  std::memcpy(batch_.mapped, &block, sizeof(block));
+  // MxcBatch, through the contract's table (compiler/glsl/Contract.h).
+  glsl::BlockWriter block(glsl::batchMembers());
+  block.set("counts", glm::uvec4(rows, samples, seed, 0u));
+  block.set("uv", glm::vec4(0.5f, 0.5f, 0.0f, 0.0f));
+  std::memcpy(batch_.mapped, block.bytes().data(), block.bytes().size());
   kernel_->descriptors().bind(glsl::kInputBinding, in);
   kernel_->descriptors().bind(glsl::kOutputBinding, out);
   kernel_->dispatch(groups, 1, nullptr);

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
+#include "compiler/glsl/Contract.h"
 #include "runtime/Descriptors.h"
 
 namespace mxc::rt {
@@ -14,20 +15,15 @@ namespace {
 
 static_assert(sizeof(Vertex) == 48, "Vertex must be tightly packed for the vertex input layout");
 
-constexpr uint32_t kMaxLights = 8;  // MXC_MAX_LIGHTS of stages/mxc_view.glsl
-
-/// The MxcView block of compiler/glsl/stages/mxc_view.glsl (std140: every member 16-aligned).
-struct ViewBlock {
-  glm::mat4 objectToWorld;
-  glm::mat4 normalToWorld;
-  glm::mat4 worldToClip;
-  glm::vec4 eye;
-  glm::vec4 jitter;
-  glm::vec4 lightVector[kMaxLights];
-  glm::vec4 lightRadiance[kMaxLights];
-  glm::ivec4 counts;
-  glm::vec4 environment;
-};
+/// The environment's code in MxcView.counts.y (compiler/glsl/Contract.h).
+glsl::EnvironmentCode environmentCode(Environment e) {
+  switch (e) {
+    case Environment::None: return glsl::EnvironmentCode::None;
+    case Environment::White: return glsl::EnvironmentCode::White;
+    case Environment::Sky: return glsl::EnvironmentCode::Sky;
+  }
+  return glsl::EnvironmentCode::None;
+}
 
 /// The radical inverse in base b (Halton 1964): well-spread sub-pixel offsets over frames.
 float halton(uint32_t index, uint32_t base) {
@@ -199,7 +195,9 @@ Renderer::~Renderer() = default;
 RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resources,
                               const glsl::MaterialInterface& material, const std::vector<uint32_t>& fragmentSpirv,
                               const RenderSettings& s, const std::function<void(uint32_t)>& progress) {
-  Buffer view = context_.createBuffer(sizeof(ViewBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  // MxcView, written member by member through the contract's table (compiler/glsl/Contract.h).
+  glsl::BlockWriter block(glsl::viewMembers());
+  Buffer view = context_.createBuffer(block.bytes().size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   Buffer dummy = context_.createBuffer(16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   struct Release {
     VulkanContext& context;
@@ -219,14 +217,13 @@ RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resourc
   set.bind(glsl::kInputBinding, dummy);
   set.bind(glsl::kOutputBinding, dummy);
 
-  ViewBlock block{};
-  const uint32_t lights = std::min<uint32_t>(static_cast<uint32_t>(s.lights.size()), kMaxLights);
+  const uint32_t lights = std::min<uint32_t>(static_cast<uint32_t>(s.lights.size()), glsl::kMaxLights);
   for (uint32_t k = 0; k < lights; ++k) {
     const Light& l = s.lights[k];
-    block.lightVector[k] = glm::vec4(l.vector, l.kind == Light::Kind::Point ? 1.0f : 0.0f);
-    block.lightRadiance[k] = glm::vec4(l.color * l.intensity, 0.0f);
+    block.set("lightVector", glm::vec4(l.vector, l.kind == Light::Kind::Point ? 1.0f : 0.0f), k);
+    block.set("lightRadiance", glm::vec4(l.color * l.intensity, 0.0f), k);
   }
-  block.environment = glm::vec4(s.environmentIntensity, s.emissionScale, 0.0f, 0.0f);
+  block.set("environment", glm::vec4(s.environmentIntensity, s.emissionScale, 0.0f, 0.0f));
   const std::vector<VertexInput> inputs = {
       {0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
       {1, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
@@ -234,14 +231,14 @@ RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resourc
       {3, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}};
   return draw(mesh, vertexSpirv_, fragmentSpirv, inputs, set, s,
               [&](const FrameView& v) {
-                block.objectToWorld = v.objectToWorld;
-                block.normalToWorld = v.normalToWorld;
-                block.worldToClip = v.viewToClip * v.worldToView;
-                block.eye = glm::vec4(v.eye, 1.0f);
-                block.jitter = glm::vec4(v.jitter, 0.0f, 0.0f);  // added in clip space by mxc_raster.vert
-                block.counts = glm::ivec4(int(lights), int(s.environment), int(v.frame),
-                                          int(std::max(s.samplesPerFrame, 1u)));
-                std::memcpy(view.mapped, &block, sizeof(block));
+                block.set("objectToWorld", v.objectToWorld);
+                block.set("normalToWorld", v.normalToWorld);
+                block.set("worldToClip", v.viewToClip * v.worldToView);
+                block.set("eye", glm::vec4(v.eye, 1.0f));
+                block.set("jitter", glm::vec4(v.jitter, 0.0f, 0.0f));  // added in clip space by mxc_raster.vert
+                block.set("counts", glm::ivec4(int(lights), int(environmentCode(s.environment)), int(v.frame),
+                                               int(std::max(s.samplesPerFrame, 1u))));
+                std::memcpy(view.mapped, block.bytes().data(), block.bytes().size());
               },
               progress);
 }

@@ -1,6 +1,10 @@
 #include "compiler/glsl/ClosureEmitter.h"
 
+#include <stdexcept>
+
 #include <fmt/format.h>
+
+#include "compiler/glsl/Contract.h"
 
 namespace mxc::glsl {
 
@@ -10,20 +14,6 @@ using ir::ScatterKind;
 using ir::Slot;
 
 namespace {
-
-std::string lobeKind(const ir::Interface& f) {
-  switch (f.kind) {
-    case InterfaceKind::Dielectric: return "MXC_LOBE_DIELECTRIC";
-    case InterfaceKind::Conductor: return "MXC_LOBE_CONDUCTOR";
-    case InterfaceKind::Schlick: return "MXC_LOBE_SCHLICK";
-    case InterfaceKind::Diffuse: return f.diffuseModel == ir::DiffuseModel::EON ? "MXC_LOBE_EON" : "MXC_LOBE_DIFFUSE";
-    case InterfaceKind::Burley: return "MXC_LOBE_BURLEY";
-    case InterfaceKind::DiffuseTransmission: return "MXC_LOBE_TRANSLUCENT";
-    case InterfaceKind::DiffuseSheet: return "MXC_LOBE_SHEET";
-    case InterfaceKind::Sheen: return f.sheenModel == ir::SheenModel::Zeltner ? "MXC_LOBE_FUZZ" : "MXC_LOBE_SHEEN";
-  }
-  return "MXC_LOBE_EON";
-}
 
 /// The value of a GLSL float literal as glslFloat writes it ("1.0", "0.5", "1e-07"); false for
 /// anything else.
@@ -74,13 +64,34 @@ std::string iorRatio(const std::string& below, const std::string& above) {
 
 }  // namespace
 
+/// The members of one MxcLobe with the GLSL of their values: each starts at the contract's
+/// initial value (compiler/glsl/Contract.h) and is set by name.
+class LobeFields {
+ public:
+  LobeFields() {
+    for (const Member& m : lobeMembers()) values_.emplace_back(m.name, std::string(m.initial));
+  }
+  void set(std::string_view name, std::string value) {
+    for (auto& [member, v] : values_) {
+      if (member == name) {
+        v = std::move(value);
+        return;
+      }
+    }
+    throw std::logic_error(fmt::format("MxcLobe has no member '{}'", name));  // the contract and the emitter disagree
+  }
+  const std::vector<std::pair<std::string_view, std::string>>& values() const { return values_; }
+
+ private:
+  std::vector<std::pair<std::string_view, std::string>> values_;
+};
+
 ClosureEmitter::ClosureEmitter(const ir::Material& material, const ExprEmitter& exprs) : m_(material), x_(exprs) {
   lines_.add("  c.emission = vec3(0.0);");
   lines_.add("  c.transparency = vec3(0.0);");
   if (m_.root != ir::kNone) node(m_.root, "vec3(1.0)", Above{});
-  lines_.add(fmt::format("  c.count = {};", features_.lobes));
+  lines_.add(fmt::format("  c.count = {};", lobes_));
   lines_.add("  mxc_closure_prepare(c, wo);");
-  if (features_.lobes == 0) features_.lobeKinds.insert("MXC_LOBE_EON");  // the library needs one kind
 }
 
 std::string ClosureEmitter::unitNormal(const ir::Param* normal) const {
@@ -95,37 +106,22 @@ std::string ClosureEmitter::var(const std::string& prefix) { return fmt::format(
 
 std::string ClosureEmitter::lobe(Index iface, const std::string& weight, const Above& above, int mode) {
   const ir::Interface& f = m_.interfaces[iface];
-  const std::string kind = lobeKind(f);
-  features_.lobeKinds.insert(kind);
+  const std::string kind = fmt::format("MXC_LOBE_{}", ir::lobeKindName(ir::lobeKindOf(f)));
   const SourceLocation at = f.origin.location;
-  const std::string l = var("lobe");
   auto slot = [&](Slot s, const std::string& fallback) {
     const ir::Param* p = f.slots.find(s);
     return p ? x_.param(*p, fallback) : fallback;
   };
-  // Every field of MxcLobe once, in declaration order; the kinds fill in theirs below.
-  std::vector<std::pair<std::string, std::string>> fields{
-      {"kind", kind},
-      {"mode", std::to_string(mode)},
-      {"weight", ""},
-      // A shading normal from the document may not be unit length (geometry_normal = 0.9,0,0.1).
-      {"N", unitNormal(f.slots.find(Slot::Normal))},
-      {"T", slot(Slot::Tangent, "g.T")},
-      {"alpha", slot(Slot::Alpha, "vec2(0.0)")},
-      {"eta", "1.5"},
-      {"c0", "vec3(1.0)"},
-      {"c1", "vec3(1.0)"},
-      {"c2", "vec3(1.0)"},
-      {"p0", "0.0"},
-      {"p1", "1.0"},
-      {"film", "vec3(0.0)"},
-      {"tau", above.tau},
-      {"tauEta", atLeast(above.tauEta, 1e-3f)}};
-  auto set = [&](const std::string& name, const std::string& value) {
-    for (auto& [field, v] : fields) {
-      if (field == name) v = value;
-    }
-  };
+  LobeFields fields;
+  fields.set("kind", kind);
+  fields.set("mode", std::to_string(mode));
+  // A shading normal from the document may not be unit length (geometry_normal = 0.9,0,0.1).
+  fields.set("N", unitNormal(f.slots.find(Slot::Normal)));
+  fields.set("T", slot(Slot::Tangent, "g.T"));
+  fields.set("alpha", slot(Slot::Alpha, "vec2(0.0)"));
+  fields.set("tau", above.tau);
+  fields.set("tauEta", atLeast(above.tauEta, 1e-3f));
+  auto set = [&](std::string_view name, std::string value) { fields.set(name, std::move(value)); };
   switch (f.kind) {
     case InterfaceKind::Dielectric: {
       set("c0", slot(Slot::ReflectionTint, "vec3(1.0)"));
@@ -172,7 +168,6 @@ std::string ClosureEmitter::lobe(Index iface, const std::string& weight, const A
   }
   SourceLocation filmAt;
   if (f.thinFilm.present()) {
-    features_.thinFilm = true;
     // The film's IOR relative to what is above it (the coat where present).
     const std::string aboveIor = blend("1.0", atLeast(above.coatIor, 1e-3f), above.coatCoverage);
     const std::string filmIor = x_.param(f.thinFilm.ior, "1.5");
@@ -184,11 +179,16 @@ std::string ClosureEmitter::lobe(Index iface, const std::string& weight, const A
   std::string w = weight;
   if (const ir::Param* scale = f.slots.find(Slot::Weight)) w = product(weight, x_.param(*scale, "1.0"));
   set("weight", w);
+  return emitLobe(fields, at, filmAt);
+}
+
+std::string ClosureEmitter::emitLobe(const LobeFields& fields, SourceLocation at, SourceLocation filmAt) {
+  const std::string l = var("lobe");
   lines_.add(fmt::format("  MxcLobe {};", l), at);
-  for (const auto& [field, value] : fields) {
-    lines_.add(fmt::format("  {}.{} = {};", l, field, value), field == "film" && filmAt.valid() ? filmAt : at);
+  for (const auto& [member, value] : fields.values()) {
+    lines_.add(fmt::format("  {}.{} = {};", l, member, value), member == "film" && filmAt.valid() ? filmAt : at);
   }
-  lines_.add(fmt::format("  c.lobes[{}] = {};", features_.lobes++, l), at);
+  lines_.add(fmt::format("  c.lobes[{}] = {};", lobes_++, l), at);
   return l;
 }
 
@@ -211,24 +211,24 @@ void ClosureEmitter::slab(const ir::ScatterNode& n, const std::string& weight, c
   if (top) {
     int mode = 0;
     const bool dielectric = top->kind == InterfaceKind::Dielectric || top->kind == InterfaceKind::Schlick;
-    if (!dielectric || top->scatter != ir::ScatterMode::T) mode |= 1;  // reflect
+    if (!dielectric || top->scatter != ir::ScatterMode::T) mode |= kModeReflect;
     // Transmission where light has somewhere to go: a bulk (not subsurface) or a thin sheet
     // directly under the interface; over a base, transmitted light is the base's (layering).
     if (dielectric && top->scatter != ir::ScatterMode::R && n.base == ir::kNone && medium && !subsurface && !finite) {
-      mode |= 2;
-      if (thinWall) mode |= 4;
+      mode |= kModeTransmit;
+      if (thinWall) mode |= kModeThinWall;
     }
     const std::string l = lobe(n.top, product(weight, cov), above, mode);
     if (thinWall) {
       // A thin sheet's normal-incidence transmittance through its absorption (OpenPBR
       // "Thin-walled mode": transmission_color).
-      lines_.add(fmt::format("  c.lobes[{}].c1 *= exp(-{});", features_.lobes - 1,
+      lines_.add(fmt::format("  c.lobes[{}].c1 *= exp(-{});", lobes_ - 1,
                              product(mediumSlot(Slot::Absorption, "vec3(0.0)"), mediumSlot(Slot::Thickness, "1.0"))));
-    } else if ((mode & 2) && medium->slots.find(Slot::Absorption)) {
+    } else if ((mode & kModeTransmit) && medium->slots.find(Slot::Absorption)) {
       // The bulk's absorption along the refracted path, taken as MXC_BULK_PATH (one scene unit,
       // the radius of the test sphere): this closure sees one interface, not the object, so the
       // path length inside is assumed (Beer's law; OpenPBR "Translucent base").
-      lines_.add(fmt::format("  c.lobes[{}].c1 *= exp(-{} * MXC_BULK_PATH);", features_.lobes - 1,
+      lines_.add(fmt::format("  c.lobes[{}].c1 *= exp(-{} * MXC_BULK_PATH);", lobes_ - 1,
                              mediumSlot(Slot::Absorption, "vec3(0.0)")),
                  medium->origin.location);
     }
@@ -277,29 +277,15 @@ void ClosureEmitter::slab(const ir::ScatterNode& n, const std::string& weight, c
     // Under the interface, a dense scattering bulk seen from outside: a diffuse lobe of the
     // observed albedo (OpenPBR "Subsurface" defines subsurface_color as that albedo; without a
     // subsurface transport the spec asks for it as a diffuse colour, "Flexibility of implementation").
-    features_.lobeKinds.insert("MXC_LOBE_EON");
-    const std::string l = var("lobe");
-    const SourceLocation at = medium->origin.location;
-    lines_.add(fmt::format("  MxcLobe {};", l), at);
-    for (const auto& [field, value] : std::vector<std::pair<std::string, std::string>>{
-             {"kind", "MXC_LOBE_EON"},
-             {"mode", "0"},
-             {"weight", product(product(weight, cov), through)},
-             {"N", normal},
-             {"T", tangent},
-             {"alpha", "vec2(0.0)"},
-             {"eta", "1.5"},
-             {"c0", mediumSlot(Slot::ObservedAlbedo, "vec3(0.8)")},
-             {"c1", "vec3(1.0)"},
-             {"c2", "vec3(1.0)"},
-             {"p0", "0.0"},
-             {"p1", "1.0"},
-             {"film", "vec3(0.0)"},
-             {"tau", above.tau},
-             {"tauEta", atLeast(above.tauEta, 1e-3f)}}) {
-      lines_.add(fmt::format("  {}.{} = {};", l, field, value), at);
-    }
-    lines_.add(fmt::format("  c.lobes[{}] = {};", features_.lobes++, l), at);
+    LobeFields fields;
+    fields.set("kind", fmt::format("MXC_LOBE_{}", ir::lobeKindName(ir::LobeKind::EON)));
+    fields.set("weight", product(product(weight, cov), through));
+    fields.set("N", normal);
+    fields.set("T", tangent);
+    fields.set("c0", mediumSlot(Slot::ObservedAlbedo, "vec3(0.8)"));
+    fields.set("tau", above.tau);
+    fields.set("tauEta", atLeast(above.tauEta, 1e-3f));
+    emitLobe(fields, medium->origin.location, {});
   }
   if (n.base == ir::kNone) return;
   if (finite) {
@@ -338,7 +324,6 @@ void ClosureEmitter::node(Index index, const std::string& weight, const Above& a
       node(n.a, product(weight, fmt::format("vec3({})", x_.ref(n.weight.value))), above);
       break;
     case ScatterKind::Emissive: {
-      features_.emission = true;
       const ir::Emission& e = m_.emissions[n.emission];
       std::string color = e.slots.find(Slot::Color) ? x_.param(*e.slots.find(Slot::Color), "vec3(0.0)") : "vec3(0.0)";
       std::string shape = "1.0";
@@ -364,7 +349,6 @@ void ClosureEmitter::node(Index index, const std::string& weight, const Above& a
       break;
     }
     case ScatterKind::Ambient:
-      features_.transparency = true;
       lines_.add(fmt::format("  c.transparency += {};", weight), n.origin.location);
       break;
     case ScatterKind::Absorber: break;

@@ -4,7 +4,6 @@
 /// the tree reduced to a weighted mixture of lobes, after OpenPBR 1.1 "Reduction to a mixture
 /// of lobes" (albedo scaling, with view-dependent absorption through coat media).
 
-#include <set>
 #include <string>
 #include <vector>
 
@@ -12,14 +11,7 @@
 
 namespace mxc::glsl {
 
-/// What the generated closure code needs from the shader library.
-struct ClosureFeatures {
-  std::set<std::string> lobeKinds;  ///< MXC_LOBE_* names used
-  bool thinFilm = false;
-  bool emission = false;
-  bool transparency = false;
-  int lobes = 0;  ///< MXC_MAX_LOBES
-};
+class LobeFields;
 
 class ClosureEmitter {
  public:
@@ -28,7 +20,9 @@ class ClosureEmitter {
   /// The body of `void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c)`
   /// after the expression statements.
   const Lines& statements() const { return lines_; }
-  const ClosureFeatures& features() const { return features_; }
+  /// How many lobes the closure holds (MXC_MAX_LOBES). Which kinds, and whether a thin film is
+  /// used, the material's features say (ir::Features).
+  int lobeCount() const { return lobes_; }
 
  private:
   /// What lies above a node: the dielectric coat over it (for its IOR) and absorbing media.
@@ -43,6 +37,8 @@ class ClosureEmitter {
   void slab(const ir::ScatterNode& n, const std::string& weight, const Above& above);
   /// Emits the lobe of an interface; returns the GLSL variable holding the lobe.
   std::string lobe(ir::Index iface, const std::string& weight, const Above& above, int mode);
+  /// Declares a lobe variable with `fields`, stores it in the closure; returns its name.
+  std::string emitLobe(const LobeFields& fields, SourceLocation at, SourceLocation filmAt);
   std::string var(const std::string& prefix);
   /// The GLSL of a lobe's normal, normalised unless it is the geometry's unit normal.
   std::string unitNormal(const ir::Param* normal) const;
@@ -50,7 +46,7 @@ class ClosureEmitter {
   const ir::Material& m_;
   const ExprEmitter& x_;
   Lines lines_;
-  ClosureFeatures features_;
+  int lobes_ = 0;
   int counter_ = 0;
 };
 

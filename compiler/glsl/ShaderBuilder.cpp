@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "compiler/common/EmbeddedFile.h"
+#include "compiler/glsl/Contract.h"
 
 namespace mxc {
 std::span<const EmbeddedFile> glslLibraryFiles();  // cmake/EmbedFiles.cmake: compiler/glsl/{library,stages}
@@ -17,9 +18,11 @@ namespace mxc::glsl {
 
 namespace {
 
-std::string_view libraryFile(std::string_view path) {
+/// A shader library file: a real one (embedded), or one generated from the contract.
+std::string libraryFile(std::string_view path) {
+  if (std::optional<std::string> generated = generatedLibraryFile(path)) return *generated;
   for (const EmbeddedFile& f : glslLibraryFiles()) {
-    if (f.path == path) return f.contents;
+    if (f.path == path) return std::string(f.contents);
   }
   throw std::logic_error(fmt::format("shader library file {} is not embedded", path));  // a build error
 }
@@ -37,12 +40,20 @@ class Writer {
       return;
     }
     line(fmt::format("// ---- {} ----", path));
-    std::string_view text = libraryFile(path);
+    const std::string text = libraryFile(path);
     size_t start = 0;
     while (start < text.size()) {
       size_t end = text.find('\n', start);
       if (end == std::string_view::npos) end = text.size();
-      line(std::string(text.substr(start, end - start)));
+      std::string_view l = std::string_view(text).substr(start, end - start);
+      // A library file's own `#include "path"` (the contract's generated declarations) is
+      // pasted in its place.
+      constexpr std::string_view kInclude = "#include \"";
+      if (l.rfind(kInclude, 0) == 0 && l.size() > kInclude.size() + 1 && l.back() == '"') {
+        file(l.substr(kInclude.size(), l.size() - kInclude.size() - 1));
+      } else {
+        line(std::string(l));
+      }
       start = end + 1;
     }
   }
@@ -63,18 +74,6 @@ class Writer {
   bool expand_ = true;
 };
 
-/// std140 base alignment and size of a uniform member (GLSL 4.50 s. 7.6.2.2).
-void std140(ir::Type type, uint32_t& align, uint32_t& size) {
-  switch (type) {
-    case ir::Type::Vec2: align = 8; size = 8; return;
-    case ir::Type::Vec3: align = 16; size = 12; return;
-    case ir::Type::Vec4: align = 16; size = 16; return;
-    case ir::Type::Mat3: align = 16; size = 48; return;  // three vec3 columns, each padded to 16 bytes
-    case ir::Type::Mat4: align = 16; size = 64; return;
-    default: align = 4; size = 4; return;                // float, int, bool, uint
-  }
-}
-
 std::vector<UniformField> parameterLayout(const ir::Material& material, const ExprEmitter& exprs, uint32_t& bytes) {
   std::vector<UniformField> fields;
   fields.push_back({"missing_textures", ir::Type::Int, 0, {0.0f}});
@@ -91,7 +90,7 @@ std::vector<UniformField> parameterLayout(const ir::Material& material, const Ex
   uint32_t offset = 0;
   for (UniformField& f : fields) {
     uint32_t align = 4, size = 4;
-    std140(f.type, align, size);
+    std140Type(glslType(f.type), align, size);
     offset = (offset + align - 1) / align * align;
     f.offset = offset;
     offset += size;
@@ -129,7 +128,10 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   MaterialShader out;
   MaterialInterface& iface = out.interface;
   iface.textures = exprs.textures();
-  iface.features = closure.features();
+  iface.lobes = closure.lobeCount();
+  // The library's closure code refers to a lobe type, so at least one kind is compiled in.
+  iface.lobeKinds = material.features.lobes.empty() ? FlagSet<ir::LobeKind>().insert(ir::LobeKind::EON)
+                                                    : material.features.lobes;
   iface.geomprops = exprs.geomprops();
   iface.parameters = parameterLayout(material, exprs, iface.parameterBytes);
 
@@ -139,11 +141,13 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
                                    : kind == ShaderKind::Furnace ? "compute shader estimating the directional albedo"
                                                                  : "compute shader drawing sample directions";
   header(w, material, purpose);
-  w.line(fmt::format("#define MXC_MAX_LOBES {}", std::max(iface.features.lobes, 1)));
-  for (const std::string& kindName : iface.features.lobeKinds) {
-    w.line("#define MXC_HAS_" + kindName.substr(std::string_view("MXC_LOBE_").size()));
-  }
-  if (iface.features.thinFilm) w.line("#define MXC_THIN_FILM");
+  w.line(fmt::format("#define MXC_MAX_LOBES {}", std::max(iface.lobes, 1)));
+  // The guards of the lobe kinds in use, in the order of their names.
+  std::vector<std::string_view> kinds;
+  iface.lobeKinds.forEach([&](ir::LobeKind k) { kinds.push_back(ir::lobeKindName(k)); });
+  std::sort(kinds.begin(), kinds.end());
+  for (std::string_view k : kinds) w.line(fmt::format("#define MXC_HAS_{}", k));
+  if (material.features.thinFilm) w.line("#define MXC_THIN_FILM");
   w.line(fmt::format("#define MXC_TABLE_BINDING {}", static_cast<uint32_t>(kTablesBinding)));
   w.line(fmt::format("#define MXC_TABLE_SIZE {}", kTableSize));
   w.line(fmt::format("#define MXC_TABLE_SLICES {}", kTableSlices));
@@ -152,8 +156,8 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   w.file("library/mxc_common.glsl");
   w.file("library/mxc_microfacet.glsl");
   w.file("library/mxc_fresnel.glsl");
-  w.file("library/mxc_sheen.glsl");
-  if (iface.features.lobeKinds.count("MXC_LOBE_FUZZ")) w.file("library/mxc_fuzz.glsl");
+  if (iface.lobeKinds.has(ir::LobeKind::Sheen)) w.file("library/mxc_sheen.glsl");
+  if (iface.lobeKinds.has(ir::LobeKind::Fuzz)) w.file("library/mxc_fuzz.glsl");
   w.file("library/mxc_geometry.glsl");
   if (exprs.usesProcedural()) w.file("library/mxc_procedural.glsl");
   w.file("library/mxc_lobes.glsl");

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "compiler/common/Accuracy.h"
 #include "compiler/glsl/Bindings.h"
 #include "compiler/glsl/ClosureEmitter.h"
 #include "compiler/glsl/ExprEmitter.h"
@@ -37,7 +38,8 @@ struct MaterialInterface {
   std::vector<TextureBinding> textures;
   std::vector<UniformField> parameters;  ///< always has missing_textures, frame and time first
   uint32_t parameterBytes = 0;
-  ClosureFeatures features;
+  int lobes = 0;                        ///< lobes of the closure (MXC_MAX_LOBES)
+  FlagSet<ir::LobeKind> lobeKinds;      ///< the lobe kinds compiled in (MXC_HAS_*)
   std::vector<std::string> geomprops;
 };
 
@@ -47,6 +49,7 @@ struct MaterialShader {
 };
 
 struct BuildOptions {
+  Accuracy accuracy = Accuracy::Balanced;
   /// Paste the shader library files in (a standalone shader, what glslang compiles). When
   /// false, each library file is an `#include` line instead: the material-specific part only,
   /// which is what the golden files under generated/glsl hold.

@@ -6,16 +6,10 @@
 #include <vector>
 
 #include "compiler/ir/Expr.h"
+#include "compiler/ir/Features.h"
 #include "compiler/ir/Scatter.h"
 
 namespace mxc::ir {
-
-/// A feature of the material that survived the passes, with the input that keeps it alive
-/// (Material::effects; issue "effect summary": coat, fuzz, thin_film, transmission, ...).
-struct Effect {
-  std::string name;
-  Origin origin;  ///< the input whose value keeps the effect (a coverage, a weight, a colour)
-};
 
 /// A remark about the lowering a user should know: a structure that is not energy-bounded,
 /// an approximation, an input that has no effect.
@@ -51,7 +45,7 @@ struct Material {
   Index root = kNone;
   Param opacity;     ///< kept for transparent shadows; already part of the tree as Mix(Ambient, surface)
   Param thinWalled;  ///< bool: the surface is a two-sided sheet (OpenPBR "Thin-walled mode")
-  std::vector<Effect> effects;
+  Features features;  ///< computeFeatures after the passes (the compiler driver sets it)
   std::vector<Note> notes;
   std::vector<Parameter> parameters;
   std::vector<ImageFile> images;

@@ -114,7 +114,8 @@ std::string TextPrinter::run() {
   line(0, fmt::format("material {} ({}{})", m_.name, m_.shader,
                       m_.origin.location.valid() ? ", " + where({m_.origin.location, {}}) : ""));
   std::vector<std::string> effects;
-  for (const Effect& e : m_.effects) effects.push_back(fmt::format("{} ({})", e.name, where(e.origin)));
+  m_.features.effects.forEach(
+      [&](Effect e) { effects.push_back(fmt::format("{} ({})", effectName(e), where(m_.features.origin(e)))); });
   line(2, fmt::format("effects: {}", effects.empty() ? "(none)" : fmt::format("{}", fmt::join(effects, ", "))));
   for (const Note& n : m_.notes) line(2, fmt::format("note: {} [{}]", n.message, where(n.origin)));
   if (m_.root != kNone) node(m_.root, 2, "root");
@@ -283,9 +284,10 @@ std::string printMaterial(const Material& m, const SourceFile* document) { retur
 
 nlohmann::json materialJson(const Material& m) {
   nlohmann::json effects = nlohmann::json::array();
-  for (const Effect& e : m.effects) {
-    effects.push_back({{"name", e.name}, {"input", e.origin.input}, {"location", locationJson(e.origin.location)}});
-  }
+  m.features.effects.forEach([&](Effect e) {
+    const Origin& origin = m.features.origin(e);
+    effects.push_back({{"name", effectName(e)}, {"input", origin.input}, {"location", locationJson(origin.location)}});
+  });
   nlohmann::json notes = nlohmann::json::array();
   for (const Note& n : m.notes) {
     notes.push_back({{"message", n.message}, {"input", n.origin.input}, {"location", locationJson(n.origin.location)}});

@@ -33,13 +33,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compiler/common/LargeStack.h"
-#include "compiler/document/DocumentLoader.h"
-#include "compiler/glsl/ShaderBuilder.h"
-#include "compiler/ir/Effects.h"
-#include "compiler/ir/passes/Pass.h"
-#include "compiler/library/LibraryStack.h"
-#include "compiler/lower/Lowering.h"
-#include "compiler/resolve/Resolver.h"
+#include "compiler/driver/Compiler.h"
 #include "compiler/spirv/SpirvCompiler.h"
 #include "runtime/AlbedoTables.h"
 #include "runtime/ImageIO.h"
@@ -112,25 +106,24 @@ json figures(const ModuleFigures& m) {
 
 /// mxc from the file to GLSL, timed (median of `repeat`), then the GLSL's SPIR-V figures.
 /// `shader` and `words` receive the raster shader and its plain module, for rendering.
-json measureMxc(mxc::lib::LibraryStack& libraries, mxc::SourceManager& sources, const fs::path& file,
+json measureMxc(const mxc::lib::LibraryStack& libraries, std::unique_ptr<mxc::Workspace>& workspace, const fs::path& file,
                 const std::string& material, int repeat, mxc::glsl::MaterialShader& shader,
                 std::vector<uint32_t>& words) {
   std::vector<double> frontEnd;
+  // A fresh workspace each time (a second load of one path would be served from the loader's
+  // cache); the caller keeps the last, whose sources the shader's locations point into.
   for (int r = 0; r < repeat; ++r) {
-    mxc::Diagnostics diagnostics;
+    workspace = std::make_unique<mxc::Workspace>();
     const auto start = Clock::now();
-    mxc::doc::DocumentLoader loader(sources, diagnostics);
-    const mxc::doc::Document* d = loader.loadFile(file);
-    if (!d || diagnostics.hasErrors()) return {{"error", diagnostics.format()}};
-    auto resolved = mxc::resolve::resolveDocument(*d, libraries.top(), diagnostics);
-    std::vector<mxc::ir::Material> materials = mxc::lower::lowerDocument(resolved, {}, diagnostics);
-    if (diagnostics.hasErrors()) return {{"error", diagnostics.format()}};
-    auto chosen = std::find_if(materials.begin(), materials.end(),
-                               [&](const mxc::ir::Material& m) { return material.empty() || m.name == material; });
-    if (chosen == materials.end()) return {{"error", "no material named " + material}};
-    mxc::ir::runPasses(*chosen);
-    mxc::ir::summarizeEffects(*chosen);
-    shader = mxc::glsl::buildMaterialShader(*chosen, mxc::glsl::ShaderKind::Raster);
+    mxc::CompileRequest request;
+    request.document = file;
+    request.libraries = &libraries;
+    request.material = material;
+    mxc::Compiler compiler(*workspace, request);
+    std::vector<mxc::ir::Material>& materials = compiler.materials();
+    if (workspace->diagnostics.hasErrors()) return {{"error", workspace->diagnostics.format()}};
+    if (materials.empty()) return {{"error", "no material named " + material}};
+    shader = compiler.shader(materials.front());
     frontEnd.push_back(msSince(start));
   }
   ModuleFigures fragment = compileStage(shader.glsl, repeat);
@@ -256,11 +249,9 @@ static int run(int argc, char** argv) {
     return 1;
   }
 
-  mxc::SourceManager sources;
-  mxc::Diagnostics diagnostics;
   const auto libraryStart = Clock::now();
-  mxc::lib::LibraryStack libraries(sources, diagnostics);
-  libraries.addBuiltin();
+  mxc::Workspace library;
+  library.loadLibraries();
   const double libraryMs = msSince(libraryStart);
 
   RenderRig rig;
@@ -283,8 +274,9 @@ static int run(int argc, char** argv) {
     json row = {{"name", name}};
     mxc::glsl::MaterialShader shader;
     std::vector<uint32_t> words;
-    row["mxc"] = measureMxc(libraries, sources, entry.at("mtlx").get<std::string>(), entry.value("material", ""), repeat,
-                            shader, words);
+    std::unique_ptr<mxc::Workspace> workspace;
+    row["mxc"] = measureMxc(library.libraries, workspace, entry.at("mtlx").get<std::string>(), entry.value("material", ""),
+                            repeat, shader, words);
     row["materialx"] = measureMaterialX(entry, repeat);
     if (!words.empty()) {  // else row["mxc"] says why
       try {

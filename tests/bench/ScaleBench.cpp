@@ -27,13 +27,7 @@
 #include <fmt/format.h>
 
 #include "compiler/common/LargeStack.h"
-#include "compiler/document/DocumentLoader.h"
-#include "compiler/glsl/ShaderBuilder.h"
-#include "compiler/ir/Effects.h"
-#include "compiler/ir/passes/Pass.h"
-#include "compiler/library/LibraryStack.h"
-#include "compiler/lower/Lowering.h"
-#include "compiler/resolve/Resolver.h"
+#include "compiler/driver/Compiler.h"
 
 namespace {
 
@@ -104,31 +98,34 @@ struct Stages {
   double total() const { return ours() + spirv; }
 };
 
-Stages run(mxc::lib::LibraryStack& libraries, mxc::SourceManager& sources, const std::string& text, bool glslang) {
+Stages run(const mxc::lib::LibraryStack& libraries, const std::string& text, bool glslang) {
   Stages s;
-  mxc::Diagnostics diagnostics;
-  mxc::doc::DocumentLoader loader(sources, diagnostics);
+  mxc::Workspace workspace;
+  mxc::CompileRequest request;
+  request.document = "generated.mtlx";
+  request.text = text;
+  request.libraries = &libraries;
+  mxc::Compiler compiler(workspace, request);
+  // Stage by stage: each call runs its stage once, on the result of the one before.
   auto t = Clock::now();
-  const mxc::doc::Document* d = loader.loadText("generated.mtlx", text);
+  compiler.document();
   s.parse = msSince(t);
   t = Clock::now();
-  auto resolved = mxc::resolve::resolveDocument(*d, libraries.top(), diagnostics);
+  compiler.resolved();
   s.resolve = msSince(t);
   t = Clock::now();
-  std::vector<mxc::ir::Material> materials = mxc::lower::lowerDocument(resolved, {}, diagnostics);
-  mxc::ir::runPasses(materials.at(0));
-  mxc::ir::summarizeEffects(materials.at(0));
+  std::vector<mxc::ir::Material>& materials = compiler.materials();
   s.lower = msSince(t);
   t = Clock::now();
-  mxc::glsl::MaterialShader shader = mxc::glsl::buildMaterialShader(materials.at(0), mxc::glsl::ShaderKind::Raster);
+  mxc::glsl::MaterialShader shader = compiler.shader(materials.at(0));
   s.glsl = msSince(t);
   s.glslLines = shader.glsl.origins.size();
   if (!glslang) return s;
   t = Clock::now();
-  auto words = mxc::spirv::compile(shader.glsl, {}, diagnostics);
+  auto words = compiler.spirv(shader);
   s.spirv = msSince(t);
-  if (!words || diagnostics.hasErrors()) {
-    std::fprintf(stderr, "%s", diagnostics.format().c_str());
+  if (!words || workspace.diagnostics.hasErrors()) {
+    std::fprintf(stderr, "%s", workspace.diagnostics.format().c_str());
     std::exit(1);
   }
   return s;
@@ -145,15 +142,16 @@ double includeChainMs(int files) {
         << (i + 1 < files ? fmt::format("  <xi:include href=\"c{}.mtlx\" />\n", i + 1) : std::string())
         << fmt::format("  <constant name=\"k{}\" type=\"float\" />\n</materialx>\n", i);
   }
-  mxc::SourceManager sources;
-  mxc::Diagnostics diagnostics;
-  mxc::doc::DocumentLoader loader(sources, diagnostics);
+  mxc::Workspace workspace;
+  mxc::CompileRequest request;
+  request.document = folder / "c0.mtlx";
+  mxc::Compiler compiler(workspace, request);
   const auto t = Clock::now();
-  const bool loaded = loader.loadFile(folder / "c0.mtlx") != nullptr && loader.documents().size() == size_t(files);
+  const bool loaded = compiler.document() != nullptr && workspace.loader.documents().size() == size_t(files);
   const double ms = msSince(t);
   fs::remove_all(folder);
-  if (!loaded || diagnostics.hasErrors()) {
-    std::fprintf(stderr, "the include chain did not load: %s", diagnostics.format().c_str());
+  if (!loaded || workspace.diagnostics.hasErrors()) {
+    std::fprintf(stderr, "the include chain did not load: %s", workspace.diagnostics.format().c_str());
     std::exit(1);
   }
   return ms;
@@ -197,15 +195,13 @@ int main(int argc, char** argv) {
   fs::remove(largest);
 
   mxc::runWithLargeStack([&] {
-    mxc::SourceManager sources;
-    mxc::Diagnostics diagnostics;
-    mxc::lib::LibraryStack libraries(sources, diagnostics);
-    libraries.addBuiltin();
+    mxc::Workspace library;
+    library.loadLibraries();
     std::printf("%8s %9s %9s %9s %9s %10s %8s %10s %8s %10s %8s %8s\n", "nodes", "parse", "resolve", "lower", "glsl",
                 "mxc", "growth", "glslang", "growth", "total", "growth", "lines");
     Stages previous;
     for (int nodes = 1000; nodes <= max; nodes *= 10) {
-      const Stages s = run(libraries, sources, generate(nodes), glslang);
+      const Stages s = run(library.libraries, generate(nodes), glslang);
       auto growth = [&](double now, double before) {
         return before > 0 ? fmt::format("{:.1f}x", now / before) : std::string("-");
       };

@@ -10,16 +10,11 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "compiler/document/DocumentLoader.h"
-#include "compiler/glsl/ShaderBuilder.h"
-#include "compiler/ir/Effects.h"
-#include "compiler/ir/passes/Pass.h"
-#include "compiler/library/LibraryStack.h"
-#include "compiler/lower/Lowering.h"
-#include "compiler/resolve/Resolver.h"
+#include "compiler/driver/Compiler.h"
 #include "runtime/Renderer.h"
 
 namespace {
@@ -37,30 +32,30 @@ double median(std::vector<double> v) {
 }
 
 struct Compiled {
+  std::unique_ptr<mxc::Workspace> workspace;
   mxc::glsl::MaterialShader shader;
   std::vector<uint32_t> words;
   double frontEndMs = 0.0;  // parse, resolve, lower, passes, GLSL
   double spirvMs = 0.0;     // glslang and SPIRV-Tools validation
 };
 
-/// One compile from the file, with the library already loaded (as in a running tool).
-Compiled compileFile(mxc::lib::LibraryStack& libraries, mxc::SourceManager& sources, const fs::path& file) {
+/// One compile from the file, with the library already loaded (as in a running tool). The
+/// workspace is kept with the result: the shader's locations point into its sources.
+Compiled compileFile(const mxc::lib::LibraryStack& libraries, const fs::path& file) {
   Compiled out;
+  out.workspace = std::make_unique<mxc::Workspace>();
   const auto start = Clock::now();
-  mxc::Diagnostics diagnostics;
-  mxc::doc::DocumentLoader loader(sources, diagnostics);
-  const mxc::doc::Document* d = loader.loadFile(file);
-  auto resolved = mxc::resolve::resolveDocument(*d, libraries.top(), diagnostics);
-  std::vector<mxc::ir::Material> materials = mxc::lower::lowerDocument(resolved, {}, diagnostics);
-  mxc::ir::runPasses(materials.at(0));
-  mxc::ir::summarizeEffects(materials.at(0));
-  out.shader = mxc::glsl::buildMaterialShader(materials.at(0), mxc::glsl::ShaderKind::Raster);
+  mxc::CompileRequest request;
+  request.document = file;
+  request.libraries = &libraries;
+  mxc::Compiler compiler(*out.workspace, request);
+  out.shader = compiler.shader(compiler.materials().at(0));
   out.frontEndMs = msSince(start);
   const auto glslang = Clock::now();
-  auto words = mxc::spirv::compile(out.shader.glsl, {}, diagnostics);
+  auto words = compiler.spirv(out.shader);
   out.spirvMs = msSince(glslang);
   if (!words) {
-    std::fprintf(stderr, "%s", diagnostics.format().c_str());
+    std::fprintf(stderr, "%s", out.workspace->diagnostics.format().c_str());
     std::exit(1);
   }
   out.words = std::move(*words);
@@ -83,7 +78,9 @@ Compiled flatShader() {
 
 size_t optimizedCount(const Compiled& c) {
   mxc::Diagnostics diagnostics;
-  auto words = mxc::spirv::compile(c.shader.glsl, {true}, diagnostics);
+  mxc::CompileRequest request;
+  request.optimize = true;
+  auto words = mxc::compileShader(c.shader, request, diagnostics);
   return words ? mxc::spirv::instructionCount(*words) : 0;
 }
 
@@ -100,10 +97,9 @@ int main(int argc, char** argv) {
   const fs::path shared = MXC_SHARED_DIR;
   const fs::path files[] = {shared / "corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx",
                             shared / "corpus/materialx/examples/OpenPbr/open_pbr_carpaint.mtlx"};
-  mxc::SourceManager sources;
-  mxc::Diagnostics diagnostics;
-  mxc::lib::LibraryStack libraries(sources, diagnostics);
-  libraries.addBuiltin();
+  mxc::Workspace library;
+  library.loadLibraries();
+  mxc::Diagnostics& diagnostics = library.diagnostics;
 
   mxc::rt::VulkanContext context;
   mxc::rt::AlbedoTables tables(context);
@@ -134,7 +130,7 @@ int main(int argc, char** argv) {
     std::vector<double> front, spirv, total;
     Compiled last;
     for (int r = 0; r < repeat; ++r) {
-      last = compileFile(libraries, sources, file);
+      last = compileFile(library.libraries, file);
       front.push_back(last.frontEndMs);
       spirv.push_back(last.spirvMs);
       total.push_back(last.frontEndMs + last.spirvMs);

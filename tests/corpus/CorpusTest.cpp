@@ -24,47 +24,38 @@ std::vector<std::string> corpusFiles() {
   return files;
 }
 
-/// A library stack loaded once for the whole test program.
-struct Libraries {
-  SourceManager sources;
-  Diagnostics diagnostics;
-  lib::LibraryStack stack{sources, diagnostics};
-};
-
 enum class LibraryChoice { Builtin, MaterialX, Both };
 
-const lib::NodeLibrary& libraryFor(LibraryChoice choice) {
-  static Libraries builtin, materialx, both;
+/// The libraries of each choice, loaded once for the whole test program.
+const lib::LibraryStack& libraryFor(LibraryChoice choice) {
+  static Workspace builtin, materialx, both;
   static bool loaded = false;
   if (!loaded) {
     loaded = true;
-    const fs::path mx = sharedDir() / "reference/materialx/libraries";
-    builtin.stack.addBuiltin();
-    materialx.stack.addFolder(mx);
-    both.stack.addBuiltin();
-    both.stack.addFolder(mx);
-    for (Libraries* l : {&builtin, &materialx, &both}) {
-      EXPECT_FALSE(l->diagnostics.hasErrors()) << l->diagnostics.format();
-    }
+    const std::string mx = (sharedDir() / "reference/materialx/libraries").string();
+    EXPECT_TRUE(builtin.loadLibraries(true)) << builtin.diagnostics.format();
+    EXPECT_TRUE(materialx.loadLibraries(false, {mx})) << materialx.diagnostics.format();
+    EXPECT_TRUE(both.loadLibraries(true, {mx})) << both.diagnostics.format();
   }
-  return choice == LibraryChoice::Builtin ? builtin.stack.top() : choice == LibraryChoice::MaterialX ? materialx.stack.top() : both.stack.top();
+  return choice == LibraryChoice::Builtin ? builtin.libraries : choice == LibraryChoice::MaterialX ? materialx.libraries : both.libraries;
 }
 
 class Corpus : public ::testing::TestWithParam<std::string> {
  protected:
   void check(LibraryChoice choice) {
-    SourceManager sources;
-    Diagnostics diagnostics;
-    doc::DocumentLoader loader(sources, diagnostics);
-    const doc::Document* d = loader.loadFile(GetParam());
-    ASSERT_NE(d, nullptr) << diagnostics.format();
-    resolve::ResolvedDocument r = resolve::resolveDocument(*d, libraryFor(choice), diagnostics);
-    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.format();
+    Workspace workspace;
+    CompileRequest request;
+    request.document = GetParam();
+    request.libraries = &libraryFor(choice);
+    Compiler compiler(workspace, request);
+    const resolve::ResolvedDocument* r = compiler.resolved();
+    ASSERT_NE(r, nullptr) << workspace.diagnostics.format();
+    EXPECT_FALSE(workspace.diagnostics.hasErrors()) << workspace.diagnostics.format();
     // Material documents (examples and presets) bind a shader to each material.
     const std::string& path = GetParam();
     if (path.find("examples/") != std::string::npos || path.find("openpbr-presets") != std::string::npos) {
-      EXPECT_FALSE(r.materials.empty());
-      for (const auto& m : r.materials) EXPECT_FALSE(m.shaders.empty()) << m.node->name();
+      EXPECT_FALSE(r->materials.empty());
+      for (const auto& m : r->materials) EXPECT_FALSE(m.shaders.empty()) << m.node->name();
     }
   }
 };

@@ -20,9 +20,9 @@ TEST_P(SpirvCorpus, EveryShaderKindValidates) {
   ASSERT_FALSE(materials.empty());
   for (const ir::Material& m : materials) {
     for (glsl::ShaderKind kind : {glsl::ShaderKind::Raster, glsl::ShaderKind::Eval, glsl::ShaderKind::Furnace}) {
-      glsl::MaterialShader shader = glsl::buildMaterialShader(m, kind);
+      glsl::MaterialShader shader = buildShader(m, kind);
       Diagnostics diagnostics;
-      std::optional<std::vector<uint32_t>> words = spirv::compile(shader.glsl, {}, diagnostics);
+      std::optional<std::vector<uint32_t>> words = compileShader(shader, {}, diagnostics);
       ASSERT_TRUE(words.has_value()) << m.name << " (" << glsl::shaderKindName(kind) << "): " << diagnostics.format();
       EXPECT_EQ(spirv::validate(*words), "") << m.name << " (" << glsl::shaderKindName(kind) << ")";
       EXPECT_EQ(shader.glsl.origins.size(),

@@ -2,13 +2,7 @@
 
 #include <string>
 
-#include "compiler/document/DocumentLoader.h"
-#include "compiler/glsl/ShaderBuilder.h"
-#include "compiler/ir/Effects.h"
-#include "compiler/ir/passes/Pass.h"
-#include "compiler/library/LibraryStack.h"
-#include "compiler/lower/Lowering.h"
-#include "compiler/resolve/Resolver.h"
+#include "compiler/driver/Compiler.h"
 #include "compiler/xml/XmlParser.h"
 
 namespace mxc::fuzz {
@@ -23,33 +17,20 @@ void parseXml(const uint8_t* data, size_t size) {
   }
 }
 
-namespace {
-
-/// The built-in library, loaded once for all inputs.
-struct Library {
-  SourceManager sources;
-  Diagnostics diagnostics;
-  lib::LibraryStack stack{sources, diagnostics};
-  Library() { stack.addBuiltin(); }
-};
-
-}  // namespace
-
 void compileDocument(const uint8_t* data, size_t size) {
-  static Library library;
-  Diagnostics diagnostics;
-  SourceManager sources;
-  doc::DocumentLoader loader(sources, diagnostics);
-  const doc::Document* document = loader.loadText("fuzz.mtlx", std::string(reinterpret_cast<const char*>(data), size));
-  if (!document) return;
-  resolve::ResolvedDocument resolved = resolve::resolveDocument(*document, library.stack.top(), diagnostics);
-  if (diagnostics.hasErrors()) return;
-  std::vector<ir::Material> materials = lower::lowerDocument(resolved, {}, diagnostics);
-  for (ir::Material& m : materials) {
-    ir::runPasses(m);
-    ir::summarizeEffects(m);
+  // The built-in library, loaded once for all inputs; each input gets a workspace of its own.
+  static Workspace library;
+  static const bool loaded = library.loadLibraries();
+  (void)loaded;
+  Workspace workspace;
+  CompileRequest request;
+  request.document = "fuzz.mtlx";
+  request.text = std::string(reinterpret_cast<const char*>(data), size);
+  request.libraries = &library.libraries;
+  Compiler compiler(workspace, std::move(request));
+  for (const ir::Material& m : compiler.materials()) {
     for (glsl::ShaderKind kind : {glsl::ShaderKind::Raster, glsl::ShaderKind::Eval, glsl::ShaderKind::Furnace}) {
-      glsl::MaterialShader shader = glsl::buildMaterialShader(m, kind);
+      glsl::MaterialShader shader = compiler.shader(m, kind);
       (void)shader;
     }
   }

@@ -23,7 +23,9 @@ std::string shaders(const std::string& relative) {
   std::vector<ir::Material> materials = lowerFile(context, relative);
   std::string out;
   for (const ir::Material& m : materials) {
-    glsl::MaterialShader shader = glsl::buildMaterialShader(m, glsl::ShaderKind::Raster, {false});
+    CompileRequest request;
+    request.expandLibrary = false;  // the material-specific part: library files as #include lines
+    glsl::MaterialShader shader = buildShader(m, glsl::ShaderKind::Raster, request);
     out += "// ==== " + relative + ": material " + m.name + " ====\n" + shader.glsl.text;
   }
   if (context.diagnostics.hasErrors()) out += "\n" + context.diagnostics.format();

@@ -10,10 +10,8 @@
 #include <set>
 #include <sstream>
 
-#include "compiler/ir/Effects.h"
+#include "compiler/driver/Compiler.h"
 #include "compiler/ir/Print.h"
-#include "compiler/ir/passes/Pass.h"
-#include "compiler/lower/Lowering.h"
 #include "support/TestSupport.h"
 
 namespace mxc::test {
@@ -24,16 +22,14 @@ namespace fs = std::filesystem;
 /// The IR dump of a document: each material's tree, or the errors that stopped it.
 std::string dump(const std::string& relative) {
   Context context;
-  const doc::Document* d = context.loader.loadFile(relative);
+  CompileRequest request;
+  request.document = relative;
+  request.partial = true;  // what lowers of a document with errors, then the errors
+  Compiler compiler(context, request);
+  const doc::Document* d = compiler.document();
   if (!d) return context.diagnostics.format();
-  resolve::ResolvedDocument r = resolve::resolveDocument(*d, context.libraries.top(), context.diagnostics);
-  std::vector<ir::Material> materials = lower::lowerDocument(r, {}, context.diagnostics);
   std::string out = "# mxc inspect --ir " + relative + "\n";
-  for (ir::Material& m : materials) {
-    ir::runPasses(m);
-    ir::summarizeEffects(m);
-    out += "\n" + ir::printMaterial(m, &d->source());
-  }
+  for (const ir::Material& m : compiler.materials()) out += "\n" + ir::printMaterial(m, &d->source());
   if (context.diagnostics.hasErrors()) out += "\n" + context.diagnostics.format();
   return out;
 }

@@ -9,36 +9,37 @@
 #include <utility>
 #include <vector>
 
+#include "compiler/driver/Compiler.h"
 #include "compiler/glsl/ShaderBuilder.h"
-#include "compiler/ir/Effects.h"
-#include "compiler/ir/passes/Pass.h"
-#include "compiler/lower/Lowering.h"
 #include "runtime/Evaluator.h"
 #include "support/TestSupport.h"
 
 namespace mxc::test {
 
-/// The materials of a loaded document, lowered with `options` and run through the passes.
-inline std::vector<ir::Material> lowerLoaded(Context& context, const doc::Document* d,
-                                             const lower::LoweringOptions& options = {}) {
-  if (!d) return {};
-  resolve::ResolvedDocument r = resolve::resolveDocument(*d, context.libraries.top(), context.diagnostics);
-  std::vector<ir::Material> materials = lower::lowerDocument(r, options, context.diagnostics);
-  for (ir::Material& m : materials) {
-    ir::runPasses(m);
-    ir::summarizeEffects(m);
-  }
-  return materials;
+/// The materials of a document, compiled to the IR (passes run, features computed) by the
+/// compiler. Lowered even when the context already holds errors (the request is partial), so a
+/// test can look at what a document with errors lowers to.
+inline std::vector<ir::Material> lowerRequest(Context& context, CompileRequest request) {
+  request.partial = true;
+  Compiler compiler(context, std::move(request));
+  return std::move(compiler.materials());
 }
 
 inline std::vector<ir::Material> lowerText(Context& context, const std::string& text,
                                            const lower::LoweringOptions& options = {}) {
-  return lowerLoaded(context, context.load(text), options);
+  CompileRequest request;
+  request.document = "test.mtlx";
+  request.text = text;
+  request.lowering = options;
+  return lowerRequest(context, std::move(request));
 }
 
 inline std::vector<ir::Material> lowerFile(Context& context, const std::filesystem::path& path,
                                            const lower::LoweringOptions& options = {}) {
-  return lowerLoaded(context, context.loader.loadFile(path), options);
+  CompileRequest request;
+  request.document = path;
+  request.lowering = options;
+  return lowerRequest(context, std::move(request));
 }
 
 /// `--set` overrides as lowering options.
@@ -74,10 +75,10 @@ class ValidationEnvironment : public ::testing::Environment {
 inline ::testing::Environment* const kValidationEnvironment =
     ::testing::AddGlobalTestEnvironment(new ValidationEnvironment);
 
-/// Compiles a material's shader of `kind`; fails the test when it does not compile.
-inline std::vector<uint32_t> compileShader(const glsl::MaterialShader& shader) {
+/// Compiles a material's shader; fails the test when it does not compile.
+inline std::vector<uint32_t> compiledWords(const glsl::MaterialShader& shader) {
   Diagnostics diagnostics;
-  auto words = spirv::compile(shader.glsl, {}, diagnostics);
+  auto words = compileShader(shader, {}, diagnostics);
   EXPECT_TRUE(words.has_value()) << diagnostics.format();
   return words.value_or(std::vector<uint32_t>{});
 }
@@ -92,8 +93,8 @@ struct Prepared {
 
 inline Prepared prepare(const ir::Material& material, glsl::ShaderKind kind, const std::filesystem::path& folder = {}) {
   Prepared p;
-  p.shader = glsl::buildMaterialShader(material, kind);
-  p.words = compileShader(p.shader);
+  p.shader = buildShader(material, kind);
+  p.words = compiledWords(p.shader);
   Diagnostics diagnostics;
   if (p.ok()) p.resources = std::make_unique<rt::MaterialResources>(Device::get().context, p.shader.interface, folder, diagnostics);
   EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.format();

@@ -15,6 +15,7 @@
 
 #include "compiler/common/Diagnostic.h"
 #include "compiler/document/DocumentLoader.h"
+#include "compiler/driver/Compiler.h"
 #include "compiler/library/LibraryStack.h"
 #include "compiler/resolve/Resolver.h"
 
@@ -73,22 +74,19 @@ inline std::vector<std::string> staleGoldens(const std::filesystem::path& folder
   return stale;
 }
 
-/// One compilation context: sources, diagnostics, the built-in library, and a loader.
-struct Context {
-  SourceManager sources;
-  Diagnostics diagnostics;
-  lib::LibraryStack libraries{sources, diagnostics};
-  doc::DocumentLoader loader{sources, diagnostics};
-
+/// One test's workspace (sources, diagnostics, the built-in library, a loader), with helpers
+/// to load and resolve texts for the tests of those stages.
+struct Context : Workspace {
   explicit Context(bool builtin = true) {
-    if (builtin) libraries.addBuiltin();
+    if (builtin) loadLibraries();
   }
 
   const doc::Document* load(const std::string& text, const std::string& name = "test.mtlx") {
     return loader.loadText(name, text);
   }
 
-  /// Loads and resolves; the result stays valid as long as the context.
+  /// Loads and resolves (the resolver's own tests); the result stays valid as long as the
+  /// context.
   resolve::ResolvedDocument resolve(const std::string& text, const std::string& name = "test.mtlx") {
     const doc::Document* d = load(text, name);
     if (!d) return {};

@@ -2,39 +2,7 @@
 // interface kind of the IR. Directions are in the lobe's local frame (z = shading normal).
 // Only the kinds a material uses are compiled (the backend defines MXC_HAS_<KIND>).
 
-const int MXC_LOBE_DIELECTRIC = 1;
-const int MXC_LOBE_CONDUCTOR = 2;
-const int MXC_LOBE_SCHLICK = 3;
-const int MXC_LOBE_DIFFUSE = 4;      // Fujii Oren-Nayar
-const int MXC_LOBE_EON = 5;          // energy-preserving Oren-Nayar
-const int MXC_LOBE_BURLEY = 6;
-const int MXC_LOBE_TRANSLUCENT = 7;  // diffuse transmission
-const int MXC_LOBE_SHEET = 8;        // thin-walled diffuse reflection and transmission
-const int MXC_LOBE_SHEEN = 9;        // Estevez & Kulla 2017
-const int MXC_LOBE_FUZZ = 10;        // Zeltner et al. 2022 (OpenPBR fuzz)
-
-// Dielectric lobe modes (bits of MxcLobe.mode).
-const int MXC_REFLECT = 1;
-const int MXC_TRANSMIT = 2;
-const int MXC_THIN_WALL = 4;  // transmission is un-deflected (a thin sheet)
-
-struct MxcLobe {
-  int kind;
-  int mode;
-  vec3 weight;  // from the layering, for the current wo (coverage, mixes, 1 - E above, absorption along wo)
-  vec3 N;
-  vec3 T;
-  vec2 alpha;   // GGX alphas (tangent, bitangent)
-  float eta;    // dielectric: relative IOR (below / above)
-  vec3 c0;      // dielectric: reflection tint; conductor: n; schlick: f0; others: colour
-  vec3 c1;      // dielectric: transmission tint; conductor: k; schlick: f82 tint
-  vec3 c2;      // schlick: f90
-  float p0;     // schlick: exponent; diffuse, sheen: roughness; sheet: g
-  float p1;     // schlick: Fresnel scale (specular_weight)
-  vec3 film;    // thin film: thickness (nm), relative IOR, coverage (0: no film)
-  vec3 tau;     // optical depth of absorbing media above, applied along wi
-  float tauEta; // their IOR, for refracted path cosines
-};
+#include "generated/mxc_lobe.glsl"
 
 struct MxcLobeSample {
   vec3 wi;      // local
@@ -347,13 +315,17 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi) {
       return mxc_ggx_pdf_vndf(o, h, l.alpha) * (fr > 0.0 ? ft : 1.0) * eta * eta * abs(hi) / denom;
     }
 #endif
+#ifdef MXC_HAS_TRANSLUCENT
     case MXC_LOBE_TRANSLUCENT:
       return wo.z * wi.z < 0.0 ? abs(wi.z) * MXC_INV_PI : 0.0;
+#endif
+#ifdef MXC_HAS_SHEET
     case MXC_LOBE_SHEET: {
       float g = clamp(l.p0, -1.0, 1.0);
       float share = wo.z * wi.z > 0.0 ? 0.5 * (1.0 - g) : 0.5 * (1.0 + g);
       return share * abs(wi.z) * MXC_INV_PI;
     }
+#endif
 #ifdef MXC_HAS_FUZZ
     case MXC_LOBE_FUZZ:
       return mxc_fuzz_pdf(l.p0, wo, wi);
@@ -430,6 +402,7 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u) {
       return s;
     }
 #endif
+#if defined(MXC_HAS_TRANSLUCENT) || defined(MXC_HAS_SHEET)
     case MXC_LOBE_TRANSLUCENT:
     case MXC_LOBE_SHEET: {
       float g = l.kind == MXC_LOBE_SHEET ? clamp(l.p0, -1.0, 1.0) : 1.0;
@@ -441,6 +414,7 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u) {
       s.valid = s.pdf > 0.0;
       return s;
     }
+#endif
 #ifdef MXC_HAS_FUZZ
     case MXC_LOBE_FUZZ: {
       if (wo.z <= 0.0) return s;

@@ -1,6 +1,6 @@
 // The white furnace: the directional albedo of the material for the view directions
 // mxc_in[a], by Monte Carlo with the closure's own sampling. Work group a, invocation t writes
-// the sums of its `counts.y` samples: mxc_out[4 (64 a + t) + k] = reflected sum, transmitted
+// the sums of its `counts.y` samples: mxc_out[4 (MXC_WORK_GROUP_SIZE a + t) + k] = reflected sum, transmitted
 // sum, and their squares (k = 0..3), from which the host gets the mean and its standard error.
 // Light passing straight through (opacity < 1) counts as transmitted.
 
@@ -12,7 +12,7 @@ void main() {
   vec3 wo = mxc_in[a].xyz;
   MxcClosure c;
   mxc_material_closure(g, wo, c);
-  uint seed = mxc_pcg(64u * a + t + mxc_pcg(mxc_batch.counts.z));
+  uint seed = mxc_pcg(MXC_WORK_GROUP_SIZE * a + t + mxc_pcg(mxc_batch.counts.z));
   vec3 r = vec3(0.0), tr = vec3(0.0), r2 = vec3(0.0), tr2 = vec3(0.0);
   for (uint s = 0u; s < mxc_batch.counts.y; ++s) {
     vec3 u = vec3(mxc_uniform(seed), mxc_uniform(seed), mxc_uniform(seed));
@@ -25,7 +25,7 @@ void main() {
     r2 += reflected * reflected;
     tr2 += transmitted * transmitted;
   }
-  uint base = 4u * (64u * a + t);
+  uint base = 4u * (MXC_WORK_GROUP_SIZE * a + t);
   mxc_out[base] = vec4(r, 0.0);
   mxc_out[base + 1u] = vec4(tr, 0.0);
   mxc_out[base + 2u] = vec4(r2, 0.0);

@@ -26,8 +26,8 @@ vec3 mxc_sky(vec3 d) {
 }
 
 vec3 mxc_environment(vec3 d) {
-  if (mxc_view.counts.y == 1) return vec3(mxc_view.environment.x);
-  if (mxc_view.counts.y == 2) return mxc_view.environment.x * mxc_sky(d);
+  if (mxc_view.counts.y == MXC_ENV_WHITE) return vec3(mxc_view.environment.x);
+  if (mxc_view.counts.y == MXC_ENV_SKY) return mxc_view.environment.x * mxc_sky(d);
   return vec3(0.0);
 }
 
@@ -86,7 +86,7 @@ void main() {
     radiance += mxc_closure_eval(c, wo, wi) * irradiance;
   }
 
-  if (mxc_view.counts.y != 0) {
+  if (mxc_view.counts.y != MXC_ENV_NONE) {
     int n = max(mxc_view.counts.w, 1);
     uint seed = mxc_pcg(uint(gl_FragCoord.x) + mxc_pcg(uint(gl_FragCoord.y) + mxc_pcg(uint(mxc_view.counts.z))));
     vec3 sum = vec3(0.0);

@@ -12,8 +12,7 @@
 // by half vectors drawn from its distribution, which keeps grazing views (where the lobe is
 // concentrated) accurate.
 
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0, std430) writeonly buffer MxcOutput { vec4 mxc_out[]; };
+#include "generated/mxc_tables_stage.glsl"
 
 
 void main() {

@@ -3,7 +3,7 @@
 
 namespace mxc::ir {
 
-int bulkUnderTransmission(Material& m) {
+int bulkUnderTransmission(Material& m, const PassContext&) {
   int edits = 0;
   const bool thinWalled = m.thinWalled.present() && m.exprs.isConstantEqual(m.thinWalled.value, 1.0f);
   for (Index i : reachableNodes(m)) {

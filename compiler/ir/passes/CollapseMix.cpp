@@ -4,7 +4,7 @@
 
 namespace mxc::ir {
 
-int collapseMix(Material& m) {
+int collapseMix(Material& m, const PassContext&) {
   std::vector<Index> replacement(m.nodes.size(), kNone);
   Index absorber = kNone;
   auto isAbsorber = [&](Index i) { return i != kNone && m.nodes[i].kind == ScatterKind::Absorber; };

@@ -6,7 +6,7 @@
 
 namespace mxc::ir {
 
-int commonSubexpressions(Material& m) {
+int commonSubexpressions(Material& m, const PassContext&) {
   int edits = 0;
   std::vector<Index> nodes = reachableNodes(m);
   // Interfaces, media and emissions: the first of equal ones serves all (quadratic in the

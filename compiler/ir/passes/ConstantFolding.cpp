@@ -94,7 +94,7 @@ std::optional<ExprId> simplify(const ExprGraph& g, const Expr& e, const std::vec
 
 }  // namespace
 
-int constantFolding(Material& m) {
+int constantFolding(Material& m, const PassContext&) {
   return rebuildExpressions(m, [](ExprGraph& g, const ExprGraph& old, ExprId id,
                                   const std::vector<ExprId>& args) -> std::optional<ExprId> {
     const Expr& e = old[id];

@@ -4,7 +4,7 @@
 
 namespace mxc::ir {
 
-int deadCode(Material& m) {
+int deadCode(Material& m, const PassContext&) {
   // Expressions: a rebuild keeps only what reachable parameters use.
   const size_t before = m.exprs.size();
   rebuildExpressions(m, [](ExprGraph&, const ExprGraph&, ExprId, const std::vector<ExprId>&) -> std::optional<ExprId> {

@@ -12,7 +12,7 @@ constexpr size_t kMaxNodes = 4096;
 
 }  // namespace
 
-int distributeOverMix(Material& m) {
+int distributeOverMix(Material& m, const PassContext&) {
   std::vector<Index> nodes = reachableNodes(m);
   if (nodes.size() > kMaxNodes) {
     bool noted = false;

@@ -33,7 +33,7 @@ bool differByThinFilm(const Material& m, Index a, Index b, Index& filmA, Index& 
 
 }  // namespace
 
-int foldThinFilmMix(Material& m) {
+int foldThinFilmMix(Material& m, const PassContext&) {
   std::vector<Index> replacement(m.nodes.size(), kNone);
   for (Index i : reachableNodes(m)) {
     const ScatterNode n = m.nodes[i];

@@ -28,7 +28,7 @@ bool sameSurface(const Material& m, Index r, Index t) {
 
 }  // namespace
 
-int mergeDielectricLobes(Material& m) {
+int mergeDielectricLobes(Material& m, const PassContext&) {
   int edits = 0;
   for (Index i : reachableNodes(m)) {
     ScatterNode n = m.nodes[i];

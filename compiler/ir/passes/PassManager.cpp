@@ -21,19 +21,19 @@ const std::vector<Pass>& standardPasses() {
   return passes;
 }
 
-std::vector<PassReport> runPasses(Material& m, int maxRounds) {
+std::vector<PassReport> runPasses(Material& m, const PassContext& context, int maxRounds) {
   std::vector<PassReport> reports;
   for (const Pass& p : standardPasses()) reports.push_back({p.name, 0});
   for (int round = 0; round < maxRounds; ++round) {
     int total = 0;
     for (size_t i = 0; i < standardPasses().size(); ++i) {
-      int edits = standardPasses()[i].run(m);
+      int edits = standardPasses()[i].run(m, context);
       reports[i].edits += edits;
       total += edits;
     }
     if (total == 0) break;
   }
-  reports.push_back({"dead-code", deadCode(m)});
+  reports.push_back({"dead-code", deadCode(m, context)});
   return reports;
 }
 

@@ -4,7 +4,7 @@
 
 namespace mxc::ir {
 
-int pruneCoverage(Material& m) {
+int pruneCoverage(Material& m, const PassContext&) {
   int edits = 0;
   std::vector<Index> replacement(m.nodes.size(), kNone);
   Index absorber = kNone;

@@ -16,7 +16,7 @@ bool zeroOrAbsent(const Material& m, const Slots& slots, Slot slot) {
 
 }  // namespace
 
-int removeEmptyMedia(Material& m) {
+int removeEmptyMedia(Material& m, const PassContext&) {
   int edits = 0;
   for (Index i : reachableNodes(m)) {
     ScatterNode& n = m.nodes[i];
@@ -34,7 +34,7 @@ int removeEmptyMedia(Material& m) {
   return edits;
 }
 
-int removeThinFilm(Material& m) {
+int removeThinFilm(Material& m, const PassContext&) {
   int edits = 0;
   std::vector<bool> seen(m.interfaces.size());
   for (Index i : reachableNodes(m)) {
@@ -55,7 +55,7 @@ int removeThinFilm(Material& m) {
   return edits;
 }
 
-int removeDefaultSlots(Material& m) {
+int removeDefaultSlots(Material& m, const PassContext&) {
   int edits = 0;
   auto prune = [&](Slots& slots) {
     std::vector<Slot> drop;
@@ -81,7 +81,7 @@ int removeDefaultSlots(Material& m) {
   return edits;
 }
 
-int removeDarkEmission(Material& m) {
+int removeDarkEmission(Material& m, const PassContext&) {
   std::vector<Index> replacement(m.nodes.size(), kNone);
   for (Index i : reachableNodes(m)) {
     const ScatterNode& n = m.nodes[i];

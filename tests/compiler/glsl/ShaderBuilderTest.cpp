@@ -31,14 +31,14 @@ glsl::MaterialShader shaderOf(const std::string& text, const lower::LoweringOpti
     ADD_FAILURE() << "expected one material";
     return {};
   }
-  return glsl::buildMaterialShader(materials[0], glsl::ShaderKind::Raster);
+  return buildShader(materials[0], glsl::ShaderKind::Raster);
 }
 
 TEST(ShaderBuilder, CoatCodeOnlyWhenTheMaterialHasACoat) {
   glsl::MaterialShader plain = shaderOf(openPbr());
   glsl::MaterialShader coated = shaderOf(openPbr("    <input name=\"coat_weight\" type=\"float\" value=\"1\" />\n"));
-  EXPECT_EQ(plain.interface.features.lobes, 2);  // specular and diffuse
-  EXPECT_EQ(coated.interface.features.lobes, 3);
+  EXPECT_EQ(plain.interface.lobes, 2);  // specular and diffuse
+  EXPECT_EQ(coated.interface.lobes, 3);
   EXPECT_EQ(count(plain.glsl.text, "= MXC_LOBE_DIELECTRIC;"), 1u);
   EXPECT_EQ(count(coated.glsl.text, "= MXC_LOBE_DIELECTRIC;"), 2u);
   // coat_weight = 0 given explicitly folds away the same way.
@@ -74,7 +74,7 @@ TEST(ShaderBuilder, ParamInputsBecomeUniformsWithTheirDefault) {
   EXPECT_GE(count(shader.glsl.text, "mxc_params.p_base_color"), 1u);
   EXPECT_EQ(count(shader.glsl.text, "0.3, 0.5, 0.7"), 0u) << "the value must not be folded into the code";
   // A coat weight that may change keeps the coat's code.
-  EXPECT_EQ(shader.interface.features.lobes, 3);
+  EXPECT_EQ(shader.interface.lobes, 3);
   const glsl::UniformField* color = nullptr;
   for (const glsl::UniformField& f : shader.interface.parameters) color = f.name == "p_base_color" ? &f : color;
   ASSERT_NE(color, nullptr);
@@ -88,7 +88,7 @@ TEST(ShaderBuilder, ParamInputsBecomeUniformsWithTheirDefault) {
 
 TEST(ShaderBuilder, SetOverridesAnInputAndReportsBadOnes) {
   glsl::MaterialShader coated = shaderOf(openPbr(), withInputs({{"coat_weight", "1"}}));
-  EXPECT_EQ(coated.interface.features.lobes, 3);
+  EXPECT_EQ(coated.interface.lobes, 3);
   {
     Context context;
     lowerText(context, openPbr(), withInputs({{"no_such_input", "1"}}));
@@ -122,7 +122,7 @@ TEST(ShaderBuilder, TexturesBecomeBindingsWithTheirColourSpace) {
   std::vector<ir::Material> materials =
       lowerFile(context, sharedDir() / "corpus/materialx/examples/StandardSurface/standard_surface_wood_tiled.mtlx");
   ASSERT_EQ(materials.size(), 1u);
-  glsl::MaterialShader shader = glsl::buildMaterialShader(materials[0], glsl::ShaderKind::Raster);
+  glsl::MaterialShader shader = buildShader(materials[0], glsl::ShaderKind::Raster);
   ASSERT_EQ(shader.interface.textures.size(), 2u);
   std::vector<std::string> spaces;
   for (const glsl::TextureBinding& t : shader.interface.textures) {
@@ -137,7 +137,7 @@ TEST(ShaderBuilder, MaterialLinesMapToTheDocument) {
   Context context;
   std::vector<ir::Material> materials = lowerText(context, openPbr("    <input name=\"coat_weight\" type=\"float\" value=\"1\" />\n"));
   ASSERT_EQ(materials.size(), 1u);
-  glsl::MaterialShader shader = glsl::buildMaterialShader(materials[0], glsl::ShaderKind::Eval);
+  glsl::MaterialShader shader = buildShader(materials[0], glsl::ShaderKind::Eval);
   ASSERT_EQ(shader.glsl.origins.size(), size_t(std::count(shader.glsl.text.begin(), shader.glsl.text.end(), '\n')));
   size_t mapped = 0;
   for (const SourceLocation& at : shader.glsl.origins) mapped += at.valid() ? 1 : 0;

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "compiler/ir/Effects.h"
+#include "compiler/ir/Features.h"
 #include "compiler/ir/Evaluate.h"
 #include "compiler/ir/ExprBuilder.h"
 #include "compiler/ir/Print.h"

@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 
 #include "compiler/common/LargeStack.h"
-#include "compiler/ir/Effects.h"
 #include "compiler/ir/Evaluate.h"
 #include "compiler/ir/Print.h"
 #include "compiler/ir/Walk.h"
@@ -29,43 +28,40 @@ struct Lowered {
   const ir::Material& only() const { return materials.at(0); }
   std::vector<std::string> effects(size_t i = 0) const {
     std::vector<std::string> out;
-    for (const ir::Effect& e : materials.at(i).effects) out.push_back(e.name);
+    materials.at(i).features.effects.forEach([&](ir::Effect e) { out.emplace_back(ir::effectName(e)); });
     return out;
   }
-  const ir::Effect* effect(const std::string& name, size_t i = 0) const {
-    for (const ir::Effect& e : materials.at(i).effects) {
-      if (e.name == name) return &e;
+  /// The origin of an effect, or null when the material does not have it.
+  const ir::Origin* effect(const std::string& name, size_t i = 0) const {
+    const ir::Features& f = materials.at(i).features;
+    for (size_t k = 0; k < static_cast<size_t>(ir::Effect::Count); ++k) {
+      const auto e = static_cast<ir::Effect>(k);
+      if (f.effects.has(e) && ir::effectName(e) == name) return &f.origin(e);
     }
     return nullptr;
   }
 };
 
-Lowered lower(const std::string& text) {
+Lowered lowerRequest(CompileRequest request) {
   Lowered out;
   out.context = std::make_unique<Context>();
-  resolve::ResolvedDocument r = out.context->resolve(text);
+  Compiler compiler(*out.context, std::move(request));
+  out.materials = std::move(compiler.materials());
   EXPECT_FALSE(out.context->diagnostics.hasErrors()) << out.context->diagnostics.format();
-  out.materials = lower::lowerDocument(r, {}, out.context->diagnostics);
-  for (ir::Material& m : out.materials) {
-    ir::runPasses(m);
-    ir::summarizeEffects(m);
-  }
   return out;
 }
 
+Lowered lower(const std::string& text) {
+  CompileRequest request;
+  request.document = "test.mtlx";
+  request.text = text;
+  return lowerRequest(std::move(request));
+}
+
 Lowered lowerFile(const std::string& relative) {
-  Lowered out;
-  out.context = std::make_unique<Context>();
-  const doc::Document* d = out.context->loader.loadFile(sharedDir() / relative);
-  EXPECT_NE(d, nullptr);
-  resolve::ResolvedDocument r = resolve::resolveDocument(*d, out.context->libraries.top(), out.context->diagnostics);
-  out.materials = lower::lowerDocument(r, {}, out.context->diagnostics);
-  EXPECT_FALSE(out.context->diagnostics.hasErrors()) << out.context->diagnostics.format();
-  for (ir::Material& m : out.materials) {
-    ir::runPasses(m);
-    ir::summarizeEffects(m);
-  }
-  return out;
+  CompileRequest request;
+  request.document = sharedDir() / relative;
+  return lowerRequest(std::move(request));
 }
 
 std::string in(const std::string& name, const std::string& type, const std::string& value) {
@@ -122,7 +118,7 @@ TEST(OpenPbrLowering, CoatWeightZeroHasNoCoat) {
   Lowered with = lower(openPbrDocument(in("coat_weight", "float", "1") + in("coat_color", "color3", "0.25, 0.25, 0.25")));
   EXPECT_EQ(ir::structureSignature(with.only()), "slab(dielectric:RT,-,slab(dielectric:RT,-,slab(diffuse,-,-)))");
   ASSERT_NE(with.effect("coat"), nullptr);
-  EXPECT_EQ(with.effect("coat")->origin.input, "coat_weight");
+  EXPECT_EQ(with.effect("coat")->input, "coat_weight");
   // The coat medium: unit thickness, mu_a = -ln(coat_color) / 2 (coat_color = T^2, OpenPBR "Coat").
   const ir::Medium* coat = findMedium(with.only(), ir::Medium::Extent::Finite);
   ASSERT_NE(coat, nullptr);
@@ -154,13 +150,13 @@ TEST(OpenPbrLowering, EachFeatureIsAnEffectKeptByItsInput) {
   for (const Case& c : cases) {
     const std::string text = openPbrDocument(c.inputs);
     Lowered l = lower(text);
-    const ir::Effect* e = l.effect(c.effect);
+    const ir::Origin* e = l.effect(c.effect);
     ASSERT_NE(e, nullptr) << c.effect << " in " << fmt::format("{}", fmt::join(l.effects(), ","));
-    EXPECT_EQ(e->origin.input, c.input) << c.effect;
+    EXPECT_EQ(e->input, c.input) << c.effect;
     // The origin is the line of that input in the document.
     const size_t at = text.find("name=\"" + c.input + "\"");
     const auto line = static_cast<uint32_t>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n') + 1);
-    EXPECT_EQ(e->origin.location.line(), line) << c.effect;
+    EXPECT_EQ(e->location.line(), line) << c.effect;
   }
 }
 
@@ -342,11 +338,15 @@ TEST(Lowering, NodeGraphImplementationsAreInlined) {
 
 TEST(Lowering, UnsupportedNodeIsAnErrorAtItsElement) {
   Context context;
-  resolve::ResolvedDocument r = context.resolve(mtlx(
+  CompileRequest request;
+  request.document = "test.mtlx";
+  request.text = mtlx(
       "  <chiang_hair_bsdf name=\"hair\" type=\"BSDF\"/>\n"
-      "  <surface name=\"surf\" type=\"surfaceshader\"><input name=\"bsdf\" type=\"BSDF\" nodename=\"hair\"/></surface>\n"));
+      "  <surface name=\"surf\" type=\"surfaceshader\"><input name=\"bsdf\" type=\"BSDF\" nodename=\"hair\"/></surface>\n");
+  Compiler compiler(context, request);
+  ASSERT_NE(compiler.resolved(), nullptr);
   ASSERT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
-  lower::lowerDocument(r, {}, context.diagnostics);
+  compiler.materials();
   Diagnostic e = context.firstError();
   EXPECT_NE(e.message.find("<chiang_hair_bsdf> (nodedef ND_chiang_hair_bsdf) is not supported"), std::string::npos)
       << e.message;
@@ -370,12 +370,15 @@ TEST(Lowering, AGraphDeeperThanTheStackIsAnErrorNotACrash) {
                       "nodename=\"n{}\"/></open_pbr_surface>\n",
                       kNodes - 1);
   Context context;
-  std::vector<ir::Material> materials;
+  CompileRequest request;
+  request.document = "deep.mtlx";
+  request.text = mtlx(body);
+  Compiler compiler(context, request);
   runWithLargeStack(
       [&] {
-        resolve::ResolvedDocument r = context.resolve(mtlx(body));
+        ASSERT_NE(compiler.resolved(), nullptr);
         ASSERT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
-        materials = lower::lowerDocument(r, {}, context.diagnostics);
+        compiler.materials();
       },
       size_t{16} << 20);
   ASSERT_TRUE(context.diagnostics.hasErrors());

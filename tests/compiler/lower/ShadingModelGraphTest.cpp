@@ -29,19 +29,14 @@ std::vector<std::string> shadingModelExamples() {
 std::vector<std::string> signatures(const std::string& file, bool viaGraphs) {
   Context context;
   EXPECT_TRUE(context.libraries.addFolder(sharedDir() / "reference/materialx/libraries"));
-  const doc::Document* d = context.loader.loadFile(file);
-  EXPECT_NE(d, nullptr);
-  if (!d) return {};
-  resolve::ResolvedDocument r = resolve::resolveDocument(*d, context.libraries.top(), context.diagnostics);
-  lower::LoweringOptions options;
-  options.useShadingModelGraphs = viaGraphs;
-  std::vector<ir::Material> materials = lower::lowerDocument(r, options, context.diagnostics);
-  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  CompileRequest request;
+  request.document = file;
+  request.lowering.useShadingModelGraphs = viaGraphs;
+  Compiler compiler(context, request);
+  EXPECT_NE(compiler.document(), nullptr);
   std::vector<std::string> out;
-  for (ir::Material& m : materials) {
-    ir::runPasses(m);
-    out.push_back(m.name + ": " + ir::structureSignature(m));
-  }
+  for (const ir::Material& m : compiler.materials()) out.push_back(m.name + ": " + ir::structureSignature(m));
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
   return out;
 }
 

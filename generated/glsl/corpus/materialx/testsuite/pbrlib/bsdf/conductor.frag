@@ -12,7 +12,6 @@
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
 #include "library/mxc_fresnel.glsl"
-#include "library/mxc_sheen.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"

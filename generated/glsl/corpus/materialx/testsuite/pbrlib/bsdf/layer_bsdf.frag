@@ -125,7 +125,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
 #include "library/mxc_fresnel.glsl"
-#include "library/mxc_sheen.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"

@@ -1,0 +1,95 @@
+#include "compiler/driver/Compiler.h"
+
+#include "compiler/ir/passes/Pass.h"
+#include "compiler/resolve/Resolver.h"
+
+namespace mxc {
+
+Workspace::Workspace() : libraries(sources, diagnostics), loader(sources, diagnostics) {}
+
+bool Workspace::loadLibraries(bool builtin, const std::vector<std::string>& folders) {
+  const size_t before = diagnostics.errorCount();
+  if (builtin) {
+    libraries.addBuiltin();
+    libraryInfo.push_back({"builtin", libraries.top().nodeDefCount()});
+  }
+  for (const std::string& folder : folders) {
+    if (libraries.addFolder(folder)) libraryInfo.push_back({folder, libraries.top().nodeDefCount()});
+  }
+  if (libraries.empty()) diagnostics.error({}, "no node library: --no-builtin needs at least one --library");
+  return diagnostics.errorCount() == before;
+}
+
+Compiler::Compiler(Workspace& workspace, CompileRequest request) : workspace_(workspace), request_(std::move(request)) {}
+
+const doc::Document* Compiler::document() {
+  if (loaded_) return document_;
+  loaded_ = true;
+  document_ = request_.text ? workspace_.loader.loadText(request_.document.string(), *request_.text)
+                            : workspace_.loader.loadFile(request_.document);
+  return document_;
+}
+
+std::filesystem::path Compiler::documentFolder() const {
+  return std::filesystem::absolute(request_.document).parent_path();
+}
+
+const resolve::ResolvedDocument* Compiler::resolved() {
+  if (resolved_) return resolved_.get();
+  const doc::Document* d = document();
+  const lib::LibraryStack& libraries = request_.libraries ? *request_.libraries : workspace_.libraries;
+  if (!d || libraries.empty()) return nullptr;
+  // Built in place (a prvalue initialising the new object is never moved): resolved nodes
+  // point at their document's `top` scope, so a ResolvedDocument must not be moved.
+  resolved_.reset(new resolve::ResolvedDocument(
+      resolve::resolveDocument(*d, libraries.top(), workspace_.diagnostics)));
+  return resolved_.get();
+}
+
+std::vector<ir::Material>& Compiler::materials() {
+  if (lowered_) return materials_;
+  lowered_ = true;
+  const resolve::ResolvedDocument* r = resolved();
+  if (!r || (workspace_.diagnostics.hasErrors() && !request_.partial)) return materials_;
+  materials_ = lower::lowerDocument(*r, request_.lowering, workspace_.diagnostics);
+  for (const ir::Material& m : materials_) names_.push_back(m.name);
+  if (!request_.material.empty()) {
+    std::erase_if(materials_, [&](const ir::Material& m) { return m.name != request_.material; });
+  }
+  for (ir::Material& m : materials_) finishMaterial(m, request_);
+  return materials_;
+}
+
+void finishMaterial(ir::Material& material, const CompileRequest& request) {
+  ir::PassContext context;
+  context.accuracy = request.accuracy;
+  context.keptParameters = request.lowering.parameters;
+  ir::runPasses(material, context);
+  material.features = ir::computeFeatures(material);
+}
+
+glsl::MaterialShader Compiler::shader(const ir::Material& material) const { return shader(material, request_.stage); }
+
+glsl::MaterialShader Compiler::shader(const ir::Material& material, glsl::ShaderKind kind) const {
+  return buildShader(material, kind, request_);
+}
+
+std::optional<std::vector<uint32_t>> Compiler::spirv(const glsl::MaterialShader& shader) {
+  return compileShader(shader, request_, workspace_.diagnostics);
+}
+
+glsl::MaterialShader buildShader(const ir::Material& material, glsl::ShaderKind kind, const CompileRequest& request) {
+  glsl::BuildOptions options;
+  options.expandLibrary = request.expandLibrary;
+  options.accuracy = request.accuracy;
+  return glsl::buildMaterialShader(material, kind, options);
+}
+
+std::optional<std::vector<uint32_t>> compileShader(const glsl::MaterialShader& shader, const CompileRequest& request,
+                                                   Diagnostics& diagnostics) {
+  spirv::CompileOptions options;
+  options.optimize = request.optimize;
+  return spirv::compile(shader.glsl, options, diagnostics);
+}
+
+}  // namespace mxc

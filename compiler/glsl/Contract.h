@@ -1,0 +1,89 @@
+#pragma once
+/// \file
+/// The contract between the generated shaders and the harness that runs them, kept in one
+/// place: the lobe kinds and mode bits, the members of MxcLobe, the stage blocks (the raster
+/// renderer's MxcView, the compute stages' MxcBatch) and their bindings, the limits and codes.
+/// The GLSL declarations are generated from these tables (generatedLibraryFile: the files
+/// under "generated/" that the shader library includes), and the C++ side writes blocks through
+/// the same tables (BlockWriter), so a new member, lobe kind or code is one edit here.
+
+#include <cstdint>
+#include <cstring>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "compiler/glsl/Bindings.h"
+
+namespace mxc::glsl {
+
+/// Bits of MxcLobe.mode (dielectric and Schlick lobes): which of reflection and transmission
+/// the lobe carries, and whether transmission goes straight through (a thin sheet).
+enum LobeMode : int { kModeReflect = 1, kModeTransmit = 2, kModeThinWall = 4 };
+
+/// Lights the raster renderer passes (MxcView.lightVector and lightRadiance).
+constexpr uint32_t kMaxLights = 8;
+/// local_size_x of the compute stages that run a material (eval, furnace, sample).
+constexpr uint32_t kWorkGroupSize = 64;
+/// local_size_x and _y of the albedo tables stage.
+constexpr uint32_t kTablesGroupSize = 8;
+/// The binding of the tables stage's output buffer (its own descriptor set).
+constexpr uint32_t kTablesOutputBinding = 0;
+
+/// The environment of the raster renderer, MxcView.counts.y.
+enum class EnvironmentCode : int32_t { None = 0, White = 1, Sky = 2 };
+
+/// A member of a generated GLSL struct or uniform block.
+struct Member {
+  std::string_view type;  ///< GLSL: float, int, vec2, vec3, vec4, ivec4, uvec4, mat4
+  std::string_view name;
+  uint32_t count = 0;     ///< array length; 0 for a single value
+  std::string_view comment;
+  /// MxcLobe: the value a lobe has unless its kind or its layering sets another (GLSL).
+  std::string_view initial = {};
+};
+
+/// MxcLobe, in declaration order.
+std::span<const Member> lobeMembers();
+/// MxcView: the camera, lights and environment of the raster renderer (binding kStageBinding).
+std::span<const Member> viewMembers();
+/// MxcBatch: the compute stages' sizes and seed (binding kStageBinding).
+std::span<const Member> batchMembers();
+
+/// Byte offsets of a block's members in the std140 layout (GLSL 4.50 s. 7.6.2.2), and its size.
+struct Std140Layout {
+  std::vector<uint32_t> offsets;
+  uint32_t size = 0;
+};
+Std140Layout std140Layout(std::span<const Member> members);
+/// std140 base alignment and size of a single value of a GLSL type.
+void std140Type(std::string_view type, uint32_t& align, uint32_t& size);
+
+/// Fills the bytes of a std140 block by member name, from the same table the GLSL is made of.
+class BlockWriter {
+ public:
+  explicit BlockWriter(std::span<const Member> members);
+  /// Writes `value` (a trivially copyable C++ value of the member's size: glm::vec4 for vec4,
+  /// glm::mat4 for mat4, glm::ivec4 for ivec4, ...) into member `name`, element `index`.
+  /// Throws std::logic_error for an unknown member or a wrong size (a mismatch of the tables).
+  template <typename T>
+  void set(std::string_view name, const T& value, uint32_t index = 0) {
+    write(name, &value, sizeof(T), index);
+  }
+  const std::vector<uint8_t>& bytes() const { return bytes_; }
+
+ private:
+  void write(std::string_view name, const void* data, size_t size, uint32_t index);
+  std::span<const Member> members_;
+  Std140Layout layout_;
+  std::vector<uint8_t> bytes_;
+};
+
+/// The GLSL of a generated library file ("generated/mxc_lobe.glsl",
+/// "generated/mxc_view_block.glsl", "generated/mxc_batch_block.glsl"), or nullopt for any other
+/// path.
+std::optional<std::string> generatedLibraryFile(std::string_view path);
+
+}  // namespace mxc::glsl
