@@ -64,6 +64,7 @@ void finishMaterial(ir::Material& material, const CompileRequest& request) {
   ir::PassContext context;
   context.accuracy = request.accuracy;
   context.keptParameters = request.lowering.parameters;
+  context.verify = request.verifyIr;
   ir::runPasses(material, context);
   material.features = ir::computeFeatures(material);
 }

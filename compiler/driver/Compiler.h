@@ -80,6 +80,13 @@ struct CompileRequest {
   bool expandLibrary = true;
   /// SPIRV-Tools' performance passes (`-O`).
   bool optimize = false;
+  /// Verify the IR after lowering and after every pass (compiler/ir/Verify.h): on in debug
+  /// builds and in the tests; a broken rule throws ir::VerifyFailure.
+#ifdef NDEBUG
+  bool verifyIr = false;
+#else
+  bool verifyIr = true;
+#endif
 };
 
 /// One compilation of one document, in a workspace.

@@ -328,13 +328,13 @@ void ClosureEmitter::node(Index index, const std::string& weight, const Above& a
       std::string color = e.slots.find(Slot::Color) ? x_.param(*e.slots.find(Slot::Color), "vec3(0.0)") : "vec3(0.0)";
       std::string shape = "1.0";
       if (e.kind == ir::Emission::Kind::Conical) {
-        // Inside the cone of half-angle `inner` (degrees) fully, fading to `outer`.
+        // Inside the cone of half-angle `inner` (degrees) fully, fading to `outer` (MaterialX
+        // conical_edf; its defaults 60 and 0: a hard edge).
         const ir::Param* normal = e.slots.find(Slot::Normal);
-        const ir::Param* inner = e.slots.find(Slot::Roughness);
-        const ir::Param* outer = e.slots.find(Slot::Exponent);
-        shape = fmt::format("smoothstep(cos(radians({})), cos(radians({})), dot({}, wo))",
-                            outer ? x_.param(*outer, "90.0") : "90.0", inner ? x_.param(*inner, "60.0") : "60.0",
-                            normal ? x_.param(*normal, "g.N") : "g.N");
+        const ir::Param* inner = e.slots.find(Slot::InnerAngle);
+        const ir::Param* outer = e.slots.find(Slot::OuterAngle);
+        shape = fmt::format("mxc_cone_falloff(dot({}, wo), {}, {})", normal ? x_.param(*normal, "g.N") : "g.N",
+                            inner ? x_.param(*inner, "60.0") : "60.0", outer ? x_.param(*outer, "0.0") : "0.0");
       }
       std::string directional;
       if (const ir::Param* f0 = e.slots.find(Slot::F0)) {

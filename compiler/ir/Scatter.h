@@ -68,6 +68,8 @@ enum class Slot : uint8_t {
   BaseRoughness,     ///< float: a coat's estimate of the roughness under it, r_b (OpenPBR eq. base_roughness_estimate)
   Weight,            ///< float: a lobe scale MaterialX gives but physics does not (pbrlib `weight`)
   Luminance,         ///< float: emission luminance (nits)
+  InnerAngle,        ///< float: conical emission, full inside this half-angle (degrees)
+  OuterAngle,        ///< float: conical emission, none outside this half-angle (degrees)
   Count
 };
 
@@ -173,7 +175,8 @@ std::string_view extentName(Medium::Extent extent);
 struct Emission {
   enum class Kind : uint8_t { Uniform, Conical };
   Kind kind = Kind::Uniform;
-  Slots slots;  ///< Color (radiance or luminance-weighted colour); Conical: Normal, Roughness(inner angle), Exponent(outer)
+  Slots slots;  ///< Color (radiance or luminance-weighted colour); Conical: Normal, InnerAngle, OuterAngle;
+                ///< a generalized Schlick factor on either: F0, F90, Exponent
   Origin origin;
 };
 

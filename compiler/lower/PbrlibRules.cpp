@@ -171,8 +171,8 @@ Closure conicalEdf(Context& c, const NodeRef& n, std::string_view) {
   e.origin = c.nodeOrigin(n);
   e.slots.set(Slot::Color, c.param(n, "color"));
   e.slots.set(Slot::Normal, c.param(n, "normal"));
-  e.slots.set(Slot::Roughness, c.param(n, "inner_angle"));
-  e.slots.set(Slot::Exponent, c.param(n, "outer_angle"));
+  e.slots.set(Slot::InnerAngle, c.param(n, "inner_angle"));
+  e.slots.set(Slot::OuterAngle, c.param(n, "outer_angle"));
   return {Closure::Kind::Emission, ir::kNone, {c.material.addEmission(std::move(e))}};
 }
 

@@ -57,3 +57,13 @@ vec3 mxc_sample_cosine(vec2 u) {
   float phi = 2.0 * MXC_PI * u.y;
   return vec3(r * cos(phi), r * sin(phi), mxc_safe_sqrt(1.0 - u.x));
 }
+
+// The angular falloff of a conical emitter (MaterialX conical_edf): 1 inside the half-angle
+// `innerDeg`, fading smoothly to 0 at `outerDeg`; an outer angle not beyond the inner one
+// means no fading (a hard edge), and smoothstep is never given equal or reversed edges.
+float mxc_cone_falloff(float cosTheta, float innerDeg, float outerDeg) {
+  float cosInner = cos(radians(innerDeg));
+  float cosOuter = cos(radians(max(outerDeg, innerDeg)));
+  if (cosOuter >= cosInner - 1e-6) return cosTheta >= cosInner ? 1.0 : 0.0;
+  return smoothstep(cosOuter, cosInner, cosTheta);
+}

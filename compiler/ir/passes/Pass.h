@@ -20,6 +20,9 @@ struct PassContext {
   /// Inputs of the shading node the user keeps variable (`--param`): their Op::Parameter
   /// expressions must survive, whatever their default value.
   std::span<const std::string> keptParameters;
+  /// Run the IR verifier (compiler/ir/Verify.h) on the material before the passes and after
+  /// each one; a broken rule throws VerifyFailure naming the pass. On in tests and debug builds.
+  bool verify = false;
 };
 
 struct Pass {

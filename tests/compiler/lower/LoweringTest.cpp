@@ -336,6 +336,26 @@ TEST(Lowering, NodeGraphImplementationsAreInlined) {
   EXPECT_FLOAT_EQ(color[2], 0.1f);
 }
 
+TEST(Lowering, ConicalEmissionUnderASchlickFactorKeepsItsAngles) {
+  // The cone's angles had the slots Roughness and Exponent; a generalized Schlick factor over
+  // the cone wrote its exponent into Exponent, so the outer angle became 3 degrees.
+  Lowered l = lower(mtlx(
+      "  <conical_edf name=\"cone\" type=\"EDF\">\n" + in("inner_angle", "float", "20") + in("outer_angle", "float", "40") +
+      "  </conical_edf>\n"
+      "  <generalized_schlick_edf name=\"fade\" type=\"EDF\">\n" + in("exponent", "float", "3") +
+      "    <input name=\"base\" type=\"EDF\" nodename=\"cone\"/>\n  </generalized_schlick_edf>\n"
+      "  <surface name=\"surf\" type=\"surfaceshader\"><input name=\"edf\" type=\"EDF\" nodename=\"fade\"/></surface>\n"));
+  ASSERT_EQ(l.only().emissions.size(), 1u);
+  const ir::Emission& e = l.only().emissions[0];
+  EXPECT_EQ(e.kind, ir::Emission::Kind::Conical);
+  EXPECT_EQ(constant(l.only(), e.slots.value(Slot::InnerAngle)), std::vector<float>{20.0f});
+  EXPECT_EQ(constant(l.only(), e.slots.value(Slot::OuterAngle)), std::vector<float>{40.0f});
+  EXPECT_EQ(constant(l.only(), e.slots.value(Slot::Exponent)), std::vector<float>{3.0f});
+  const std::string glsl = buildShader(l.only(), glsl::ShaderKind::Raster).glsl.text;
+  EXPECT_NE(glsl.find("mxc_cone_falloff(dot(v1, wo), 20.0, 40.0)"), std::string::npos);  // v1: the normal
+  EXPECT_NE(glsl.find("mxc_fresnel_schlick(clamp(dot(g.N, wo), 0.0, 1.0), vec3(1.0), vec3(1.0), 3.0)"), std::string::npos);
+}
+
 TEST(Lowering, UnsupportedNodeIsAnErrorAtItsElement) {
   Context context;
   CompileRequest request;
