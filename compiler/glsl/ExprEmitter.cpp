@@ -155,6 +155,7 @@ std::string ExprEmitter::emit(ExprId id) {
   switch (e.op) {
     case Op::Constant:
     case Op::Texture: return ref(id);
+    case Op::Local: return m_.exprs.text(id);  // the back end's own value, by its GLSL
     case Op::Parameter:
       value = fmt::format("mxc_params.{}", m_.exprs.text(id));
       parameters_.emplace(m_.exprs.text(id), e.type);

@@ -124,11 +124,11 @@ std::string_view shaderKindName(ShaderKind kind) {
 
 MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind, const BuildOptions& options) {
   ExprEmitter exprs(material, kFirstTextureBinding);
-  ClosureEmitter closure(material, exprs);
+  const Closure closure = buildClosure(material, exprs, options.accuracy);
   MaterialShader out;
   MaterialInterface& iface = out.interface;
   iface.textures = exprs.textures();
-  iface.lobes = closure.lobeCount();
+  iface.lobes = closure.lobes;
   // The library's closure code refers to a lobe type, so at least one kind is compiled in.
   iface.lobeKinds = material.features.lobes.empty() ? FlagSet<ir::LobeKind>().insert(ir::LobeKind::EON)
                                                     : material.features.lobes;
@@ -177,7 +177,7 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   w.line(fmt::format("// ---- material '{}' ----", material.name), material.origin.location);
   w.line("void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {", material.origin.location);
   w.lines(exprs.statements());
-  w.lines(closure.statements());
+  w.lines(closure.lines);
   w.line("}");
   w.line("");
   switch (kind) {

@@ -62,6 +62,8 @@ enum class Op : uint8_t {
   Rotate3D,     ///< (vector, degrees, axis)
   Rotate2D,     ///< (vector, degrees)
   TransformPoint, TransformVector, TransformNormal,  ///< payload: "fromspace,tospace"
+  // The back end's own values (never in a material's IR)
+  Local,  ///< a value the generated code computes at run time (a lobe's albedo, a library call); payload: its GLSL
 };
 
 std::string_view opName(Op op);

@@ -49,7 +49,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 dark2 = mxc_coat_darkening(1.68, vec3(0.8, 0.75, 0.7), 0.9979174, 1.0, dot(wo, lobe0.N));
-  vec3 w3 = vec3(((vec3(1.0) - e1) * dark2));
+  vec3 w3 = ((vec3(1.0) - e1) * dark2);
   MxcLobe lobe4;
   lobe4.kind = MXC_LOBE_DIELECTRIC;
   lobe4.mode = 1;
@@ -63,7 +63,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe4.c2 = vec3(1.0);
   lobe4.p0 = 0.0;
   lobe4.p1 = 1.0;
-  lobe4.film = vec3(420.0, 2.0 / 1.68, 1.0);
+  lobe4.film = vec3(420.0, 1.1904762, 1.0);
   lobe4.tau = vec3(0.0);
   lobe4.tauEta = 1.0;
   c.lobes[1] = lobe4;

@@ -48,7 +48,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 tau2 = vec3(0.017979505, 0.4887335, 0.6770434);
-  vec3 w3 = vec3(((vec3(1.0) - e1) * mxc_absorption(tau2, 1.5, clamp(dot(wo, lobe0.N), 0.0, 1.0))));
+  vec3 w3 = ((vec3(1.0) - e1) * mxc_absorption(tau2, 1.5, clamp(dot(wo, lobe0.N), 0.0, 1.0)));
   MxcLobe lobe4;
   lobe4.kind = MXC_LOBE_CONDUCTOR;
   lobe4.mode = 1;

@@ -61,7 +61,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.tauEta = 1.0;
   c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
-  vec3 w2 = vec3(((1.0 - 0.1) + 0.1 * (vec3(1.0) - e1)));
+  vec3 w2 = (0.9 + (0.1 * (vec3(1.0) - e1)));
   MxcLobe lobe3;
   lobe3.kind = MXC_LOBE_DIELECTRIC;
   lobe3.mode = 1;
@@ -80,7 +80,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.tauEta = 1.0;
   c.lobes[1] = lobe3;
   vec3 e4 = mxc_lobe_layer_albedo(lobe3, mxc_to_local(mxc_frame(lobe3.N, lobe3.T), wo));
-  vec3 w5 = (w2 * ((1.0 - 0.4) + 0.4 * (vec3(1.0) - e4)));
+  vec3 w5 = (w2 * (0.6 + (0.4 * (vec3(1.0) - e4))));
   MxcLobe lobe6;
   lobe6.kind = MXC_LOBE_DIFFUSE;
   lobe6.mode = 1;

@@ -97,7 +97,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe5;
   lobe5.kind = MXC_LOBE_DIELECTRIC;
   lobe5.mode = 1;
-  lobe5.weight = vec3(m0);
+  lobe5.weight = m0;
   lobe5.N = v25;
   lobe5.T = v47;
   lobe5.alpha = vec2(0.010000001);
@@ -115,7 +115,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe7;
   lobe7.kind = MXC_LOBE_EON;
   lobe7.mode = 0;
-  lobe7.weight = (vec3(m0) * (vec3(1.0) - e6));
+  lobe7.weight = (m0 * (vec3(1.0) - e6));
   lobe7.N = lobe5.N;
   lobe7.T = lobe5.T;
   lobe7.alpha = vec2(0.0);

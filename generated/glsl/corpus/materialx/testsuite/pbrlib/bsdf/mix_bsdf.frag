@@ -48,7 +48,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe2;
   lobe2.kind = MXC_LOBE_DIFFUSE;
   lobe2.mode = 1;
-  lobe2.weight = vec3(m0);
+  lobe2.weight = m0;
   lobe2.N = v2;
   lobe2.T = g.T;
   lobe2.alpha = vec2(0.0);
@@ -120,7 +120,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe2;
   lobe2.kind = MXC_LOBE_DIELECTRIC;
   lobe2.mode = 1;
-  lobe2.weight = vec3(m0);
+  lobe2.weight = m0;
   lobe2.N = v2;
   lobe2.T = v3;
   lobe2.alpha = vec2(0.05);

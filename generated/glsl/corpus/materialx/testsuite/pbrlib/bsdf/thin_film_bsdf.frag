@@ -325,7 +325,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe2;
   lobe2.kind = MXC_LOBE_DIELECTRIC;
   lobe2.mode = 1;
-  lobe2.weight = vec3(m0);
+  lobe2.weight = m0;
   lobe2.N = v3;
   lobe2.T = v4;
   lobe2.alpha = vec2(0.3);
@@ -380,7 +380,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe1;
   lobe1.kind = MXC_LOBE_DIELECTRIC;
   lobe1.mode = 1;
-  lobe1.weight = vec3(m0);
+  lobe1.weight = m0;
   lobe1.N = v2;
   lobe1.T = v3;
   lobe1.alpha = vec2(0.0);
