@@ -225,10 +225,10 @@ RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resourc
   }
   block.set("environment", glm::vec4(s.environmentIntensity, s.emissionScale, 0.0f, 0.0f));
   const std::vector<VertexInput> inputs = {
-      {0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
-      {1, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
-      {2, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
-      {3, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}};
+      {glsl::kAttributePosition, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
+      {glsl::kAttributeNormal, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
+      {glsl::kAttributeTangent, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
+      {glsl::kAttributeUv, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}};
   return draw(mesh, vertexSpirv_, fragmentSpirv, inputs, set, s,
               [&](const FrameView& v) {
                 block.set("objectToWorld", v.objectToWorld);

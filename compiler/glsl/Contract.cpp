@@ -98,6 +98,28 @@ std::string batchHeader() {
   return out;
 }
 
+std::string codesHeader() {
+  std::string out = kGeneratedNote;
+  out += fmt::format("const int MXC_ADDRESS_CONSTANT = {};\n", int(AddressMode::Constant));
+  out += fmt::format("const int MXC_ADDRESS_CLAMP = {};\n", int(AddressMode::Clamp));
+  out += fmt::format("const int MXC_ADDRESS_PERIODIC = {};\n", int(AddressMode::Periodic));
+  out += fmt::format("const int MXC_ADDRESS_MIRROR = {};\n", int(AddressMode::Mirror));
+  out += fmt::format("const int MXC_TRANSFORM_POINT = {};\n", int(TransformKind::Point));
+  out += fmt::format("const int MXC_TRANSFORM_VECTOR = {};\n", int(TransformKind::Vector));
+  out += fmt::format("const int MXC_TRANSFORM_NORMAL = {};\n", int(TransformKind::Normal));
+  return out;
+}
+
+std::string vertexInputsHeader() {
+  std::string out = kGeneratedNote;
+  out += fmt::format("layout(location = {}) in vec3 inPosition;\n", uint32_t(kAttributePosition));
+  out += fmt::format("layout(location = {}) in vec3 inNormal;\n", uint32_t(kAttributeNormal));
+  out += fmt::format("layout(location = {}) in vec4 inTangent;  // xyz: tangent, w: handedness of the bitangent\n",
+                     uint32_t(kAttributeTangent));
+  out += fmt::format("layout(location = {}) in vec2 inUv;\n", uint32_t(kAttributeUv));
+  return out;
+}
+
 std::string tablesHeader() {
   std::string out = kGeneratedNote;
   out += fmt::format("layout(local_size_x = {0}, local_size_y = {0}) in;\n", kTablesGroupSize);
@@ -168,6 +190,8 @@ std::optional<std::string> generatedLibraryFile(std::string_view path) {
   if (path == "generated/mxc_view_block.glsl") return viewHeader();
   if (path == "generated/mxc_batch_block.glsl") return batchHeader();
   if (path == "generated/mxc_tables_stage.glsl") return tablesHeader();
+  if (path == "generated/mxc_codes.glsl") return codesHeader();
+  if (path == "generated/mxc_vertex_inputs.glsl") return vertexInputsHeader();
   return std::nullopt;
 }
 

@@ -35,6 +35,15 @@ constexpr uint32_t kTablesOutputBinding = 0;
 /// The environment of the raster renderer, MxcView.counts.y.
 enum class EnvironmentCode : int32_t { None = 0, White = 1, Sky = 2 };
 
+/// MaterialX texture address modes, as mxc_sample_image takes them (MXC_ADDRESS_*).
+enum class AddressMode : int32_t { Constant = 0, Clamp = 1, Periodic = 2, Mirror = 3 };
+/// What mxc_transform moves between object and world space (MXC_TRANSFORM_*).
+enum class TransformKind : int32_t { Point = 0, Vector = 1, Normal = 2 };
+
+/// The vertex attributes of the raster renderer: their locations in mxc_raster.vert
+/// (generated) and in the pipeline's vertex input state (runtime/Renderer.cpp).
+enum VertexAttribute : uint32_t { kAttributePosition = 0, kAttributeNormal = 1, kAttributeTangent = 2, kAttributeUv = 3 };
+
 /// A member of a generated GLSL struct or uniform block.
 struct Member {
   std::string_view type;  ///< GLSL: float, int, vec2, vec3, vec4, ivec4, uvec4, mat4
@@ -81,9 +90,10 @@ class BlockWriter {
   std::vector<uint8_t> bytes_;
 };
 
-/// The GLSL of a generated library file ("generated/mxc_lobe.glsl",
-/// "generated/mxc_view_block.glsl", "generated/mxc_batch_block.glsl"), or nullopt for any other
-/// path.
+/// The GLSL of a generated library file ("generated/mxc_lobe.glsl", "generated/mxc_codes.glsl",
+/// "generated/mxc_view_block.glsl", "generated/mxc_batch_block.glsl",
+/// "generated/mxc_tables_stage.glsl", "generated/mxc_vertex_inputs.glsl"), or nullopt for any
+/// other path.
 std::optional<std::string> generatedLibraryFile(std::string_view path);
 
 }  // namespace mxc::glsl

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "compiler/glsl/Contract.h"
 #include "compiler/ir/Walk.h"
 
 namespace mxc::glsl {
@@ -43,11 +44,12 @@ std::vector<std::string> split(const std::string& text, char separator) {
   return parts;
 }
 
+/// The code of a MaterialX address mode (compiler/glsl/Contract.h, MXC_ADDRESS_*).
 int addressMode(const std::string& mode) {
-  if (mode == "constant") return 0;
-  if (mode == "clamp") return 1;
-  if (mode == "mirror") return 3;
-  return 2;  // periodic (and hex, sampled periodically)
+  if (mode == "constant") return int(AddressMode::Constant);
+  if (mode == "clamp") return int(AddressMode::Clamp);
+  if (mode == "mirror") return int(AddressMode::Mirror);
+  return int(AddressMode::Periodic);  // periodic (and hex, sampled periodically)
 }
 
 /// The GLSL of a geometric property, by geompropdef name.
@@ -299,8 +301,10 @@ std::string ExprEmitter::emit(ExprId id) {
       std::vector<std::string> spaces = split(m_.exprs.text(id), ',');
       const bool toWorld = spaces.size() == 2 && spaces[1] == "world" && spaces[0] != "world";
       const bool same = spaces.size() != 2 || (spaces[0] == "world") == (spaces[1] == "world");
-      const int kind = e.op == Op::TransformPoint ? 0 : e.op == Op::TransformVector ? 1 : 2;
-      value = same ? a(0) : fmt::format("mxc_transform(g, {}, {}, {})", a(0), kind, toWorld ? "true" : "false");
+      const TransformKind kind = e.op == Op::TransformPoint    ? TransformKind::Point
+                                 : e.op == Op::TransformVector ? TransformKind::Vector
+                                                               : TransformKind::Normal;
+      value = same ? a(0) : fmt::format("mxc_transform(g, {}, {}, {})", a(0), int(kind), toWorld ? "true" : "false");
       break;
     }
   }

@@ -1,6 +1,8 @@
 // mxc shader library: constants, guarded math, shading frames, random numbers.
 // Every division, square root, normalisation and pow states why it is safe.
 
+#include "generated/mxc_codes.glsl"
+
 const float MXC_PI = 3.14159265358979;
 const float MXC_INV_PI = 0.318309886183791;
 const float MXC_EPS = 1e-7;

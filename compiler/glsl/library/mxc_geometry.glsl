@@ -20,8 +20,8 @@ struct MxcGeometry {
 // A point, vector or normal between "object" (or "model") and "world" space.
 vec3 mxc_transform(MxcGeometry g, vec3 v, int kind, bool toWorld) {
   mat4 m = toWorld ? g.objectToWorld : inverse(g.objectToWorld);  // an affine transform: invertible
-  if (kind == 0) return (m * vec4(v, 1.0)).xyz;
-  if (kind == 1) return mat3(m) * v;
+  if (kind == MXC_TRANSFORM_POINT) return (m * vec4(v, 1.0)).xyz;
+  if (kind == MXC_TRANSFORM_VECTOR) return mat3(m) * v;
   // Normals by the inverse transpose; the result is renormalised (a zero stays zero).
   return mxc_safe_normalize(transpose(inverse(mat3(m))) * v, vec3(0.0));
 }

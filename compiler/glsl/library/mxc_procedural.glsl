@@ -108,12 +108,12 @@ vec3 mxc_normalmap(vec3 sampleValue, vec2 scale, vec3 N, vec3 T, vec3 B) {
   return mxc_safe_normalize(T * v.x + B * v.y + N * v.z, N);
 }
 
-// MaterialX address modes along one axis: 0 constant (outside: use the default), 1 clamp,
-// 2 periodic, 3 mirror. Returns false when the coordinate is outside in constant mode.
+// MaterialX address modes along one axis (MXC_ADDRESS_*): constant (outside: use the default),
+// clamp, periodic, mirror. Returns false when the coordinate is outside in constant mode.
 bool mxc_address(inout float x, int mode) {
-  if (mode == 0) return x >= 0.0 && x <= 1.0;
-  if (mode == 1) x = clamp(x, 0.0, 1.0);
-  else if (mode == 2) x = fract(x);
+  if (mode == MXC_ADDRESS_CONSTANT) return x >= 0.0 && x <= 1.0;
+  if (mode == MXC_ADDRESS_CLAMP) x = clamp(x, 0.0, 1.0);
+  else if (mode == MXC_ADDRESS_PERIODIC) x = fract(x);
   else x = 1.0 - abs(mod(x, 2.0) - 1.0);
   return true;
 }

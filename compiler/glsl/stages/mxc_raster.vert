@@ -3,10 +3,7 @@
 // is `precise`, so that both passes get the same depth (runtime/Renderer.cpp shades with an
 // EQUAL depth test).
 
-layout(location = 0) in vec3 inPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec4 inTangent;  // xyz: tangent, w: handedness of the bitangent
-layout(location = 3) in vec2 inUv;
+#include "generated/mxc_vertex_inputs.glsl"
 
 layout(location = 0) out vec3 vPosition;
 layout(location = 1) out vec3 vNormal;
