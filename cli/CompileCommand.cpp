@@ -16,22 +16,14 @@ namespace mxc::cli {
 
 namespace {
 
-struct CompileOptions {
-  std::string file;
-  std::string output;
-  std::string glsl;
-  std::string stage = "frag";
-  bool optimize = false;
-  bool quiet = false;
-  MaterialOptions materials;
-};
-
 glsl::ShaderKind kindOf(const std::string& stage) {
   if (stage == "comp") return glsl::ShaderKind::Eval;
   if (stage == "furnace") return glsl::ShaderKind::Furnace;
   if (stage == "sample") return glsl::ShaderKind::Sample;
   return glsl::ShaderKind::Raster;
 }
+
+}  // namespace
 
 int runCompile(const CompileOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -99,27 +91,6 @@ int runCompile(const CompileOptions& options) {
     std::printf("compiled %zu material(s) in %.1f ms\n", pipeline.materials().size(), ms);
   }
   return result;
-}
-
-}  // namespace
-
-void registerCompile(CLI::App& app, int& exitCode) {
-  auto options = std::make_shared<CompileOptions>();
-  CLI::App* command = app.add_subcommand(
-      "compile",
-      "Compile the materials of a document to GLSL 4.50 and SPIR-V (validated by SPIRV-Tools). With several "
-      "materials, output names get _<material> before their extension");
-  command->add_option("file", options->file, "The .mtlx document")->required();
-  command->add_option("-o,--output", options->output, "Write the SPIR-V module here");
-  command->add_option("--glsl", options->glsl, "Write the GLSL here");
-  command->add_option("--stage", options->stage,
-                      "frag: fragment shader of the renderer; comp: compute shader evaluating f cos; furnace: compute "
-                      "shader of the directional albedo; sample: compute shader drawing sample directions")
-      ->check(CLI::IsMember({"frag", "comp", "furnace", "sample"}));
-  command->add_flag("-O,--optimize", options->optimize, "Optimise the module with SPIRV-Tools' performance passes");
-  command->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");
-  addMaterialOptions(*command, options->materials);
-  command->callback([options, &exitCode] { exitCode = runCompile(*options); });
 }
 
 }  // namespace mxc::cli

@@ -2,10 +2,23 @@
 /// \file
 /// `mxc compile`: materials to GLSL and SPIR-V.
 
-#include <CLI/CLI.hpp>
+#include <string>
+
+#include "cli/MaterialPipeline.h"
 
 namespace mxc::cli {
 
-void registerCompile(CLI::App& app, int& exitCode);
+/// The options of the command (cli/CommandLine.cpp defines them).
+struct CompileOptions {
+  std::string file;
+  std::string output;
+  std::string glsl;
+  std::string stage = "frag";
+  bool optimize = false;
+  bool quiet = false;
+  MaterialOptions materials;
+};
+
+int runCompile(const CompileOptions& options);
 
 }  // namespace mxc::cli

@@ -18,14 +18,6 @@ namespace mxc::cli {
 
 namespace {
 
-struct EvalOptions {
-  std::string file;
-  std::string dirs;
-  std::string output;
-  MaterialOptions materials;
-  DeviceOptions device;
-};
-
 /// Reads rows "wo_x,wo_y,wo_z,wi_x,wi_y,wi_z" (blank lines, '#' comments and one header line of
 /// names allowed). Errors name file:line:column.
 bool readDirections(const std::string& path, std::vector<rt::DirectionPair>& rows) {
@@ -99,6 +91,11 @@ int writeReport(OutputSet& outputs, const std::string& output, std::string repor
   return printError(error) ? kOutputFailed : kOk;
 }
 
+/// A vec3 as a JSON array.
+nlohmann::json vec(glm::vec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+}  // namespace
+
 int runEval(const EvalOptions& options) {
   std::vector<rt::DirectionPair> rows;
   if (!readDirections(options.dirs, rows)) return kInvalidDocument;
@@ -127,18 +124,6 @@ int runEval(const EvalOptions& options) {
   if (!device.checkValidation()) return kInvalidDocument;
   return writeReport(outputs, options.output, std::move(csv));
 }
-
-struct FurnaceOptions {
-  std::string file;
-  int angles = 8;
-  int samples = 65536;
-  int seed = 1;
-  std::string output;
-  MaterialOptions materials;
-  DeviceOptions device;
-};
-
-nlohmann::json vec(glm::vec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
 int runFurnace(const FurnaceOptions& options) {
   Session session;
@@ -186,40 +171,6 @@ int runFurnace(const FurnaceOptions& options) {
   }
   if (!device.checkValidation()) return kInvalidDocument;
   return writeReport(outputs, options.output, report.dump(2) + "\n");
-}
-
-}  // namespace
-
-void registerEval(CLI::App& app, int& exitCode) {
-  auto options = std::make_shared<EvalOptions>();
-  CLI::App* command = app.add_subcommand(
-      "eval",
-      "Evaluate each material's BSDF on the device: for every row wo_x,wo_y,wo_z,wi_x,wi_y,wi_z of a CSV file "
-      "(directions in a frame with normal +z, tangent +x; normalised), print f(wo, wi) |cos theta_i| and the "
-      "sampling pdf as CSV");
-  command->add_option("file", options->file, "The .mtlx document")->required();
-  command->add_option("--dirs", options->dirs, "CSV file of direction pairs")->required();
-  command->add_option("-o,--output", options->output, "Write the CSV here (atomically) instead of stdout");
-  addMaterialOptions(*command, options->materials);
-  addDeviceOptions(*command, options->device);
-  command->callback([options, &exitCode] { exitCode = runEval(*options); });
-}
-
-void registerFurnace(CLI::App& app, int& exitCode) {
-  auto options = std::make_shared<FurnaceOptions>();
-  CLI::App* command = app.add_subcommand(
-      "furnace",
-      "The white furnace: each material's directional albedo (reflected, transmitted, total, with Monte Carlo "
-      "standard errors) at N view angles from normal incidence, as JSON");
-  command->add_option("file", options->file, "The .mtlx document")->required();
-  command->add_option("--angles", options->angles, "Number of view angles, 90 deg * k / N")
-      ->check(CLI::Range(1, 4096));
-  command->add_option("--samples", options->samples, "Samples per angle")->check(CLI::Range(64, 1 << 26));
-  command->add_option("--seed", options->seed, "Random seed")->check(CLI::NonNegativeNumber);
-  command->add_option("-o,--output", options->output, "Write the JSON here (atomically) instead of stdout");
-  addMaterialOptions(*command, options->materials);
-  addDeviceOptions(*command, options->device);
-  command->callback([options, &exitCode] { exitCode = runFurnace(*options); });
 }
 
 }  // namespace mxc::cli

@@ -6,12 +6,6 @@
 
 namespace mxc::cli {
 
-void addDeviceOptions(CLI::App& command, DeviceOptions& options) {
-  command.add_option("--device", options.device,
-                     "Vulkan device: an index or part of its name (default: Mesa lavapipe when present)");
-  command.add_flag("--validation", options.validation,
-                   "Enable the Khronos validation layer; any validation message fails the run (exit 1)");
-}
 
 rt::VulkanContext* Device::context() {
   if (context_) return context_.get();

@@ -10,8 +10,6 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "cli/MaterialPipeline.h"
 #include "cli/Session.h"
 #include "compiler/glsl/ShaderBuilder.h"
@@ -27,7 +25,6 @@ struct DeviceOptions {
   bool listDevices = false;
 };
 
-void addDeviceOptions(CLI::App& command, DeviceOptions& options);
 
 /// The device and the albedo tables, created on first use. Vulkan errors become a message and
 /// a non-zero exit instead of an exception escaping.

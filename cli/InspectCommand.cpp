@@ -15,20 +15,6 @@
 
 namespace mxc::cli {
 
-namespace {
-
-struct InspectOptions {
-  std::string file;
-  bool json = false;
-  bool dot = false;
-  std::string output;
-  bool partial = false;
-  bool ir = false;
-  bool shadingModelGraphs = false;
-  MaterialOptions inputs;  ///< --set and --param, for --ir
-  LibraryOptions libraries;
-};
-
 int runInspect(const InspectOptions& options) {
   const std::string output = options.output.empty() ? "-" : options.output;
   OutputSet outputs;
@@ -75,34 +61,6 @@ int runInspect(const InspectOptions& options) {
   if (printError(outputs.stage(output, std::move(report)))) return kOutputFailed;
   if (printError(outputs.commit())) return kOutputFailed;
   return failed || diagnostics.hasErrors() ? kInvalidDocument : kOk;
-}
-
-}  // namespace
-
-void registerInspect(CLI::App& app, int& exitCode) {
-  auto options = std::make_shared<InspectOptions>();
-  CLI::App* command = app.add_subcommand(
-      "inspect",
-      "Show a document: its materials, their shader nodes with every input (set or default, with its source "
-      "line), and the resolved graph as an indented tree");
-  command->add_option("file", options->file, "The .mtlx document")->required();
-  auto* json = command->add_flag("--json", options->json, "Write JSON (schema mxc-inspect-1, docs/inspect-json.md)");
-  auto* dot = command->add_flag("--dot", options->dot, "Write a Graphviz DOT graph");
-  json->excludes(dot);
-  auto* ir = command->add_flag("--ir", options->ir,
-                               "Show the slab IR of each material after the passes (with --json: schema mxc-ir-1, "
-                               "docs/ir-json.md)");
-  ir->excludes(dot);
-  command->add_flag("--shading-model-graphs", options->shadingModelGraphs,
-                    "With --ir: lower open_pbr_surface and standard_surface through the node graphs that implement "
-                    "them in the libraries (MaterialX's, with --library) instead of mxc's own lowering")
-      ->needs(ir);
-  command->add_option("-o,--output", options->output, "Write the report to this file (atomically) instead of stdout");
-  command->add_flag("--partial", options->partial,
-                    "Write the report even when the document has errors (the exit code is still 1)");
-  addInputOptions(*command, options->inputs);
-  addLibraryOptions(*command, options->libraries);
-  command->callback([options, &exitCode] { exitCode = runInspect(*options); });
 }
 
 }  // namespace mxc::cli

@@ -2,11 +2,26 @@
 /// \file
 /// `mxc inspect`: what a document holds, resolved against the node libraries.
 
-#include <CLI/CLI.hpp>
+#include <string>
+
+#include "cli/MaterialPipeline.h"
+#include "cli/Session.h"
 
 namespace mxc::cli {
 
-/// Adds the `inspect` subcommand; `exitCode` receives its result when it runs.
-void registerInspect(CLI::App& app, int& exitCode);
+/// The options of the command (cli/CommandLine.cpp defines them).
+struct InspectOptions {
+  std::string file;
+  bool json = false;
+  bool dot = false;
+  std::string output;
+  bool partial = false;
+  bool ir = false;
+  bool shadingModelGraphs = false;
+  MaterialOptions inputs;  ///< --set and --param, for --ir
+  LibraryOptions libraries;
+};
+
+int runInspect(const InspectOptions& options);
 
 }  // namespace mxc::cli

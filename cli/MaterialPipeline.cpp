@@ -8,19 +8,6 @@
 
 namespace mxc::cli {
 
-void addInputOptions(CLI::App& command, MaterialOptions& options) {
-  // One value per occurrence: `--set a=1 FILE` must not take FILE as a second override.
-  command.add_option("--set", options.set,
-                     "Override an input of the shading node: INPUT=VALUE, the value written as in a document "
-                     "(--set base_color=0.8,0.2,0.1); repeatable")
-      ->type_name("INPUT=VALUE")
-      ->allow_extra_args(false);
-  command.add_option("--param", options.parameters,
-                     "Keep an input of the shading node variable: a uniform of the shader, with the document's (or "
-                     "--set's) value as its default; repeatable")
-      ->type_name("INPUT")
-      ->allow_extra_args(false);
-}
 
 bool requestInputs(const MaterialOptions& options, CompileRequest& request) {
   for (const std::string& s : options.set) {
@@ -36,11 +23,6 @@ bool requestInputs(const MaterialOptions& options, CompileRequest& request) {
   return true;
 }
 
-void addMaterialOptions(CLI::App& command, MaterialOptions& options) {
-  addInputOptions(command, options);
-  command.add_option("--material", options.material, "Only the material of this name (default: every material)");
-  addLibraryOptions(command, options.libraries);
-}
 
 int MaterialPipeline::run(CompileRequest request, const MaterialOptions& options) {
   if (!requestInputs(options, request)) return kUsage;

@@ -9,8 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "cli/OutputSet.h"
 #include "cli/Session.h"
 #include "compiler/driver/Compiler.h"
@@ -24,9 +22,6 @@ struct MaterialOptions {
   LibraryOptions libraries;
 };
 
-void addMaterialOptions(CLI::App& command, MaterialOptions& options);
-/// Only --set and --param (for commands that have no --material).
-void addInputOptions(CLI::App& command, MaterialOptions& options);
 
 /// --set, --param and --material into `request`; false (with the error printed) for a
 /// malformed --set.

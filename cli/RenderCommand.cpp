@@ -18,22 +18,6 @@ namespace mxc::cli {
 
 namespace {
 
-struct RenderOptions {
-  std::string file;
-  std::vector<std::string> outputs;
-  int size = 512;
-  int spp = 64;
-  std::vector<std::string> lights;
-  std::string environment = "sky";
-  float environmentIntensity = 1.0f;
-  float emissionScale = 1.0f;
-  float exposure = 0.0f;
-  std::string background = "0.05,0.05,0.05";
-  std::string mesh = "sphere";
-  MaterialOptions materials;
-  DeviceOptions device;
-};
-
 /// "a,b,c" to numbers; false when it is not `count` finite numbers.
 bool parseNumbers(const std::string& text, size_t count, std::vector<float>& out) {
   out.clear();
@@ -92,6 +76,8 @@ bool parseLight(const std::string& text, rt::Light& light, std::string& why) {
   }
   return true;
 }
+
+}  // namespace
 
 int runRender(const RenderOptions& options) {
   rt::RenderSettings settings;
@@ -228,37 +214,6 @@ int runRender(const RenderOptions& options) {
   if (printError(outputs.commit())) return kOutputFailed;
   for (const std::string& line : wrote) std::printf("%s\n", line.c_str());
   return result;
-}
-
-}  // namespace
-
-void registerRender(CLI::App& app, int& exitCode) {
-  auto options = std::make_shared<RenderOptions>();
-  CLI::App* command = app.add_subcommand(
-      "render",
-      "Render each material on a sphere: lights evaluated exactly, the environment integrated by Monte Carlo "
-      "over --spp frames. .exr: linear radiance with coverage alpha; .png (and other 8-bit formats): tone-mapped "
-      "(ACES fit), sRGB, over --background. With several materials, file names get _<material>");
-  command->add_option("file", options->file, "The .mtlx document")->required();
-  command->add_option("-o,--output", options->outputs, "Output image (.png, .exr, .jpg, ...); repeatable")->required();
-  command->add_option("--size", options->size, "Width and height in pixels")->check(CLI::Range(8, 8192));
-  command->add_option("--spp", options->spp, "Samples (frames) per pixel")->check(CLI::Range(1, 1 << 20));
-  command->add_option("--light", options->lights,
-                      "dir:X,Y,Z[:INTENSITY[:R,G,B]] (towards the light) or point:X,Y,Z[:INTENSITY[:R,G,B]]; "
-                      "repeatable, up to 8; 'none' for no light (default: dir:-1,1.2,1.5:2)");
-  command->add_option("--env", options->environment, "Environment: none, white (the furnace) or sky")
-      ->check(CLI::IsMember({"none", "white", "sky"}));
-  command->add_option("--env-intensity", options->environmentIntensity, "Environment radiance scale")
-      ->check(finiteNumber(true));
-  command->add_option("--emission-scale", options->emissionScale, "Radiance per unit of emission")
-      ->check(finiteNumber(true));
-  command->add_option("--exposure", options->exposure, "Exposure of 8-bit outputs, in stops")->check(finiteNumber(false))
-      ->check(CLI::Range(-64.0, 64.0));
-  command->add_option("--background", options->background, "Background of 8-bit outputs, linear R,G,B");
-  command->add_option("--mesh", options->mesh, "sphere, plane, or an .obj file");
-  addMaterialOptions(*command, options->materials);
-  addDeviceOptions(*command, options->device);
-  command->callback([options, &exitCode] { exitCode = runRender(*options); });
 }
 
 }  // namespace mxc::cli

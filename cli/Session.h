@@ -7,8 +7,6 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "cli/OutputSet.h"
 #include "compiler/driver/Compiler.h"
 
@@ -20,11 +18,6 @@ struct LibraryOptions {
   bool noBuiltin = false;            ///< --no-builtin: only the given folders
 };
 
-void addLibraryOptions(CLI::App& command, LibraryOptions& options);
-
-/// A CLI11 check that an option's number is finite, and >= 0 when `nonNegative` (CLI11's own
-/// number checks let "nan" and "inf" through, and both parse as floats).
-CLI::Validator finiteNumber(bool nonNegative);
 
 /// The workspace of one command run, and what of its diagnostics has been printed.
 class Session {

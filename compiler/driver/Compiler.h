@@ -24,7 +24,6 @@
 #include "compiler/common/Diagnostic.h"
 #include "compiler/document/DocumentLoader.h"
 #include "compiler/glsl/ShaderBuilder.h"
-#include "compiler/inspect/Inspect.h"
 #include "compiler/ir/Material.h"
 #include "compiler/library/LibraryStack.h"
 #include "compiler/lower/Lowering.h"
@@ -51,7 +50,7 @@ class Workspace {
   Diagnostics diagnostics;
   lib::LibraryStack libraries;
   doc::DocumentLoader loader;
-  std::vector<inspect::LibraryInfo> libraryInfo;  ///< the layers loaded, for reports
+  std::vector<lib::LibraryInfo> libraryInfo;  ///< the layers loaded, for reports
 };
 
 /// Everything a caller chooses about one compilation.

@@ -9,15 +9,12 @@
 #include <nlohmann/json.hpp>
 
 #include "compiler/common/Diagnostic.h"
+#include "compiler/library/LibraryStack.h"
 #include "compiler/resolve/ResolvedGraph.h"
 
 namespace mxc::inspect {
 
-/// A node library in use, for the report header.
-struct LibraryInfo {
-  std::string name;  ///< "builtin" or the folder given with --library
-  size_t nodedefs = 0;
-};
+using LibraryInfo = lib::LibraryInfo;
 
 /// Everything a report shows.
 struct InspectInput {

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "compiler/common/Diagnostic.h"
@@ -11,6 +12,13 @@
 #include "compiler/library/NodeLibrary.h"
 
 namespace mxc::lib {
+
+/// A node library in use, for reports: "builtin" or the folder given with --library, and how
+/// many nodedefs the stack had once it was added.
+struct LibraryInfo {
+  std::string name;
+  size_t nodedefs = 0;
+};
 
 /// The libraries a compilation resolves against. Each call adds a layer over the previous
 /// ones, so later libraries shadow earlier definitions of the same name.

@@ -57,6 +57,29 @@ TEST(DocumentLoader, IncludeCycleIsReportedAtTheInclude) {
   fs::remove_all(dir);
 }
 
+TEST(DocumentLoader, ALongIncludeChainEndingInACycle) {
+  // 3,000 documents, each including the next, the last including the 2,000th: every one is
+  // loaded once, and the cycle is reported once, from where it starts. (The chain is
+  // looked up in a set, so loading is linear in its length: tests/bench/ScaleBench.cpp prints
+  // the growth.)
+  fs::path dir = scratch("chain");
+  constexpr int kFiles = 3000;
+  for (int i = 0; i < kFiles; ++i) {
+    const int next = i + 1 < kFiles ? i + 1 : 2000;
+    write(dir / ("c" + std::to_string(i) + ".mtlx"),
+          mtlx("  <xi:include href=\"c" + std::to_string(next) + ".mtlx\"/>\n  <constant name=\"k" + std::to_string(i) +
+               "\" type=\"float\"/>\n"));
+  }
+  Context context;
+  context.loader.loadFile(dir / "c0.mtlx");
+  EXPECT_EQ(context.loader.documents().size(), size_t(kFiles));
+  EXPECT_EQ(context.diagnostics.errorCount(), 1u);
+  Diagnostic e = context.firstError();
+  EXPECT_EQ(e.message.rfind("include cycle: c2000.mtlx -> c2001.mtlx", 0), 0u) << e.message.substr(0, 80);
+  EXPECT_EQ(fs::path(e.location.file->path()).filename(), "c2999.mtlx");
+  fs::remove_all(dir);
+}
+
 TEST(DocumentLoader, SameNameInTwoIncludedDocumentsIsAnError) {
   fs::path dir = scratch("clash");
   write(dir / "main.mtlx", mtlx("  <xi:include href=\"other.mtlx\"/>\n  <constant name=\"x\" type=\"float\"/>\n"));

@@ -1,0 +1,211 @@
+// The command line of mxc: every command's options and how they map to its options struct, in
+// one file. CLI11 is header-only and heavy to compile (about 11 s per file that registers
+// options, 50 s under the sanitizers), so this is the one file that includes it; the commands'
+// logic (cli/*Command.cpp) sees only their options structs.
+
+#include "cli/CommandLine.h"
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "cli/CompileCommand.h"
+#include "cli/EvalCommand.h"
+#include "cli/ExitCode.h"
+#include "cli/InspectCommand.h"
+#include "cli/RenderCommand.h"
+
+namespace mxc::cli {
+
+namespace {
+
+/// A check that an option's number is finite, and >= 0 when `nonNegative` (CLI11's own number
+/// checks let "nan" and "inf" through, and both parse as floats).
+CLI::Validator finiteNumber(bool nonNegative) {
+  return CLI::Validator(
+      [nonNegative](std::string& text) -> std::string {
+        size_t used = 0;
+        double v = 0.0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          return fmt::format("'{}' is not a number", text);
+        }
+        if (used != text.size()) return fmt::format("'{}' is not a number", text);
+        if (!std::isfinite(v)) return fmt::format("'{}' is not a finite number", text);
+        if (nonNegative && v < 0.0) return fmt::format("'{}' is negative", text);
+        return {};
+      },
+      nonNegative ? "NUMBER >= 0" : "NUMBER");
+}
+
+void addLibraryOptions(CLI::App& command, LibraryOptions& options) {
+  command.add_option("--library", options.folders,
+                     "Node library folder (every .mtlx under it) or file, layered over the built-in library; "
+                     "repeatable, later ones shadow earlier definitions of the same name");
+  command.add_flag("--no-builtin", options.noBuiltin, "Do not load mxc's built-in node library");
+}
+
+void addInputOptions(CLI::App& command, MaterialOptions& options) {
+  // One value per occurrence: `--set a=1 FILE` must not take FILE as a second override.
+  command.add_option("--set", options.set,
+                     "Override an input of the shading node: INPUT=VALUE, the value written as in a document "
+                     "(--set base_color=0.8,0.2,0.1); repeatable")
+      ->type_name("INPUT=VALUE")
+      ->allow_extra_args(false);
+  command.add_option("--param", options.parameters,
+                     "Keep an input of the shading node variable: a uniform of the shader, with the document's (or "
+                     "--set's) value as its default; repeatable")
+      ->type_name("INPUT")
+      ->allow_extra_args(false);
+}
+
+void addMaterialOptions(CLI::App& command, MaterialOptions& options) {
+  addInputOptions(command, options);
+  command.add_option("--material", options.material, "Only the material of this name (default: every material)");
+  addLibraryOptions(command, options.libraries);
+}
+
+void addDeviceOptions(CLI::App& command, DeviceOptions& options) {
+  command.add_option("--device", options.device,
+                     "Vulkan device: an index or part of its name (default: Mesa lavapipe when present)");
+  command.add_flag("--validation", options.validation,
+                   "Enable the Khronos validation layer; any validation message fails the run (exit 1)");
+}
+
+void registerInspect(CLI::App& app, int& exitCode) {
+  auto options = std::make_shared<InspectOptions>();
+  CLI::App* command = app.add_subcommand(
+      "inspect",
+      "Show a document: its materials, their shader nodes with every input (set or default, with its source "
+      "line), and the resolved graph as an indented tree");
+  command->add_option("file", options->file, "The .mtlx document")->required();
+  auto* json = command->add_flag("--json", options->json, "Write JSON (schema mxc-inspect-1, docs/inspect-json.md)");
+  auto* dot = command->add_flag("--dot", options->dot, "Write a Graphviz DOT graph");
+  json->excludes(dot);
+  auto* ir = command->add_flag("--ir", options->ir,
+                               "Show the slab IR of each material after the passes (with --json: schema mxc-ir-1, "
+                               "docs/ir-json.md)");
+  ir->excludes(dot);
+  command->add_flag("--shading-model-graphs", options->shadingModelGraphs,
+                    "With --ir: lower open_pbr_surface and standard_surface through the node graphs that implement "
+                    "them in the libraries (MaterialX's, with --library) instead of mxc's own lowering")
+      ->needs(ir);
+  command->add_option("-o,--output", options->output, "Write the report to this file (atomically) instead of stdout");
+  command->add_flag("--partial", options->partial,
+                    "Write the report even when the document has errors (the exit code is still 1)");
+  addInputOptions(*command, options->inputs);
+  addLibraryOptions(*command, options->libraries);
+  command->callback([options, &exitCode] { exitCode = runInspect(*options); });
+}
+
+void registerCompile(CLI::App& app, int& exitCode) {
+  auto options = std::make_shared<CompileOptions>();
+  CLI::App* command = app.add_subcommand(
+      "compile",
+      "Compile the materials of a document to GLSL 4.50 and SPIR-V (validated by SPIRV-Tools). With several "
+      "materials, output names get _<material> before their extension");
+  command->add_option("file", options->file, "The .mtlx document")->required();
+  command->add_option("-o,--output", options->output, "Write the SPIR-V module here");
+  command->add_option("--glsl", options->glsl, "Write the GLSL here");
+  command->add_option("--stage", options->stage,
+                      "frag: fragment shader of the renderer; comp: compute shader evaluating f cos; furnace: compute "
+                      "shader of the directional albedo; sample: compute shader drawing sample directions")
+      ->check(CLI::IsMember({"frag", "comp", "furnace", "sample"}));
+  command->add_flag("-O,--optimize", options->optimize, "Optimise the module with SPIRV-Tools' performance passes");
+  command->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");
+  addMaterialOptions(*command, options->materials);
+  command->callback([options, &exitCode] { exitCode = runCompile(*options); });
+}
+
+void registerEval(CLI::App& app, int& exitCode) {
+  auto options = std::make_shared<EvalOptions>();
+  CLI::App* command = app.add_subcommand(
+      "eval",
+      "Evaluate each material's BSDF on the device: for every row wo_x,wo_y,wo_z,wi_x,wi_y,wi_z of a CSV file "
+      "(directions in a frame with normal +z, tangent +x; normalised), print f(wo, wi) |cos theta_i| and the "
+      "sampling pdf as CSV");
+  command->add_option("file", options->file, "The .mtlx document")->required();
+  command->add_option("--dirs", options->dirs, "CSV file of direction pairs")->required();
+  command->add_option("-o,--output", options->output, "Write the CSV here (atomically) instead of stdout");
+  addMaterialOptions(*command, options->materials);
+  addDeviceOptions(*command, options->device);
+  command->callback([options, &exitCode] { exitCode = runEval(*options); });
+}
+
+void registerFurnace(CLI::App& app, int& exitCode) {
+  auto options = std::make_shared<FurnaceOptions>();
+  CLI::App* command = app.add_subcommand(
+      "furnace",
+      "The white furnace: each material's directional albedo (reflected, transmitted, total, with Monte Carlo "
+      "standard errors) at N view angles from normal incidence, as JSON");
+  command->add_option("file", options->file, "The .mtlx document")->required();
+  command->add_option("--angles", options->angles, "Number of view angles, 90 deg * k / N")
+      ->check(CLI::Range(1, 4096));
+  command->add_option("--samples", options->samples, "Samples per angle")->check(CLI::Range(64, 1 << 26));
+  command->add_option("--seed", options->seed, "Random seed")->check(CLI::NonNegativeNumber);
+  command->add_option("-o,--output", options->output, "Write the JSON here (atomically) instead of stdout");
+  addMaterialOptions(*command, options->materials);
+  addDeviceOptions(*command, options->device);
+  command->callback([options, &exitCode] { exitCode = runFurnace(*options); });
+}
+
+void registerRender(CLI::App& app, int& exitCode) {
+  auto options = std::make_shared<RenderOptions>();
+  CLI::App* command = app.add_subcommand(
+      "render",
+      "Render each material on a sphere: lights evaluated exactly, the environment integrated by Monte Carlo "
+      "over --spp frames. .exr: linear radiance with coverage alpha; .png (and other 8-bit formats): tone-mapped "
+      "(ACES fit), sRGB, over --background. With several materials, file names get _<material>");
+  command->add_option("file", options->file, "The .mtlx document")->required();
+  command->add_option("-o,--output", options->outputs, "Output image (.png, .exr, .jpg, ...); repeatable")->required();
+  command->add_option("--size", options->size, "Width and height in pixels")->check(CLI::Range(8, 8192));
+  command->add_option("--spp", options->spp, "Samples (frames) per pixel")->check(CLI::Range(1, 1 << 20));
+  command->add_option("--light", options->lights,
+                      "dir:X,Y,Z[:INTENSITY[:R,G,B]] (towards the light) or point:X,Y,Z[:INTENSITY[:R,G,B]]; "
+                      "repeatable, up to 8; 'none' for no light (default: dir:-1,1.2,1.5:2)");
+  command->add_option("--env", options->environment, "Environment: none, white (the furnace) or sky")
+      ->check(CLI::IsMember({"none", "white", "sky"}));
+  command->add_option("--env-intensity", options->environmentIntensity, "Environment radiance scale")
+      ->check(finiteNumber(true));
+  command->add_option("--emission-scale", options->emissionScale, "Radiance per unit of emission")
+      ->check(finiteNumber(true));
+  command->add_option("--exposure", options->exposure, "Exposure of 8-bit outputs, in stops")->check(finiteNumber(false))
+      ->check(CLI::Range(-64.0, 64.0));
+  command->add_option("--background", options->background, "Background of 8-bit outputs, linear R,G,B");
+  command->add_option("--mesh", options->mesh, "sphere, plane, or an .obj file");
+  addMaterialOptions(*command, options->materials);
+  addDeviceOptions(*command, options->device);
+  command->callback([options, &exitCode] { exitCode = runRender(*options); });
+}
+
+}  // namespace
+
+int runCommandLine(int argc, char** argv) {
+  CLI::App app{"mxc: compile MaterialX documents (Standard Surface, OpenPBR, pbrlib graphs) to shaders", "mxc"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "mxc 0.1.0");
+  app.footer(
+      "Exit codes: 0 success, 1 invalid document or library (errors name file:line:column), 2 usage error, "
+      "3 an output could not be written, 4 out of memory.\nRun 'mxc COMMAND --help' for the options of a command.");
+  int exitCode = kOk;
+  registerInspect(app, exitCode);
+  registerCompile(app, exitCode);
+  registerEval(app, exitCode);
+  registerFurnace(app, exitCode);
+  registerRender(app, exitCode);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);  // --help, --version
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);  // prints the message
+    return kUsage;
+  }
+  return exitCode;
+}
+
+}  // namespace mxc::cli
