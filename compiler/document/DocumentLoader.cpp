@@ -15,33 +15,19 @@ namespace fs = std::filesystem;
 DocumentLoader::DocumentLoader(SourceManager& sources, Diagnostics& diagnostics, xml::ParseOptions options)
     : sources_(sources), diagnostics_(diagnostics), options_(options) {}
 
-const Document* DocumentLoader::loadFile(const fs::path& path) { return load(path, SourceLocation{}); }
+const Document* DocumentLoader::loadFile(const fs::path& path) {
+  const std::string key = fs::absolute(path).lexically_normal().string();
+  if (auto it = byPath_.find(key); it != byPath_.end()) return it->second;
+  const SourceFile* source = read(path, SourceLocation{});
+  return source ? loadTree(*source, key) : nullptr;
+}
 
 const Document* DocumentLoader::loadText(const std::string& name, std::string text) {
   const SourceFile& source = sources_.add(name, std::move(text));
-  std::string key = fs::absolute(fs::path(name)).lexically_normal().string();
-  loading_.push_back(key);
-  loadingSet_.insert(key);
-  const Document* doc = finish(source);
-  loadingSet_.erase(key);
-  loading_.pop_back();
-  return doc;
+  return loadTree(source, fs::absolute(fs::path(name)).lexically_normal().string());
 }
 
-const Document* DocumentLoader::load(const fs::path& path, SourceLocation includedFrom) {
-  const std::string key = fs::absolute(path).lexically_normal().string();
-  // The set answers "is it on the chain?" in constant time, so a chain of n includes loads in
-  // O(n); the vector gives the order of the chain for the message.
-  if (loadingSet_.count(key)) {
-    size_t i = 0;
-    while (loading_[i] != key) ++i;
-    std::string chain;
-    for (size_t k = i; k < loading_.size(); ++k) chain += fs::path(loading_[k]).filename().string() + " -> ";
-    diagnostics_.error(includedFrom, fmt::format("include cycle: {}{}", chain, path.filename().string()));
-    return nullptr;
-  }
-  if (auto it = byPath_.find(key); it != byPath_.end()) return it->second;
-
+const SourceFile* DocumentLoader::read(const fs::path& path, SourceLocation includedFrom) {
   auto text = readInputFile(path, options_.maxInputBytes);
   if (auto* error = std::get_if<1>(&text)) {
     if (includedFrom.valid()) {
@@ -51,16 +37,10 @@ const Document* DocumentLoader::load(const fs::path& path, SourceLocation includ
     }
     return nullptr;
   }
-  const SourceFile& source = sources_.add(path.string(), std::move(std::get<0>(text)));
-  loading_.push_back(key);
-  loadingSet_.insert(key);
-  const Document* doc = finish(source);
-  loadingSet_.erase(key);
-  loading_.pop_back();
-  return doc;
+  return &sources_.add(path.string(), std::move(std::get<0>(text)));
 }
 
-const Document* DocumentLoader::finish(const SourceFile& source) {
+std::unique_ptr<Document> DocumentLoader::parse(const SourceFile& source) {
   std::unique_ptr<Document> doc;
   try {
     doc = buildDocument(xml::parse(source, options_), diagnostics_);
@@ -69,17 +49,65 @@ const Document* DocumentLoader::finish(const SourceFile& source) {
     return nullptr;
   }
   upgradeTo139(*doc, diagnostics_);
-  const fs::path folder = fs::path(source.path()).parent_path();
-  for (Include& include : doc->includes) {
-    fs::path target = fs::path(std::string(include.href));
-    if (target.is_relative()) target = folder / target;
-    include.document = load(target, include.location);
+  return doc;
+}
+
+const Document* DocumentLoader::loadTree(const SourceFile& root, const std::string& rootKey) {
+  // Depth first over the includes with an explicit stack (a chain of 100,000 includes must not
+  // need 100,000 frames of the machine's stack). A document is registered once all its
+  // includes are: includes come before their includers in documents().
+  struct Frame {
+    std::unique_ptr<Document> doc;
+    std::string key;
+    fs::path folder;
+    size_t next = 0;                      ///< the next include to follow
+    const Document** slot = nullptr;      ///< the includer's Include::document, set when done
+  };
+  std::vector<Frame> stack;
+  const Document* result = nullptr;
+  auto open = [&](const SourceFile& source, const std::string& key, const Document** slot) {
+    std::unique_ptr<Document> doc = parse(source);
+    if (!doc) return;
+    loading_.push_back(key);
+    loadingSet_.insert(key);
+    stack.push_back({std::move(doc), key, fs::path(source.path()).parent_path(), 0, slot});
+  };
+  open(root, rootKey, &result);
+  while (!stack.empty()) {
+    Frame& frame = stack.back();
+    if (frame.next < frame.doc->includes.size()) {
+      Include& include = frame.doc->includes[frame.next++];
+      include.document = nullptr;
+      fs::path target = fs::path(std::string(include.href));
+      if (target.is_relative()) target = frame.folder / target;
+      const std::string key = fs::absolute(target).lexically_normal().string();
+      // The set answers "is it on the chain?" in constant time, so a chain of n includes loads
+      // in O(n); the vector gives the order of the chain for the message.
+      if (loadingSet_.count(key)) {
+        size_t i = 0;
+        while (loading_[i] != key) ++i;
+        std::string chain;
+        for (size_t k = i; k < loading_.size(); ++k) chain += fs::path(loading_[k]).filename().string() + " -> ";
+        diagnostics_.error(include.location, fmt::format("include cycle: {}{}", chain, target.filename().string()));
+        continue;
+      }
+      if (auto it = byPath_.find(key); it != byPath_.end()) {
+        include.document = it->second;
+        continue;
+      }
+      if (const SourceFile* source = read(target, include.location)) open(*source, key, &include.document);
+      continue;
+    }
+    Document* raw = frame.doc.get();
+    byPath_.emplace(frame.key, raw);  // a second text under the same name keeps the first entry
+    owned_.push_back(std::move(frame.doc));
+    order_.push_back(raw);
+    *frame.slot = raw;
+    loadingSet_.erase(frame.key);
+    loading_.pop_back();
+    stack.pop_back();
   }
-  Document* raw = doc.get();
-  byPath_.emplace(loading_.back(), raw);  // a second text under the same name keeps the first entry
-  owned_.push_back(std::move(doc));
-  order_.push_back(raw);
-  return raw;
+  return result;
 }
 
 }  // namespace mxc::doc

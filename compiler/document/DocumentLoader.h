@@ -32,8 +32,13 @@ class DocumentLoader {
   const std::vector<const Document*>& documents() const { return order_; }
 
  private:
-  const Document* load(const std::filesystem::path& path, SourceLocation includedFrom);
-  const Document* finish(const SourceFile& source);
+  /// Reads a file into the sources; null (reported at `includedFrom`, or without a position)
+  /// when it cannot.
+  const SourceFile* read(const std::filesystem::path& path, SourceLocation includedFrom);
+  /// Parses a text into a document (null when it is not well-formed XML), upgraded to 1.39.
+  std::unique_ptr<Document> parse(const SourceFile& source);
+  /// Loads `root` (known as `rootKey`) and every document it includes.
+  const Document* loadTree(const SourceFile& root, const std::string& rootKey);
 
   SourceManager& sources_;
   Diagnostics& diagnostics_;
