@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -61,6 +62,19 @@ void addInputOptions(CLI::App& command, MaterialOptions& options) {
                      "--set's) value as its default; repeatable")
       ->type_name("INPUT")
       ->allow_extra_args(false);
+  std::string names;
+  for (Accuracy a : kAccuracies) names += (names.empty() ? "" : "|") + std::string(accuracyName(a));
+  command
+      .add_option_function<std::string>(
+          "--accuracy", [&options](const std::string& name) { options.accuracy = *parseAccuracy(name); },
+          "Accuracy tier of the shader: fast (analytic albedo fits, no multiple-scattering compensation), "
+          "balanced (tables and multiple-scattering compensation; the default)")
+      ->type_name(names)
+      ->check(CLI::Validator(
+          [names](std::string& text) -> std::string {
+            return parseAccuracy(text) ? std::string() : fmt::format("'{}' is not a tier ({})", text, names);
+          },
+          ""));
 }
 
 void addMaterialOptions(CLI::App& command, MaterialOptions& options) {

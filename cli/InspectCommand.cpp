@@ -44,11 +44,17 @@ int runInspect(const InspectOptions& options) {
     const std::vector<ir::Material>& materials = compiler.materials();
     session.printDiagnostics();
     if (diagnostics.hasErrors() && !options.partial) return stop();
+    // The IR does not change with the accuracy tier; the tier says what the back end makes of it.
+    const Accuracy accuracy = options.inputs.accuracy;
     if (options.json) {
-      nlohmann::json j{{"schema", "mxc-ir-1"}, {"document", document->path()}, {"materials", nlohmann::json::array()}};
+      nlohmann::json j{{"schema", "mxc-ir-1"},
+                       {"document", document->path()},
+                       {"accuracy", {{"tier", accuracyName(accuracy)}, {"description", accuracyDescription(accuracy)}}},
+                       {"materials", nlohmann::json::array()}};
       for (const ir::Material& m : materials) j["materials"].push_back(ir::materialJson(m));
       report = j.dump(2) + "\n";
     } else {
+      report = fmt::format("accuracy: {} ({})\n\n", accuracyName(accuracy), accuracyDescription(accuracy));
       for (const ir::Material& m : materials) report += ir::printMaterial(m, &document->source()) + "\n";
     }
   } else {

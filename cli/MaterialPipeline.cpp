@@ -20,6 +20,7 @@ bool requestInputs(const MaterialOptions& options, CompileRequest& request) {
   }
   request.lowering.parameters = options.parameters;
   request.material = options.material;
+  request.accuracy = options.accuracy;
   return true;
 }
 

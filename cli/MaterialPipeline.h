@@ -19,6 +19,7 @@ struct MaterialOptions {
   std::vector<std::string> set;         ///< --set INPUT=VALUE (repeatable)
   std::vector<std::string> parameters;  ///< --param INPUT (repeatable)
   std::string material;                 ///< --material NAME: only this one
+  Accuracy accuracy = Accuracy::Balanced;  ///< --accuracy TIER
   LibraryOptions libraries;
 };
 

@@ -1,8 +1,10 @@
 #pragma once
 /// \file
-/// The albedo tables the generated lobes read (binding kTablesBinding): computed once per device
-/// by the tables compute shader (compiler/glsl/stages/mxc_tables.comp) and kept as a sampled
-/// RGBA32F image.
+/// The albedo tables the generated lobes read (binding kTablesBinding), as a sampled RGBA32F
+/// image. The harness loads the committed tables (generated/tables, embedded in the binary:
+/// compiler/glsl/AlbedoTableFile.h); `compute` runs the tables compute shader
+/// (compiler/glsl/stages/mxc_tables.comp) that produced them, for scripts/generate-tables and
+/// for the test that the committed tables are still what that shader computes.
 
 #include <vector>
 
@@ -12,6 +14,8 @@ namespace mxc::rt {
 
 class AlbedoTables {
  public:
+  /// The committed tables, uploaded. Throws when the embedded file does not hold tables of the
+  /// contract's size (a build from a tree whose tables were not regenerated).
   explicit AlbedoTables(VulkanContext& context);
   ~AlbedoTables();
   AlbedoTables(const AlbedoTables&) = delete;
@@ -20,6 +24,9 @@ class AlbedoTables {
   const Image& image() const { return image_; }
   /// The texels, kTableSize x kTableHeight RGBA, row by row (layout: stages/mxc_tables.comp).
   const std::vector<float>& values() const { return values_; }
+
+  /// The tables as the tables compute shader computes them on `context`'s device (seconds).
+  static std::vector<float> compute(VulkanContext& context);
 
  private:
   VulkanContext& context_;

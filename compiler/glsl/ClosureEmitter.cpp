@@ -9,6 +9,9 @@ namespace mxc::glsl {
 const LayeringTier& layeringTier(Accuracy accuracy) {
   static const AlbedoScaling albedoScaling;
   switch (accuracy) {
+    // Both reduce the slab tree to lobes by albedo scaling; they differ in the library code
+    // the lobes run (MXC_ACCURACY_*: fitted or tabulated albedos, multiple scattering).
+    case Accuracy::Fast:
     case Accuracy::Balanced: return albedoScaling;
   }
   return albedoScaling;

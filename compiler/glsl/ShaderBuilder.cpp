@@ -1,6 +1,7 @@
 #include "compiler/glsl/ShaderBuilder.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <span>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "compiler/common/EmbeddedFile.h"
+#include "compiler/glsl/AlbedoTableFile.h"
 #include "compiler/glsl/Contract.h"
 
 namespace mxc {
@@ -24,7 +26,15 @@ std::string libraryFile(std::string_view path) {
   for (const EmbeddedFile& f : glslLibraryFiles()) {
     if (f.path == path) return std::string(f.contents);
   }
+  if (path == kAlbedoFitsPath) return std::string(committedTableFile(kAlbedoFitsPath));
   throw std::logic_error(fmt::format("shader library file {} is not embedded", path));  // a build error
+}
+
+/// The tier's macro: MXC_ACCURACY_FAST, MXC_ACCURACY_BALANCED.
+std::string accuracyMacro(Accuracy accuracy) {
+  std::string name(accuracyName(accuracy));
+  for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return name;
 }
 
 /// Accumulates GLSL lines with their origins.
@@ -142,6 +152,7 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
                                                                  : "compute shader drawing sample directions";
   header(w, material, purpose);
   w.line(fmt::format("#define MXC_MAX_LOBES {}", std::max(iface.lobes, 1)));
+  w.line(fmt::format("#define MXC_ACCURACY_{}", accuracyMacro(options.accuracy)));
   // The guards of the lobe kinds in use, in the order of their names.
   std::vector<std::string_view> kinds;
   iface.lobeKinds.forEach([&](ir::LobeKind k) { kinds.push_back(ir::lobeKindName(k)); });

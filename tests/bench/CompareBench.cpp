@@ -107,7 +107,7 @@ json figures(const ModuleFigures& m) {
 /// mxc from the file to GLSL, timed (median of `repeat`), then the GLSL's SPIR-V figures.
 /// `shader` and `words` receive the raster shader and its plain module, for rendering.
 json measureMxc(const mxc::lib::LibraryStack& libraries, std::unique_ptr<mxc::Workspace>& workspace, const fs::path& file,
-                const std::string& material, int repeat, mxc::glsl::MaterialShader& shader,
+                const std::string& material, mxc::Accuracy accuracy, int repeat, mxc::glsl::MaterialShader& shader,
                 std::vector<uint32_t>& words) {
   std::vector<double> frontEnd;
   // A fresh workspace each time (a second load of one path would be served from the loader's
@@ -119,6 +119,7 @@ json measureMxc(const mxc::lib::LibraryStack& libraries, std::unique_ptr<mxc::Wo
     request.document = file;
     request.libraries = &libraries;
     request.material = material;
+    request.accuracy = accuracy;
     mxc::Compiler compiler(*workspace, request);
     std::vector<mxc::ir::Material>& materials = compiler.materials();
     if (workspace->diagnostics.hasErrors()) return {{"error", workspace->diagnostics.format()}};
@@ -229,13 +230,24 @@ json renderBoth(RenderRig& rig, const json& entry, const mxc::glsl::MaterialShad
 
 static int run(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: compare_bench MANIFEST.json RESULTS.json [--repeat N]\n");
+    std::fprintf(stderr,
+                 "usage: compare_bench MANIFEST.json RESULTS.json [--repeat N] [--size N] [--frames N] [--images DIR] "
+                 "[--accuracy TIER]\n");
     return 2;
   }
   int repeat = 5;
   uint32_t size = 256, frames = 16;
   fs::path images;
+  mxc::Accuracy accuracy = mxc::Accuracy::Balanced;
   for (int i = 3; i + 1 < argc; ++i) {
+    if (!std::strcmp(argv[i], "--accuracy")) {
+      std::optional<mxc::Accuracy> tier = mxc::parseAccuracy(argv[i + 1]);
+      if (!tier) {
+        std::fprintf(stderr, "compare_bench: --accuracy %s: not a tier\n", argv[i + 1]);
+        return 2;
+      }
+      accuracy = *tier;
+    }
     if (!std::strcmp(argv[i], "--repeat")) repeat = std::max(1, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--size")) size = static_cast<uint32_t>(std::max(8, std::atoi(argv[i + 1])));
     if (!std::strcmp(argv[i], "--frames")) frames = static_cast<uint32_t>(std::max(1, std::atoi(argv[i + 1])));
@@ -264,6 +276,7 @@ static int run(int argc, char** argv) {
 
   json results = {{"mxc_library_ms", libraryMs},
                   {"repeat", repeat},
+                  {"accuracy", mxc::accuracyName(accuracy)},
                   {"device", rig.context.deviceName()},
                   {"size", size},
                   {"frames", frames},
@@ -276,7 +289,7 @@ static int run(int argc, char** argv) {
     std::vector<uint32_t> words;
     std::unique_ptr<mxc::Workspace> workspace;
     row["mxc"] = measureMxc(library.libraries, workspace, entry.at("mtlx").get<std::string>(), entry.value("material", ""),
-                            repeat, shader, words);
+                            accuracy, repeat, shader, words);
     row["materialx"] = measureMaterialX(entry, repeat);
     if (!words.empty()) {  // else row["mxc"] says why
       try {

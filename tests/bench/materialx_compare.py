@@ -2,7 +2,8 @@
 """Side by side with MaterialX: shader generation speed and SPIR-V size, mxc against the
 field's reference generator (MaterialX's VkShaderGenerator, from the PyPI package), in one run.
 
-    python3 tests/bench/materialx_compare.py [--build DIR] [--repeat N] [--report FILE] [NAME ...]
+    python3 tests/bench/materialx_compare.py [--build DIR] [--repeat N] [--report FILE]
+                                             [--accuracy fast|balanced] [NAME ...]
 
 Installs `materialx` (pinned) into DIR/materialx-venv when missing, then for each selected corpus
 document (default: the MaterialX OpenPbr and StandardSurface examples below; NAME filters by
@@ -14,7 +15,8 @@ substring):
     GLSL and to validated SPIR-V, median of N; both sides' GLSL compiled by the same glslang and
     SPIRV-Tools, instructions counted before and after SPIRV-Tools' performance passes;
   - `mxc compile` as a whole process (library load and SPIR-V included), median of N.
-Writes the per-material table and the medians to generated/reports/performance.md.
+Writes the per-material table and the medians to generated/reports/performance.md, or for
+--accuracy fast (mxc's MaterialX-class tier) to generated/reports/performance-fast.md.
 
 MaterialX's generator runs with the options a look-dev viewer would use for this comparison:
 one directional light bound, no environment lighting (SPECULAR_ENVIRONMENT_NONE), no
@@ -214,12 +216,12 @@ def generate(documents, out_dir: Path, repeat: int) -> dict:
     return {"materialx_version": mx.getVersionString(), "materialx_library_ms": library_ms, "materials": materials}
 
 
-def process_ms(mxc: Path, document: str, scratch: Path, repeat: int) -> float:
+def process_ms(mxc: Path, document: str, scratch: Path, repeat: int, accuracy: str) -> float:
     """Median wall time of `mxc compile -q DOC -o scratch.spv` (a whole process)."""
     times = []
     for _ in range(repeat):
         t = time.perf_counter()
-        subprocess.run([str(mxc), "compile", "-q", document, "-o", str(scratch)], check=True,
+        subprocess.run([str(mxc), "compile", "-q", "--accuracy", accuracy, document, "-o", str(scratch)], check=True,
                        stdout=subprocess.DEVNULL)
         times.append(1000 * (time.perf_counter() - t))
     return statistics.median(times)
@@ -239,6 +241,7 @@ def write_report(path: Path, generated: dict, results: dict, rows: list) -> None
         "",
         f"- MaterialX {generated['materialx_version']} (PyPI), `VkShaderGenerator`, one directional light bound, "
         "no environment lighting, no transparency, linear output.",
+        f"- mxc's accuracy tier: `{results.get('accuracy', 'balanced')}` (`--accuracy`; README, \"Accuracy tiers\").",
         f"- Library load, once per process: MaterialX {fmt(generated['materialx_library_ms'])} ms, "
         f"mxc {fmt(results['mxc_library_ms'])} ms (not in the per-material times below).",
         "- *generate*: MaterialX from reading the document to both GLSL stages (fresh `GenContext` each time); "
@@ -338,10 +341,16 @@ def main() -> int:
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--size", type=int, default=256, help="image side in pixels (default 256)")
     parser.add_argument("--frames", type=int, default=16, help="accumulated frames per image (default 16)")
-    parser.add_argument("--report", default=str(ROOT / "generated" / "reports" / "performance.md"))
+    parser.add_argument("--report", help="the report to write (default: generated/reports/performance.md, or "
+                        "performance-fast.md for --accuracy fast)")
+    parser.add_argument("--accuracy", choices=["fast", "balanced"], default="balanced",
+                        help="mxc's accuracy tier (default balanced)")
     parser.add_argument("--generate-only", metavar="MANIFEST", help=argparse.SUPPRESS)  # the venv half
     parser.add_argument("names", nargs="*", help="only documents whose name contains one of these")
     args = parser.parse_args()
+    if not args.report:
+        suffix = "" if args.accuracy == "balanced" else "-" + args.accuracy
+        args.report = str(ROOT / "generated" / "reports" / f"performance{suffix}.md")
     build = Path(args.build).resolve()
     work = build / "materialx-compare"
 
@@ -363,9 +372,10 @@ def main() -> int:
                     "--generate-only", str(manifest), *args.names], check=True)
     generated = json.loads(manifest.read_text())
     results_path = work / "results.json"
-    images = ROOT / "out" / "materialx-compare"
+    images = ROOT / "out" / ("materialx-compare" + ("" if args.accuracy == "balanced" else "-" + args.accuracy))
     subprocess.run([str(bench), str(manifest), str(results_path), "--repeat", str(args.repeat), "--size",
-                    str(args.size), "--frames", str(args.frames), "--images", str(images)], check=True)
+                    str(args.size), "--frames", str(args.frames), "--images", str(images), "--accuracy",
+                    args.accuracy], check=True)
     results = json.loads(results_path.read_text())
 
     rows = []
@@ -383,7 +393,7 @@ def main() -> int:
             "mx_generate": g["materialx_generate_ms"], "mxc_generate": ours["to_glsl_ms"],
             "speedup": g["materialx_generate_ms"] / max(ours["to_glsl_ms"], 1e-6),
             "mxc_spirv": ours["to_spirv_ms"], "mx_glslang": theirs["fragment"]["glslang_ms"],
-            "mxc_process": process_ms(mxc, g["mtlx"], work / "process.spv", args.repeat),
+            "mxc_process": process_ms(mxc, g["mtlx"], work / "process.spv", args.repeat, args.accuracy),
             "mx_frag": theirs["fragment"]["instructions"], "mx_frag_opt": theirs["fragment"]["optimized"],
             "mxc_frag": ours["fragment"]["instructions"], "mxc_frag_opt": ours["fragment"]["optimized"],
             "instr_ratio": ours["fragment"]["optimized"] / max(theirs["fragment"]["optimized"], 1),

@@ -161,10 +161,13 @@ TEST(InspectCommand, IrTreeAndJson) {
   EXPECT_NE(text.out.find("top: #0 dielectric RT ior=1.52"), std::string::npos);
   EXPECT_NE(text.out.find("medium: bulk ior=1.52 abbe_number=64"), std::string::npos) << text.out;
 
+  EXPECT_EQ(text.out.rfind("accuracy: balanced (", 0), 0u) << text.out;
+
   CommandRun json = mxc("inspect --ir --json " + corpus("materialx/examples/OpenPbr/open_pbr_carpaint.mtlx"));
   ASSERT_EQ(json.exitCode, 0) << json.err;
   nlohmann::json j = nlohmann::json::parse(json.out);
   EXPECT_EQ(j["schema"], "mxc-ir-1");
+  EXPECT_EQ(j["accuracy"]["tier"], "balanced");
   ASSERT_EQ(j["materials"].size(), 1u);
   const nlohmann::json& m = j["materials"][0];
   EXPECT_EQ(m["name"], "Car_Paint");
@@ -194,6 +197,27 @@ TEST(InspectCommand, IrThroughMaterialXGraphsNeedsTheirLibrary) {
   EXPECT_NE(r.out.find("[dielectric_reflection "), std::string::npos) << r.out;  // from MaterialX's graph
   EXPECT_EQ(mxc("inspect --shading-model-graphs " + corpus("materialx/examples/OpenPbr/open_pbr_default.mtlx")).exitCode,
             2);  // needs --ir
+}
+
+}  // namespace
+}  // namespace mxc::test
+
+namespace mxc::test {
+namespace {
+
+// --accuracy is shown by inspect, with what the tier does; the IR itself does not change.
+TEST(InspectCommand, ShowsTheAccuracyTier) {
+  const std::string doc = corpus("materialx/examples/OpenPbr/open_pbr_glass.mtlx");
+  CommandRun fast = mxc("inspect --ir --accuracy fast " + doc);
+  CommandRun balanced = mxc("inspect --ir --accuracy balanced " + doc);
+  ASSERT_EQ(fast.exitCode, 0) << fast.err;
+  ASSERT_EQ(balanced.exitCode, 0) << balanced.err;
+  EXPECT_EQ(fast.out.rfind("accuracy: fast (", 0), 0u) << fast.out;
+  EXPECT_NE(fast.out.find("no multiple-scattering compensation"), std::string::npos);
+  EXPECT_EQ(fast.out.substr(fast.out.find("\n\n")), balanced.out.substr(balanced.out.find("\n\n")));
+  CommandRun bad = mxc("inspect --ir --accuracy exact " + doc);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("--accuracy"), std::string::npos) << bad.err;
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <tuple>
 
 #include <nlohmann/json.hpp>
@@ -53,6 +54,45 @@ TEST(CompileCommand, EachStageHasItsMain) {
   }
   CommandRun r = mxc("compile " + corpus(kDefault) + " --stage vertex");
   EXPECT_EQ(r.exitCode, 2) << r.err;
+}
+
+// --accuracy chooses the tier on every command that compiles: its GLSL says which, the fast
+// tier's reads no albedo table, and a white rough metal's furnace shows what the tier costs in
+// energy (single scattering loses 1 - E; balanced compensates).
+TEST(CompileCommand, AccuracyChoosesTheTier) {
+  for (const char* tier : {"fast", "balanced"}) {
+    const fs::path glsl = writeTemp(std::string("tier_") + tier + ".frag", "");
+    CommandRun r = mxc("compile " + corpus(kDefault) + " --accuracy " + tier + " --glsl " + glsl.string());
+    ASSERT_EQ(r.exitCode, 0) << tier << ": " << r.err;
+    const std::string text = readAll(glsl);
+    std::string macro = std::string("#define MXC_ACCURACY_") + (std::string(tier) == "fast" ? "FAST" : "BALANCED");
+    EXPECT_NE(text.find(macro), std::string::npos) << tier;
+    fs::remove(glsl);
+  }
+  CommandRun bad = mxc("compile " + corpus(kDefault) + " --accuracy reference-ish");
+  EXPECT_EQ(bad.exitCode, 2) << bad.err;
+
+  const fs::path doc = writeTemp("white_metal.mtlx", R"(<?xml version="1.0"?>
+<materialx version="1.39">
+  <open_pbr_surface name="s" type="surfaceshader">
+    <input name="base_metalness" type="float" value="1" />
+    <input name="base_color" type="color3" value="1, 1, 1" />
+    <input name="specular_roughness" type="float" value="1" />
+  </open_pbr_surface>
+  <surfacematerial name="m" type="material"><input name="surfaceshader" type="surfaceshader" nodename="s" /></surfacematerial>
+</materialx>
+)");
+  double albedo[2] = {0.0, 0.0};
+  for (int k = 0; k < 2; ++k) {
+    CommandRun r = mxc("furnace " + doc.string() + " --angles 1 --samples 65536 --accuracy " + (k == 0 ? "fast" : "balanced"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    nlohmann::json j = nlohmann::json::parse(r.out);
+    const nlohmann::json& m = j.contains("materials") ? j["materials"][0] : j;
+    albedo[k] = m["angles"][0]["total"][1].get<double>();
+  }
+  EXPECT_NEAR(albedo[0], 1.0 - std::log(2.0), 0.02);  // physics notes 2.2: E(mu = 1) at roughness 1
+  EXPECT_NEAR(albedo[1], 1.0, 0.02);
+  fs::remove(doc);
 }
 
 TEST(CompileCommand, BadSetIsAnErrorAtTheShadingNode) {

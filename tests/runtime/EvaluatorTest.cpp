@@ -137,7 +137,8 @@ TEST(Furnace, ThinFilmMatchesAiryAnchors) {
   }
 }
 
-// 2.2: single-scattering GGX albedo with F = 1 (computed table; E(1) = 1 - ln 2 at alpha = 1).
+// 2.2: single-scattering GGX albedo with F = 1 (computed table; E(1) = 1 - ln 2 at alpha = 1):
+// the fast tier has no multiple-scattering compensation.
 TEST(Furnace, GgxAlbedoMatchesComputedTable) {
   struct Case {
     const char* alpha;
@@ -152,7 +153,7 @@ TEST(Furnace, GgxAlbedoMatchesComputedTable) {
                                                               "    <input name=\"roughness\" type=\"vector2\" value=\"{0}, {0}\" />\n"
                                                               "  </generalized_schlick_bsdf>\n",
                                                               c.alpha)));
-    std::vector<rt::Albedo> albedo = furnace(m, {viewAt(c.degrees)}, 262144);
+    std::vector<rt::Albedo> albedo = furnace(m, {viewAt(c.degrees)}, 262144, {}, Accuracy::Fast);
     ASSERT_EQ(albedo.size(), 1u);
     // The table is given to 3 digits.
     expectNear(albedo[0].reflected.x, c.expected, albedo[0].reflectedError.x, 1.5e-3f,
@@ -160,7 +161,8 @@ TEST(Furnace, GgxAlbedoMatchesComputedTable) {
   }
 }
 
-// 2.2: a rough dielectric (eta 1.5), single scattering, R + T with separable Smith.
+// 2.2: a rough dielectric (eta 1.5), single scattering, R + T with separable Smith for the
+// refraction, as the fast tier has it.
 TEST(Furnace, RoughDielectricMatchesComputedAlbedo) {
   struct Case {
     const char* alpha;
@@ -175,7 +177,7 @@ TEST(Furnace, RoughDielectricMatchesComputedAlbedo) {
                                                               "    <input name=\"roughness\" type=\"vector2\" value=\"{0}, {0}\" />\n"
                                                               "  </dielectric_bsdf>\n",
                                                               c.alpha)));
-    std::vector<rt::Albedo> albedo = furnace(m, {viewAt(c.degrees)}, 262144);
+    std::vector<rt::Albedo> albedo = furnace(m, {viewAt(c.degrees)}, 262144, {}, Accuracy::Fast);
     ASSERT_EQ(albedo.size(), 1u);
     // The notes' reflection uses separable Smith too; ours is height-correlated (about 0.003 more).
     expectNear(albedo[0].total().x, c.expected, albedo[0].reflectedError.x + albedo[0].transmittedError.x, 5e-3f,
@@ -183,40 +185,87 @@ TEST(Furnace, RoughDielectricMatchesComputedAlbedo) {
   }
 }
 
-// 2.1: the default OpenPBR dielectric over a white base conserves energy at every view and
-// roughness: the albedo scaling with the tabulated dielectric albedo never gains energy.
+/// Views from normal incidence to 80 degrees in steps of 10.
+std::vector<glm::vec3> viewsTo80() {
+  std::vector<glm::vec3> views;
+  for (int d = 0; d <= 80; d += 10) views.push_back(viewAt(d));
+  return views;
+}
+
+/// Every view's total albedo (channel y) within `tolerance` of 1, beyond the estimate's own
+/// Monte Carlo error (3 standard errors).
+void expectLossless(const std::vector<rt::Albedo>& albedo, float tolerance, const std::string& what) {
+  ASSERT_EQ(albedo.size(), 9u) << what;
+  for (size_t k = 0; k < albedo.size(); ++k) {
+    const float error = albedo[k].reflectedError.y + albedo[k].transmittedError.y;
+    EXPECT_NEAR(albedo[k].total().y, 1.0f, tolerance + 3.0f * error)
+        << what << " at " << 10 * k << " degrees (standard error " << error << ")";
+  }
+}
+
+// 2.1 with 2.2's compensation (issue 13's acceptance): on the balanced tier a white conductor
+// (F = 1) has albedo 1 at every roughness and view from 0 to 80 degrees, within 0.01; the fast
+// tier, without compensation, keeps single scattering's loss (1 - ln 2 at roughness 1, normal
+// incidence).
+TEST(Furnace, WhiteConductorIsLosslessOnBalanced) {
+  for (const char* roughness : {"0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "1"}) {
+    for (const char* model : {"openpbr", "schlick"}) {
+      Context context;
+      const std::string text =
+          std::string(model) == "openpbr"
+              ? openPbrDocument(fmt::format("    <input name=\"base_metalness\" type=\"float\" value=\"1\" />\n"
+                                            "    <input name=\"base_color\" type=\"color3\" value=\"1, 1, 1\" />\n"
+                                            "    <input name=\"specular_roughness\" type=\"float\" value=\"{}\" />\n",
+                                            roughness))
+              : bsdfDocument(fmt::format("  <generalized_schlick_bsdf name=\"bsdf\" type=\"BSDF\">\n"
+                                         "    <input name=\"color0\" type=\"color3\" value=\"1, 1, 1\" />\n"
+                                         "    <input name=\"roughness\" type=\"vector2\" value=\"{0}, {0}\" />\n"
+                                         "  </generalized_schlick_bsdf>\n",
+                                         std::stof(roughness) * std::stof(roughness)));
+      ir::Material m = single(context, text);
+      expectLossless(furnace(m, viewsTo80(), 262144), 0.01f, fmt::format("{} roughness {}", model, roughness));
+    }
+  }
+  Context context;
+  ir::Material m = single(context, openPbrDocument("    <input name=\"base_metalness\" type=\"float\" value=\"1\" />\n"
+                                                   "    <input name=\"base_color\" type=\"color3\" value=\"1, 1, 1\" />\n"
+                                                   "    <input name=\"specular_roughness\" type=\"float\" value=\"1\" />\n"));
+  std::vector<rt::Albedo> fast = furnace(m, {viewAt(0)}, 65536, {}, Accuracy::Fast);
+  ASSERT_EQ(fast.size(), 1u);
+  expectNear(fast[0].total().y, 0.30685f, fast[0].reflectedError.y, 2e-3f, "fast tier, roughness 1");
+}
+
+// 2.1: the default OpenPBR dielectric over a white base at every roughness, 0 to 80 degrees,
+// within 0.01 of 1 on the balanced tier (issue 13's acceptance), and never above 1 on either tier.
 TEST(Furnace, OpenPbrWhiteBaseConservesEnergy) {
-  for (const char* roughness : {"0", "0.3", "0.7", "1"}) {
+  for (const char* roughness : {"0", "0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "1"}) {
     Context context;
     ir::Material m = single(context, openPbrDocument(fmt::format("    <input name=\"base_color\" type=\"color3\" value=\"1, 1, 1\" />\n"
                                                          "    <input name=\"specular_roughness\" type=\"float\" value=\"{}\" />\n",
                                                          roughness)));
-    std::vector<rt::Albedo> albedo = furnace(m, {viewAt(0), viewAt(30), viewAt(60), viewAt(80)}, 65536);
-    for (const rt::Albedo& a : albedo) {
-      EXPECT_LE(a.total().y, 1.0f + 2e-3f) << "specular_roughness " << roughness;
-      EXPECT_GE(a.total().y, 0.99f) << "specular_roughness " << roughness;
+    expectLossless(furnace(m, viewsTo80(), 65536), 0.01f, fmt::format("specular_roughness {}", roughness));
+    for (const rt::Albedo& a : furnace(m, viewsTo80(), 65536, {}, Accuracy::Fast)) {
+      EXPECT_LE(a.total().y, 1.0f + 4.0f * a.reflectedError.y + 2e-3f) << "fast, specular_roughness " << roughness;
     }
   }
 }
 
-// The tables: the split sum at alpha = 0 is a perfect mirror (A + B = 1), and at alpha = 1,
-// mu = 1 it is the GGX anchor 1 - ln 2; the sheen albedo is finite and positive (it may exceed
-// 1 near grazing: the lobe is normalised by it).
-TEST(AlbedoTables, HoldTheirAnchors) {
-  const std::vector<float>& t = Device::get().tables.values();
-  const size_t n = glsl::kTableSize;
-  ASSERT_EQ(t.size(), n * glsl::kTableHeight * 4);
-  auto at = [&](size_t i, size_t j) { return &t[(j * n + i) * 4]; };
-  for (size_t i = 0; i < n; ++i) EXPECT_NEAR(at(i, 0)[0] + at(i, 0)[1], 1.0f, 1e-5f);
-  EXPECT_NEAR(at(n - 1, n - 1)[0] + at(n - 1, n - 1)[1], 1.0f - std::log(2.0f), 2e-3f);
-  for (size_t j = 0; j < n; ++j) {
-    for (size_t i = 0; i < n; ++i) {
-      EXPECT_GE(at(i, j)[2], 0.0f);
-      EXPECT_TRUE(std::isfinite(at(i, j)[2]));
+// 2.2's "an energy-preserving dielectric must give 1 once compensated": a rough non-absorbing
+// dielectric reflects and transmits all it receives on the balanced tier, seen from the denser
+// side too (IOR 1 / 1.5: total internal reflection included).
+TEST(Furnace, RoughDielectricIsLosslessOnBalanced) {
+  for (const char* ior : {"1.5", "1.33", "0.6667"}) {
+    for (const char* alpha : {"0.04", "0.25", "0.5", "1"}) {
+      Context context;
+      ir::Material m = single(context, bsdfDocument(fmt::format("  <dielectric_bsdf name=\"bsdf\" type=\"BSDF\">\n"
+                                                                "    <input name=\"ior\" type=\"float\" value=\"{}\" />\n"
+                                                                "    <input name=\"scatter_mode\" type=\"string\" value=\"RT\" />\n"
+                                                                "    <input name=\"roughness\" type=\"vector2\" value=\"{}, {}\" />\n"
+                                                                "  </dielectric_bsdf>\n",
+                                                                ior, alpha, alpha)));
+      expectLossless(furnace(m, viewsTo80(), 262144), 0.01f, fmt::format("ior {} alpha {}", ior, alpha));
     }
   }
-  // The first dielectric slice is eta = 1: no reflection at all.
-  for (size_t i = 0; i < n; ++i) EXPECT_NEAR(at(i, n + n / 2)[0], 0.0f, 1e-6f);
 }
 
 // Helmholtz reciprocity of single-scattering reflection (2.4): f(o, i) = f(i, o), so
@@ -234,7 +283,9 @@ TEST(Eval, ReflectionIsReciprocal) {
     pairs.push_back({o, i});
     pairs.push_back({i, o});
   }
-  std::vector<glm::vec4> f = evaluate(m, pairs);
+  // Single scattering (the fast tier): balanced's compensation depends on wo alone and is not
+  // reciprocal (physics notes 2.4).
+  std::vector<glm::vec4> f = evaluate(m, pairs, Accuracy::Fast);
   ASSERT_EQ(f.size(), pairs.size());
   for (size_t k = 0; k < pairs.size(); k += 2) {
     for (int c = 0; c < 3; ++c) {

@@ -91,9 +91,12 @@ struct Prepared {
   bool ok() const { return !words.empty(); }
 };
 
-inline Prepared prepare(const ir::Material& material, glsl::ShaderKind kind, const std::filesystem::path& folder = {}) {
+inline Prepared prepare(const ir::Material& material, glsl::ShaderKind kind, const std::filesystem::path& folder = {},
+                        Accuracy accuracy = Accuracy::Balanced) {
   Prepared p;
-  p.shader = buildShader(material, kind);
+  CompileRequest request;
+  request.accuracy = accuracy;
+  p.shader = buildShader(material, kind, request);
   p.words = compiledWords(p.shader);
   Diagnostics diagnostics;
   if (p.ok()) p.resources = std::make_unique<rt::MaterialResources>(Device::get().context, p.shader.interface, folder, diagnostics);
@@ -103,8 +106,9 @@ inline Prepared prepare(const ir::Material& material, glsl::ShaderKind kind, con
 
 /// The directional albedo of a material at the given view directions.
 inline std::vector<rt::Albedo> furnace(const ir::Material& material, const std::vector<glm::vec3>& views,
-                                       uint32_t samples, const std::filesystem::path& folder = {}) {
-  Prepared p = prepare(material, glsl::ShaderKind::Furnace, folder);
+                                       uint32_t samples, const std::filesystem::path& folder = {},
+                                       Accuracy accuracy = Accuracy::Balanced) {
+  Prepared p = prepare(material, glsl::ShaderKind::Furnace, folder, accuracy);
   if (!p.ok()) return {};
   rt::FurnaceEstimator estimator(Device::get().context, Device::get().tables, *p.resources, p.shader.interface, p.words);
   return estimator.estimate(views, samples, 7);
@@ -113,16 +117,18 @@ inline std::vector<rt::Albedo> furnace(const ir::Material& material, const std::
 /// Directions drawn by the material's closure sampling at each view.
 inline std::vector<std::vector<rt::SampledDirection>> sampleDirections(const ir::Material& material,
                                                                       const std::vector<glm::vec3>& views,
-                                                                      uint32_t samples, uint32_t seed = 7) {
-  Prepared p = prepare(material, glsl::ShaderKind::Sample);
+                                                                      uint32_t samples, uint32_t seed = 7,
+                                                                      Accuracy accuracy = Accuracy::Balanced) {
+  Prepared p = prepare(material, glsl::ShaderKind::Sample, {}, accuracy);
   if (!p.ok()) return {};
   rt::DirectionSampler sampler(Device::get().context, Device::get().tables, *p.resources, p.shader.interface, p.words);
   return sampler.sample(views, samples, seed);
 }
 
 /// f(wo, wi) |cos| and the pdf for direction pairs.
-inline std::vector<glm::vec4> evaluate(const ir::Material& material, const std::vector<rt::DirectionPair>& pairs) {
-  Prepared p = prepare(material, glsl::ShaderKind::Eval);
+inline std::vector<glm::vec4> evaluate(const ir::Material& material, const std::vector<rt::DirectionPair>& pairs,
+                                       Accuracy accuracy = Accuracy::Balanced) {
+  Prepared p = prepare(material, glsl::ShaderKind::Eval, {}, accuracy);
   if (!p.ok()) return {};
   rt::MaterialEvaluator evaluator(Device::get().context, Device::get().tables, *p.resources, p.shader.interface, p.words);
   return evaluator.evaluate(pairs);
@@ -150,8 +156,8 @@ namespace mxc::test {
 
 /// Renders a material on the default sphere with the shared device.
 inline rt::RgbaImage render(const ir::Material& material, const rt::RenderSettings& settings,
-                            const std::filesystem::path& folder = {}) {
-  Prepared p = prepare(material, glsl::ShaderKind::Raster, folder);
+                            const std::filesystem::path& folder = {}, Accuracy accuracy = Accuracy::Balanced) {
+  Prepared p = prepare(material, glsl::ShaderKind::Raster, folder, accuracy);
   if (!p.ok()) return {};
   static std::unique_ptr<rt::Renderer> renderer;  // its vertex shader is compiled once
   if (!renderer) renderer = std::make_unique<rt::Renderer>(Device::get().context, Device::get().tables);

@@ -16,6 +16,23 @@ float mxc_fresnel_dielectric(float cosi, float eta) {
   return 0.5 * (rs * rs + rp * rp);
 }
 
+// Schlick's approximation of the same (Schlick 1994), the real-time shortcut of the fast tier:
+// F0 + (1 - F0)(1 - c)^5 with F0 = ((eta - 1) / (eta + 1))^2, whose albedo over a GGX lobe is
+// exactly the split sum F0 A + B the tier's layering uses. Seen from the denser side (eta < 1)
+// c is the transmitted cosine, so that total internal reflection gives 1 (Lagarde 2013, "Memo
+// on Fresnel equations"). An index-matched interface reflects nothing, as the exact form.
+float mxc_fresnel_dielectric_schlick(float cosi, float eta) {
+  if (abs(eta - 1.0) < 1e-6) return 0.0;
+  float f0 = mxc_sqr((eta - 1.0) / (eta + 1.0));  // eta > 0
+  float c = cosi;
+  if (eta < 1.0) {
+    float sin2t = (1.0 - cosi * cosi) / (eta * eta);
+    if (sin2t >= 1.0) return 1.0;
+    c = sqrt(1.0 - sin2t);
+  }
+  return f0 + (1.0 - f0) * pow(clamp(1.0 - c, 0.0, 1.0), 5.0);
+}
+
 // Complex helpers for conductors: vec2 = (re, im).
 vec2 mxc_cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
 vec2 mxc_cdiv(vec2 a, vec2 b) {
@@ -172,8 +189,11 @@ vec3 mxc_thin_film(float cosi, float eta2, vec3 eta3, vec3 kappa3, float d) {
     vec3 s2 = g2 * (2.0 * c1 * c1 - 1.0) + vec3(gx2 * (2.0 * cx1 * cx1 - 1.0), 0.0, 0.0);
     vec3 cm = (Rs - T121[pol]) * r123;
     xyz += cm * 2.0 * s1;
+#ifndef MXC_ACCURACY_FAST
+    // The fast tier stops at the first order, the series' leading interference term.
     cm *= r123;
     xyz += cm * 2.0 * s2;
+#endif
   }
   return clamp(0.5 * (grey + MXC_XYZ_TO_RGB * xyz), 0.0, 1.0);
 }
