@@ -1,7 +1,9 @@
-// Shader compile and render cost: for open_pbr_default and open_pbr_carpaint, the time from
-// the .mtlx file to a validated SPIR-V module (front end, GLSL, glslang, SPIRV-Tools), the
-// module's instruction count (plain and optimised), and the frame time of the sphere renderer,
-// against a flat-colour fragment shader measured in the same run on the same device.
+// Shader compile and render cost: for open_pbr_default, open_pbr_carpaint and a rough white
+// metal and rough glass, on every accuracy tier, the time from the .mtlx file to a validated
+// SPIR-V module (front end, GLSL, glslang, SPIRV-Tools), the module's instruction count (plain
+// and optimised), and the frame time of the sphere renderer, against a flat-colour fragment
+// shader measured in the same run on the same device, and each tier's frame time against the
+// fast tier's.
 //
 //   build/tests/bench/shader_bench [--size N] [--frames N] [--repeat N]
 
@@ -12,6 +14,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "compiler/driver/Compiler.h"
@@ -41,13 +44,16 @@ struct Compiled {
 
 /// One compile from the file, with the library already loaded (as in a running tool). The
 /// workspace is kept with the result: the shader's locations point into its sources.
-Compiled compileFile(const mxc::lib::LibraryStack& libraries, const fs::path& file) {
+Compiled compileFile(const mxc::lib::LibraryStack& libraries, const fs::path& file, mxc::Accuracy accuracy,
+                     const std::vector<std::pair<std::string, std::string>>& overrides) {
   Compiled out;
   out.workspace = std::make_unique<mxc::Workspace>();
   const auto start = Clock::now();
   mxc::CompileRequest request;
   request.document = file;
   request.libraries = &libraries;
+  request.accuracy = accuracy;
+  request.lowering.overrides = overrides;
   mxc::Compiler compiler(*out.workspace, request);
   out.shader = compiler.shader(compiler.materials().at(0));
   out.frontEndMs = msSince(start);
@@ -95,8 +101,18 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--repeat")) repeat = std::max(1, std::atoi(argv[i + 1]));
   }
   const fs::path shared = MXC_SHARED_DIR;
-  const fs::path files[] = {shared / "corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx",
-                            shared / "corpus/materialx/examples/OpenPbr/open_pbr_carpaint.mtlx"};
+  const fs::path defaultFile = shared / "corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx";
+  struct Case {
+    std::string name;
+    fs::path file;
+    std::vector<std::pair<std::string, std::string>> overrides;
+  };
+  const Case cases[] = {
+      {"open_pbr_default", defaultFile, {}},
+      {"open_pbr_carpaint", shared / "corpus/materialx/examples/OpenPbr/open_pbr_carpaint.mtlx", {}},
+      {"rough_metal", defaultFile, {{"base_metalness", "1"}, {"specular_roughness", "0.6"}}},
+      {"rough_glass", defaultFile, {{"transmission_weight", "1"}, {"specular_roughness", "0.5"}}},
+  };
   mxc::Workspace library;
   library.loadLibraries();
   mxc::Diagnostics& diagnostics = library.diagnostics;
@@ -122,23 +138,28 @@ int main(int argc, char** argv) {
               frames);
   const Compiled flat = flatShader();
   const double flatMs = frameMs(flat);
-  std::printf("%-18s %10s %10s %10s %12s %12s %12s %9s\n", "material", "front end", "glslang", "total", "SPIR-V ops",
-              "optimised", "ms/frame", "x flat");
-  std::printf("%-18s %10s %10s %10s %12zu %12zu %12.2f %9.2f\n", "flat colour", "-", "-", "-",
-              mxc::spirv::instructionCount(flat.words), optimizedCount(flat), flatMs, 1.0);
-  for (const fs::path& file : files) {
-    std::vector<double> front, spirv, total;
-    Compiled last;
-    for (int r = 0; r < repeat; ++r) {
-      last = compileFile(library.libraries, file);
-      front.push_back(last.frontEndMs);
-      spirv.push_back(last.spirvMs);
-      total.push_back(last.frontEndMs + last.spirvMs);
+  std::printf("%-28s %10s %10s %10s %12s %12s %12s %9s %9s\n", "material (tier)", "front end", "glslang", "total",
+              "SPIR-V ops", "optimised", "ms/frame", "x flat", "x fast");
+  std::printf("%-28s %10s %10s %10s %12zu %12zu %12.2f %9.2f %9s\n", "flat colour", "-", "-", "-",
+              mxc::spirv::instructionCount(flat.words), optimizedCount(flat), flatMs, 1.0, "-");
+  for (const Case& c : cases) {
+    double fastMs = 0.0;
+    for (mxc::Accuracy accuracy : mxc::kAccuracies) {
+      std::vector<double> front, spirv, total;
+      Compiled last;
+      for (int r = 0; r < repeat; ++r) {
+        last = compileFile(library.libraries, c.file, accuracy, c.overrides);
+        front.push_back(last.frontEndMs);
+        spirv.push_back(last.spirvMs);
+        total.push_back(last.frontEndMs + last.spirvMs);
+      }
+      const double ms = frameMs(last);
+      if (accuracy == mxc::Accuracy::Fast) fastMs = ms;
+      const std::string label = c.name + " (" + std::string(mxc::accuracyName(accuracy)) + ")";
+      std::printf("%-28s %8.2fms %8.2fms %8.2fms %12zu %12zu %12.2f %9.2f %9.2f\n", label.c_str(), median(front),
+                  median(spirv), median(total), mxc::spirv::instructionCount(last.words), optimizedCount(last), ms,
+                  ms / flatMs, fastMs > 0.0 ? ms / fastMs : 0.0);
     }
-    const double ms = frameMs(last);
-    std::printf("%-18s %8.2fms %8.2fms %8.2fms %12zu %12zu %12.2f %9.2f\n", file.stem().string().c_str(), median(front),
-                median(spirv), median(total), mxc::spirv::instructionCount(last.words), optimizedCount(last), ms,
-                ms / flatMs);
   }
   return 0;
 }

@@ -11,6 +11,7 @@ struct MxcClosure {
   int count;
   float choice[MXC_MAX_LOBES];  // how often each lobe is sampled (mxc_closure_prepare), for this wo
   float choiceTotal;
+  vec3 ms[MXC_MAX_LOBES];       // each lobe's multiple-scattering factor for this wo (mxc_lobe_ms_scale)
   vec3 emission;      // radiance leaving towards wo
   vec3 transparency;  // weight of light passing straight through (opacity < 1)
 };
@@ -37,13 +38,16 @@ float mxc_lobe_choice(MxcLobe l, vec3 woLocal) {
   return max(mxc_luminance(l.weight * mxc_lobe_albedo(l, woLocal)), 0.0) + 1e-4;
 }
 
-// Fills the lobe choice weights for the closure's view direction; the generated closure
-// function calls it last, so that sampling and pdfs do not recompute lobe albedos.
+// Fills the lobe choice weights and multiple-scattering factors for the closure's view
+// direction; the generated closure function calls it last, so that evaluation, sampling and
+// pdfs do not recompute lobe albedos and table lookups.
 void mxc_closure_prepare(inout MxcClosure c, vec3 wo) {
   c.choiceTotal = 0.0;
   for (int k = 0; k < c.count; ++k) {
     MxcLobe l = c.lobes[k];
-    c.choice[k] = mxc_lobe_choice(l, mxc_to_local(mxc_frame(l.N, l.T), wo));
+    vec3 o = mxc_to_local(mxc_frame(l.N, l.T), wo);
+    c.ms[k] = mxc_lobe_ms_scale(l, o);
+    c.choice[k] = mxc_lobe_choice(l, o);
     c.choiceTotal += c.choice[k];
   }
 }
@@ -55,7 +59,7 @@ vec3 mxc_closure_eval(MxcClosure c, vec3 wo, vec3 wi) {
     mat3 frame = mxc_frame(l.N, l.T);
     vec3 o = mxc_to_local(frame, wo);
     vec3 i = mxc_to_local(frame, wi);
-    f += l.weight * mxc_absorption(l.tau, l.tauEta, abs(i.z)) * mxc_lobe_eval(l, o, i);
+    f += l.weight * c.ms[k] * mxc_absorption(l.tau, l.tauEta, abs(i.z)) * mxc_lobe_eval(l, o, i);
   }
   return f;
 }
@@ -106,7 +110,7 @@ MxcSample mxc_closure_sample(MxcClosure c, vec3 wo, vec3 u) {
   if (ls.delta) {
     s.delta = true;
     s.pdf = ls.pdf * p / total;
-    s.weight = l.weight * mxc_absorption(l.tau, l.tauEta, abs(ls.wi.z)) * ls.value / s.pdf;
+    s.weight = l.weight * c.ms[chosen] * mxc_absorption(l.tau, l.tauEta, abs(ls.wi.z)) * ls.value / s.pdf;
     s.valid = s.pdf > 0.0;
     return s;
   }

@@ -249,7 +249,9 @@ vec3 mxc_burley(vec3 rho, float roughness, vec3 wo, vec3 wi) {
 // refraction together by 1 / E_RT, its single-scattering R + T (the OpenPBR spec's
 // "Microfacet model" names both). A thin sheet's straight-through transmission is not a
 // microfacet lobe: it is left as it is. Not reciprocal (physics notes 2.4): the factor depends
-// on wo only, as albedo scaling does.
+// on wo only, as albedo scaling does. mxc_lobe_eval is the single-scattering lobe; the closure
+// applies the factor, computed once per lobe for its view (mxc_closure_prepare), and the lobe's
+// albedo includes it.
 vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo) {
   if (mxc_is_delta(l.alpha)) return vec3(1.0);
   float alpha = sqrt(l.alpha.x * l.alpha.y);  // the tables' isotropic alpha: geometric mean
@@ -335,15 +337,15 @@ vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi) {
           MxcLobe m = l;
           m.eta = 1.0 / l.eta;
           m.c0 = vec3(1.0);
-          return mxc_lobe_ms_scale(l, wo) * mxc_microfacet_reflect(m, -wo, -wi);
+          return mxc_microfacet_reflect(m, -wo, -wi);
         }
-        return mxc_lobe_ms_scale(l, wo) * mxc_microfacet_reflect(l, wo, wi);
+        return mxc_microfacet_reflect(l, wo, wi);
       }
       if ((l.mode & MXC_TRANSMIT) == 0 || (l.mode & MXC_THIN_WALL) != 0) return vec3(0.0);
-      return mxc_lobe_ms_scale(l, wo) * mxc_dielectric_transmit(l, wo, wi);
+      return mxc_dielectric_transmit(l, wo, wi);
     case MXC_LOBE_CONDUCTOR:
     case MXC_LOBE_SCHLICK:
-      return mxc_lobe_ms_scale(l, wo) * mxc_microfacet_reflect(l, wo, wi);
+      return mxc_microfacet_reflect(l, wo, wi);
 #endif
 #ifdef MXC_HAS_DIFFUSE
     case MXC_LOBE_DIFFUSE:
