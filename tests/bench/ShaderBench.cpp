@@ -3,12 +3,14 @@
 // SPIR-V module (front end, GLSL, glslang, SPIRV-Tools), the module's instruction count (plain
 // and optimised), and the frame time of the sphere renderer, against a flat-colour fragment
 // shader measured in the same run on the same device, and each tier's frame time against the
-// fast tier's.
+// fast tier's; and the time per BSDF evaluation (f cos and pdf of one direction pair) in the
+// compute harness, against a white Lambertian's in the same run.
 //
 //   build/tests/bench/shader_bench [--size N] [--frames N] [--repeat N]
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "compiler/driver/Compiler.h"
+#include "runtime/Evaluator.h"
 #include "runtime/Renderer.h"
 
 namespace {
@@ -38,6 +41,8 @@ struct Compiled {
   std::unique_ptr<mxc::Workspace> workspace;
   mxc::glsl::MaterialShader shader;
   std::vector<uint32_t> words;
+  mxc::glsl::MaterialShader evalShader;  // the same material's f cos compute shader
+  std::vector<uint32_t> evalWords;
   double frontEndMs = 0.0;  // parse, resolve, lower, passes, GLSL
   double spirvMs = 0.0;     // glslang and SPIRV-Tools validation
 };
@@ -65,6 +70,13 @@ Compiled compileFile(const mxc::lib::LibraryStack& libraries, const fs::path& fi
     std::exit(1);
   }
   out.words = std::move(*words);
+  out.evalShader = compiler.shader(compiler.materials().at(0), mxc::glsl::ShaderKind::Eval);
+  auto evalWords = compiler.spirv(out.evalShader);
+  if (!evalWords) {
+    std::fprintf(stderr, "%s", out.workspace->diagnostics.format().c_str());
+    std::exit(1);
+  }
+  out.evalWords = std::move(*evalWords);
   return out;
 }
 
@@ -102,6 +114,7 @@ int main(int argc, char** argv) {
   }
   const fs::path shared = MXC_SHARED_DIR;
   const fs::path defaultFile = shared / "corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx";
+  const fs::path& lambertFile = defaultFile;
   struct Case {
     std::string name;
     fs::path file;
@@ -134,16 +147,47 @@ int main(int argc, char** argv) {
     return median(times);
   };
 
-  std::printf("device: %s; %ux%u, %u frames of 1 sample, median of runs\n\n", context.deviceName().c_str(), size, size,
-              frames);
+  // Direction pairs over the sphere (a fixed sequence), the same for every material.
+  std::vector<mxc::rt::DirectionPair> pairs;
+  for (uint32_t k = 0; k < (1u << 20); ++k) {
+    auto direction = [](float u, float v) {  // uniform on the sphere
+      const float z = 1.0f - 2.0f * u, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 6.2831853f * v;
+      return glm::vec3(r * std::cos(phi), r * std::sin(phi), z);
+    };
+    const float a = float(k) * 0.6180339887f, b = float(k) * 0.7548776662f, c = float(k) * 0.5698402910f;
+    pairs.push_back({direction(a - std::floor(a), b - std::floor(b)), direction(c - std::floor(c), 0.5f * (a - std::floor(a)))});
+  }
+  auto nsPerEval = [&](const Compiled& c) {
+    mxc::rt::MaterialResources resources(context, c.evalShader.interface, {}, diagnostics);
+    mxc::rt::MaterialEvaluator evaluator(context, tables, resources, c.evalShader.interface, c.evalWords);
+    evaluator.evaluate(pairs);  // the first dispatch pays the pipeline's compilation
+    std::vector<double> times;
+    for (int r = 0; r < std::max(3, repeat); ++r) {
+      const auto start = Clock::now();
+      evaluator.evaluate(pairs);
+      times.push_back(msSince(start) * 1e6 / double(pairs.size()));
+    }
+    return median(times);
+  };
+
+  std::printf("device: %s; %ux%u, %u frames of 1 sample; %zu BSDF evaluations per dispatch; median of runs\n\n",
+              context.deviceName().c_str(), size, size, frames, pairs.size());
+  double lambertNs = 0.0;
+  {
+    Compiled lambert = compileFile(library.libraries, lambertFile, mxc::Accuracy::Balanced,
+                                   {{"base_color", "1, 1, 1"}, {"specular_weight", "0"}});
+    lambertNs = nsPerEval(lambert);
+    std::printf("white Lambertian (EON, no specular): %.1f ns per evaluation (the baseline of 'x lambert')\n\n",
+                lambertNs);
+  }
   const Compiled flat = flatShader();
   const double flatMs = frameMs(flat);
-  std::printf("%-28s %10s %10s %10s %12s %12s %12s %9s %9s\n", "material (tier)", "front end", "glslang", "total",
-              "SPIR-V ops", "optimised", "ms/frame", "x flat", "x fast");
-  std::printf("%-28s %10s %10s %10s %12zu %12zu %12.2f %9.2f %9s\n", "flat colour", "-", "-", "-",
-              mxc::spirv::instructionCount(flat.words), optimizedCount(flat), flatMs, 1.0, "-");
+  std::printf("%-28s %10s %10s %10s %11s %10s %9s %7s %7s %8s %9s %7s\n", "material (tier)", "front end", "glslang",
+              "total", "SPIR-V ops", "optimised", "ms/frame", "x flat", "x fast", "ns/eval", "x lambert", "x fast");
+  std::printf("%-28s %10s %10s %10s %11zu %10zu %9.2f %7.2f %7s %8s %9s %7s\n", "flat colour", "-", "-", "-",
+              mxc::spirv::instructionCount(flat.words), optimizedCount(flat), flatMs, 1.0, "-", "-", "-", "-");
   for (const Case& c : cases) {
-    double fastMs = 0.0;
+    double fastMs = 0.0, fastNs = 0.0;
     for (mxc::Accuracy accuracy : mxc::kAccuracies) {
       std::vector<double> front, spirv, total;
       Compiled last;
@@ -154,11 +198,16 @@ int main(int argc, char** argv) {
         total.push_back(last.frontEndMs + last.spirvMs);
       }
       const double ms = frameMs(last);
-      if (accuracy == mxc::Accuracy::Fast) fastMs = ms;
+      const double ns = nsPerEval(last);
+      if (accuracy == mxc::Accuracy::Fast) {
+        fastMs = ms;
+        fastNs = ns;
+      }
       const std::string label = c.name + " (" + std::string(mxc::accuracyName(accuracy)) + ")";
-      std::printf("%-28s %8.2fms %8.2fms %8.2fms %12zu %12zu %12.2f %9.2f %9.2f\n", label.c_str(), median(front),
-                  median(spirv), median(total), mxc::spirv::instructionCount(last.words), optimizedCount(last), ms,
-                  ms / flatMs, fastMs > 0.0 ? ms / fastMs : 0.0);
+      std::printf("%-28s %8.2fms %8.2fms %8.2fms %11zu %10zu %9.2f %7.2f %7.2f %8.1f %9.2f %7.2f\n", label.c_str(),
+                  median(front), median(spirv), median(total), mxc::spirv::instructionCount(last.words),
+                  optimizedCount(last), ms, ms / flatMs, fastMs > 0.0 ? ms / fastMs : 0.0, ns, ns / lambertNs,
+                  fastNs > 0.0 ? ns / fastNs : 0.0);
     }
   }
   return 0;

@@ -88,6 +88,15 @@ EXPLANATIONS = {
         "time: about 1.6x MaterialX's (5.4x before the film's second Airy order and phase were derived without "
         "transcendentals); mxc evaluates the film three times per pixel (the base's albedo under the coat, "
         "the lobe choice, the light).",
+    "open_pbr_velvet": {
+        "balanced":
+            "Multiple-scattering compensation of the rough (0.8) specular under the fuzz, at the rim. The balanced "
+            "tier scales the dielectric's reflection by 1 / E_RT, its tabulated single-scattering R + T with "
+            "height-correlated refraction masking (Turquin 2019's dielectric form), which grows near grazing where "
+            "E_RT is small; MaterialX's dielectric_bsdf scales by 1 + F (1 - E) / E with the F = 1 reflection "
+            "albedo E. Within tolerance on the fast tier (no compensation). Which is closer to the truth is for the "
+            "reference tier to measure.",
+    },
     "standard_surface_brick_procedural":
         "Mean within tolerance; the 99th percentile sits on the brick and mortar edges at texture tile seams. "
         "mxc wraps coordinates in the shader and samples with clamp-to-edge, MaterialX's sampler repeats, so "
