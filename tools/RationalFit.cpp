@@ -46,7 +46,7 @@ std::optional<std::vector<double>> leastSquares(std::vector<double> a, std::vect
     a[k * cols + k] -= alpha;
     double vv = 0.0;
     for (size_t i = k; i < rows; ++i) vv += a[i * cols + k] * a[i * cols + k];
-    if (vv < 1e-300) return std::nullopt;  // x was already alpha e_k: no reflection needed
+    // vv >= norm^2 > 0 (the sign of alpha is chosen against the pivot): the division below is safe.
     for (size_t j = k + 1; j < cols; ++j) {
       double dot = 0.0;
       for (size_t i = k; i < rows; ++i) dot += a[i * cols + k] * a[i * cols + j];
@@ -71,7 +71,14 @@ std::optional<std::vector<double>> leastSquares(std::vector<double> a, std::vect
 
 }  // namespace
 
-std::optional<RationalFit> fitRational(const std::vector<FitSample>& samples, size_t denominatorTerms, int iterations) {
+double maxShortfall(const RationalFit& fit, const std::vector<FitSample>& samples) {
+  double worst = 0.0;
+  for (const FitSample& s : samples) worst = std::max(worst, s.value - fit(s.u, s.v));
+  return worst;
+}
+
+std::optional<RationalFit> fitRational(const std::vector<FitSample>& samples, size_t denominatorTerms, int iterations,
+                                       double below) {
   const size_t qTerms = std::clamp<size_t>(denominatorTerms, 1, 15) - 1;  // free coefficients of Q
   const size_t cols = 15 + qTerms;
   const size_t rows = samples.size();
@@ -95,7 +102,11 @@ std::optional<RationalFit> fitRational(const std::vector<FitSample>& samples, si
     std::copy(x->begin() + 15, x->end(), fit.q.begin());
     // The next step divides by this step's Q: the weights make the linearised residual the
     // true one at convergence. |Q| is floored so a near-zero Q cannot blow a weight up.
-    for (size_t i = 0; i < rows; ++i) weights[i] = 1.0 / std::max(std::abs(fit.denominator(samples[i].u, samples[i].v)), 1e-3);
+    for (size_t i = 0; i < rows; ++i) {
+      const FitSample& s = samples[i];
+      weights[i] = 1.0 / std::max(std::abs(fit.denominator(s.u, s.v)), 1e-3);
+      if (fit(s.u, s.v) < s.value) weights[i] *= std::sqrt(below);  // squared in the residual: `below` times
+    }
   }
   double sum = 0.0;
   for (const FitSample& s : samples) {

@@ -40,7 +40,12 @@ std::array<double, 15> monomials(double u, double v);
 /// samples that cannot tell the monomials apart).
 /// `denominatorTerms` (1 to 15) of Q's monomials are free (the others 0): fewer keep Q away from
 /// zero where a full quartic would put a pole inside the square.
+/// `below` > 1 weighs the samples the previous step fitted from below that many times more
+/// (asymmetric least squares, an expectile fit): the fit then errs upwards, where an albedo
+/// that is too high only loses energy.
 std::optional<RationalFit> fitRational(const std::vector<FitSample>& samples, size_t denominatorTerms = 15,
-                                       int iterations = 30);
+                                       int iterations = 30, double below = 1.0);
+/// The largest amount by which the fit falls below a sample (0 when it never does).
+double maxShortfall(const RationalFit& fit, const std::vector<FitSample>& samples);
 
 }  // namespace mxc::tools

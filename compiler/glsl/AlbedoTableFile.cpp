@@ -42,6 +42,9 @@ T get(std::string_view bytes, size_t offset) {
 }  // namespace
 
 std::string encodeAlbedoTables(const AlbedoTableData& data) {
+  if (data.texels.size() != size_t{data.width} * data.height * kChannels) {
+    throw std::logic_error(fmt::format("{} texel values for a {} x {} table", data.texels.size(), data.width, data.height));
+  }
   std::string out(kMagic);
   put(out, data.width);
   put(out, data.height);

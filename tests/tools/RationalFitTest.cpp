@@ -56,6 +56,20 @@ TEST(RationalFit, PolynomialWhenTheDenominatorIsFixed) {
   EXPECT_GT(rough->maxError, 0.1);
 }
 
+// Weighing the undershot samples more (an expectile fit) moves the fit above the data: the
+// largest shortfall of a function the model cannot express falls, at the price of overshoot.
+TEST(RationalFit, WeighingUndershootsKeepsTheFitAbove) {
+  auto kink = [](double u, double v) { return std::abs(u - 0.37) + 0.5 * std::sqrt(v); };
+  const std::vector<FitSample> samples = grid(kink);
+  std::optional<RationalFit> plain = fitRational(samples, 1);
+  std::optional<RationalFit> above = fitRational(samples, 1, 30, 100.0);
+  ASSERT_TRUE(plain.has_value());
+  ASSERT_TRUE(above.has_value());
+  EXPECT_GT(maxShortfall(*plain, samples), 0.01);
+  EXPECT_LT(maxShortfall(*above, samples), 0.5 * maxShortfall(*plain, samples));
+  EXPECT_GT(above->meanError, plain->meanError);  // least squares is the best fit without the weights
+}
+
 TEST(RationalFit, TooFewSamplesOrADegenerateSetIsRefused) {
   EXPECT_FALSE(fitRational({{0.1, 0.2, 1.0}, {0.3, 0.4, 2.0}}).has_value());
   // Every sample at one point: the monomial columns are dependent.

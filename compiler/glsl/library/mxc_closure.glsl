@@ -40,7 +40,8 @@ float mxc_lobe_choice(MxcLobe l, vec3 woLocal) {
 
 // Fills the lobe choice weights and multiple-scattering factors for the closure's view
 // direction; the generated closure function calls it last, so that evaluation, sampling and
-// pdfs do not recompute lobe albedos and table lookups.
+// pdfs do not recompute them (the lobe albedos here and in the layering compute the factor
+// again: twice per lobe and view, against once per evaluation before).
 void mxc_closure_prepare(inout MxcClosure c, vec3 wo) {
   c.choiceTotal = 0.0;
   for (int k = 0; k < c.count; ++k) {

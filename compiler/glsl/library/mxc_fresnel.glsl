@@ -16,13 +16,18 @@ float mxc_fresnel_dielectric(float cosi, float eta) {
   return 0.5 * (rs * rs + rp * rp);
 }
 
-// Schlick's approximation of the same (Schlick 1994), the real-time shortcut of the fast tier:
-// F0 + (1 - F0)(1 - c)^5 with F0 = ((eta - 1) / (eta + 1))^2, whose albedo over a GGX lobe is
-// exactly the split sum F0 A + B the tier's layering uses. Seen from the denser side (eta < 1)
-// c is the transmitted cosine, so that total internal reflection gives 1 (Lagarde 2013, "Memo
-// on Fresnel equations"). An index-matched interface reflects nothing, as the exact form.
+// The grazing reflectance of the fast tier's Schlick Fresnel: 1, faded out as F0 falls below
+// 0.02 (IOR ratios within about 1.33 of 1), so that the Fresnel goes continuously to 0 at index
+// matching instead of jumping from (1 - c)^5 to 0; the real-time shortcut of Schueler 2009
+// ("An efficient and physically plausible real-time shading model", ShaderX7), used by Filament.
+float mxc_schlick_f90(float f0) { return clamp(50.0 * f0, 0.0, 1.0); }
+
+// Schlick's approximation of the dielectric Fresnel (Schlick 1994), the real-time shortcut of
+// the fast tier: F0 + (F90 - F0)(1 - c)^5 with F0 = ((eta - 1) / (eta + 1))^2 and F90 from
+// mxc_schlick_f90, whose albedo over a GGX lobe is exactly the split sum F0 A + F90 B the tier's
+// layering uses. Seen from the denser side (eta < 1) c is the transmitted cosine, so that total
+// internal reflection gives 1 (Lagarde 2013, "Memo on Fresnel equations").
 float mxc_fresnel_dielectric_schlick(float cosi, float eta) {
-  if (abs(eta - 1.0) < 1e-6) return 0.0;
   float f0 = mxc_sqr((eta - 1.0) / (eta + 1.0));  // eta > 0
   float c = cosi;
   if (eta < 1.0) {
@@ -30,7 +35,7 @@ float mxc_fresnel_dielectric_schlick(float cosi, float eta) {
     if (sin2t >= 1.0) return 1.0;
     c = sqrt(1.0 - sin2t);
   }
-  return f0 + (1.0 - f0) * pow(clamp(1.0 - c, 0.0, 1.0), 5.0);
+  return f0 + (mxc_schlick_f90(f0) - f0) * pow(clamp(1.0 - c, 0.0, 1.0), 5.0);
 }
 
 // Complex helpers for conductors: vec2 = (re, im).

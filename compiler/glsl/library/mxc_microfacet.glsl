@@ -63,7 +63,8 @@ float mxc_ggx_pdf_vndf(vec3 wo, vec3 m, vec2 alpha) {
 
 // log Gamma(x) for x >= 1: the recurrence Gamma(x) = Gamma(x + 6) / (x (x + 1) ... (x + 5)) and
 // Stirling's series at x + 6 >= 7, whose truncation after the z^-5 term errs by under 1e-7 there
-// (Abramowitz & Stegun 6.1.41). The product is at most 1007^6 ~ 1e18 for x <= 1001: no overflow.
+// (Abramowitz & Stegun 6.1.41). Callers pass x <= 2002: the product is at most 2007^6 ~ 7e19, far
+// below float's range, and float rounding (about 1e-3 in the log at that size) bounds the accuracy.
 float mxc_lgamma(float x) {
   float z = x + 6.0;
   float p = x * (x + 1.0) * (x + 2.0) * (x + 3.0) * (x + 4.0) * (x + 5.0);  // > 0 for x >= 1
@@ -76,11 +77,15 @@ float mxc_lgamma(float x) {
 // Height-correlated masking-shadowing of a refraction (Heitz 2014, s. 6.2): with the heights'
 // CDF C, wo sees a microfacet at height h with probability C^Lambda(wo) and wi, below the
 // surface, with (1 - C)^Lambda(wi); over the heights that is the Beta function
-// G2 = integral_0^1 C^Lo (1 - C)^Li dC = B(1 + Lo, 1 + Li). Both Lambdas are capped at 1000: past it
-// G1 < 1e-3 and the product is negligible, and the cap keeps log Gamma's terms accurate in floats.
-// wo and wi as seen from their own sides (z > 0).
+// G2 = integral_0^1 C^Lo (1 - C)^Li dC = B(1 + Lo, 1 + Li). The Beta function is computed with
+// both Lambdas capped at 1000 (keeping log Gamma's terms accurate in floats) and bounded by the
+// separable product G1(o) G1(i) of the uncapped Lambdas, which it never exceeds (Chebyshev's
+// integral inequality: C^Lo and (1 - C)^Li are oppositely ordered), so that past the cap it still
+// falls with the grazing cosine. wo and wi as seen from their own sides (z > 0).
 float mxc_ggx_g2_transmit(vec3 wo, vec3 wi, vec2 alpha) {
-  float lo = min(mxc_ggx_lambda(wo, alpha), 1000.0);
-  float li = min(mxc_ggx_lambda(wi, alpha), 1000.0);
-  return exp(mxc_lgamma(1.0 + lo) + mxc_lgamma(1.0 + li) - mxc_lgamma(2.0 + lo + li));
+  float lo = mxc_ggx_lambda(wo, alpha);
+  float li = mxc_ggx_lambda(wi, alpha);
+  float beta = exp(mxc_lgamma(1.0 + min(lo, 1000.0)) + mxc_lgamma(1.0 + min(li, 1000.0)) -
+                   mxc_lgamma(2.0 + min(lo, 1000.0) + min(li, 1000.0)));
+  return min(beta, 1.0 / ((1.0 + lo) * (1.0 + li)));  // both factors >= 1
 }

@@ -1,13 +1,14 @@
 // The albedo tables the lobes read (library/mxc_lobes.glsl, mxc_table_at). Run once by
 // scripts/generate-tables, which commits its output under generated/tables (the harness loads
 // that file; nothing computes tables at start-up). Texel (i, j) of a table is at
-// mu = (i / (n - 1))^2 (dense near grazing, where albedos change fastest) and x = j / (n - 1).
+// mu = (i / (n - 1))^2 (dense near grazing, where albedos change fastest) and x = j / (n - 1), the
+// roughness: alpha = x^2 for the GGX tables (dense at low roughness, where most materials are).
 // Rows 0..n-1:
 //   .x, .y: A and B of the GGX reflection albedo with a Schlick Fresnel, E = F0 A + F90 B
-//           (the split sum of Karis 2013), for alpha = x;
+//           (the split sum of Karis 2013), for alpha = x^2;
 //   .z:     the albedo of the sheen lobe (Estevez & Kulla 2017) with colour 1, for roughness x.
 // Then MXC_TABLE_SLICES tables, slice s for the relative IOR eta = 1 + 2 (s / (slices - 1))^2
-// (denser near 1, where the albedo changes fastest near grazing incidence), for alpha = x:
+// (denser near 1, where the albedo changes fastest near grazing incidence), for alpha = x^2:
 //   .x:     the GGX reflection albedo with the exact dielectric Fresnel, seen from outside;
 //   .y:     the single-scattering albedo R + T of the dielectric lobe seen from outside (eta):
 //           reflection with height-correlated G2 (Heitz 2014, eq. 99), refraction with its
@@ -54,7 +55,7 @@ void main() {
   float eta = 1.0 + 2.0 * slice * slice;
   const int strata = table == 0u ? 64 : 32;
   float a = 0.0, b = 0.0, sheen = 0.0, dielectric = 0.0, outside = 0.0, inside = 0.0;
-  vec2 alpha = vec2(x);
+  vec2 alpha = vec2(x * x);
   bool delta = mxc_is_delta(alpha);
   for (int i = 0; i < strata; ++i) {
     for (int j = 0; j < strata; ++j) {

@@ -21,6 +21,10 @@ TEST(AlbedoTableFile, RoundTrips) {
   EXPECT_EQ(back->texels, data.texels);
 }
 
+TEST(AlbedoTableFile, EncodingChecksTheShape) {
+  EXPECT_THROW(encodeAlbedoTables(AlbedoTableData{2, 2, 1, std::vector<float>(15, 0.5f)}), std::logic_error);
+}
+
 TEST(AlbedoTableFile, RefusesWhatIsNotATable) {
   AlbedoTableData data{2, 2, 1, std::vector<float>(16, 0.5f)};
   const std::string good = encodeAlbedoTables(data);
