@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "support/ClosedForms.h"
 #include "support/MaterialSupport.h"
 
 namespace mxc::test {
@@ -111,6 +112,18 @@ TEST(Furnace, CoatDarkeningFollowsTheInterfacedLambertian) {
     // Slack: the 16-point Fresnel average (3e-4 in E_F) and the tabulated coat albedo.
     expectNear(albedo[0].total().y, expected, albedo[0].reflectedError.y, 2e-3f,
                fmt::format("coat_darkening {}", darkening));
+    if (darkening == 1.0f) {
+      // At every view, against the interfaced Lambertian computed by its own quadrature
+      // (support/ClosedForms.h): with K = K_r the darkening is exact for this configuration.
+      const double degrees[] = {30.0, 60.0, 75.0};
+      std::vector<rt::Albedo> more = furnace(m, {viewAt(30), viewAt(60), viewAt(75)}, 262144);
+      ASSERT_EQ(more.size(), 3u);
+      for (size_t k = 0; k < 3; ++k) {
+        const double mu = std::cos(degrees[k] * 3.14159265358979 / 180.0);
+        expectNear(more[k].total().y, static_cast<float>(closed::interfacedLambertian(mu, 0.5, 1.5)),
+                   more[k].reflectedError.y, 2e-3f, fmt::format("interfaced Lambertian at {} degrees", degrees[k]));
+      }
+    }
   }
 }
 
