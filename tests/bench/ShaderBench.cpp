@@ -114,7 +114,6 @@ int main(int argc, char** argv) {
   }
   const fs::path shared = MXC_SHARED_DIR;
   const fs::path defaultFile = shared / "corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx";
-  const fs::path& lambertFile = defaultFile;
   struct Case {
     std::string name;
     fs::path file;
@@ -174,7 +173,7 @@ int main(int argc, char** argv) {
               context.deviceName().c_str(), size, size, frames, pairs.size());
   double lambertNs = 0.0;
   {
-    Compiled lambert = compileFile(library.libraries, lambertFile, mxc::Accuracy::Balanced,
+    Compiled lambert = compileFile(library.libraries, defaultFile, mxc::Accuracy::Balanced,
                                    {{"base_color", "1, 1, 1"}, {"specular_weight", "0"}});
     lambertNs = nsPerEval(lambert);
     std::printf("white Lambertian (EON, no specular): %.1f ns per evaluation (the baseline of 'x lambert')\n\n",

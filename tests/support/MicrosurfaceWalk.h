@@ -26,18 +26,13 @@
 #include <functional>
 #include <random>
 
+#include <glm/glm.hpp>
+
+#include "support/ClosedForms.h"
+
 namespace mxc::test::walk {
 
-struct Vec {
-  double x = 0.0, y = 0.0, z = 0.0;
-};
-inline Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline Vec operator*(double s, Vec a) { return {s * a.x, s * a.y, s * a.z}; }
-inline Vec operator-(Vec a) { return {-a.x, -a.y, -a.z}; }
-inline double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline Vec cross(Vec a, Vec b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-inline Vec normalize(Vec a) { return (1.0 / std::sqrt(dot(a, a))) * a; }  // callers pass non-zero vectors
+using Vec = glm::dvec3;
 
 /// Smith's Lambda of GGX (Heitz 2014, eq. 86) for the upward direction (w.x, w.y, |w.z|).
 inline double lambda(Vec w, double alpha) {
@@ -48,25 +43,17 @@ inline double lambda(Vec w, double alpha) {
 
 /// A visible normal of GGX for the direction v (|v| = 1, any z), from two uniform numbers.
 inline Vec visibleNormal(Vec v, double alpha, double u1, double u2) {
-  const Vec vh = normalize({alpha * v.x, alpha * v.y, v.z});
+  const Vec vh = glm::normalize(Vec(alpha * v.x, alpha * v.y, v.z));
   const double lensq = vh.x * vh.x + vh.y * vh.y;
-  const Vec t1 = lensq > 0.0 ? (1.0 / std::sqrt(lensq)) * Vec{-vh.y, vh.x, 0.0} : Vec{1.0, 0.0, 0.0};
-  const Vec t2 = cross(vh, t1);
+  const Vec t1 = lensq > 0.0 ? (1.0 / std::sqrt(lensq)) * Vec(-vh.y, vh.x, 0.0) : Vec(1.0, 0.0, 0.0);
+  const Vec t2 = glm::cross(vh, t1);
   const double r = std::sqrt(u1), phi = 2.0 * 3.14159265358979323846 * u2;
   const double p1 = r * std::cos(phi);
   double p2 = r * std::sin(phi);
   const double s = 0.5 * (1.0 + vh.z);
   p2 = (1.0 - s) * std::sqrt(std::max(0.0, 1.0 - p1 * p1)) + s * p2;
   const Vec nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
-  return normalize({alpha * nh.x, alpha * nh.y, std::max(nh.z, 1e-12)});
-}
-
-inline double fresnelDielectric(double cosi, double eta) {  // eta: far side over near side
-  const double sin2t = (1.0 - cosi * cosi) / (eta * eta);
-  if (sin2t >= 1.0) return 1.0;
-  const double cost = std::sqrt(1.0 - sin2t);
-  const double rs = (cosi - eta * cost) / (cosi + eta * cost), rp = (eta * cosi - cost) / (eta * cosi + cost);
-  return 0.5 * (rs * rs + rp * rp);
+  return glm::normalize(Vec(alpha * nh.x, alpha * nh.y, std::max(nh.z, 1e-12)));
 }
 
 /// The outcome of walks from one view: the albedo reflected and transmitted, all orders and
@@ -115,22 +102,22 @@ inline Albedo albedo(Vec wo, double alpha, double eta, const std::function<doubl
       // The microfacet: a visible normal of the direction the ray comes from.
       const Vec wi = -w;
       const Vec m = visibleNormal(wi, alpha, u(), u());
-      const double cosm = dot(wi, m);
+      const double cosm = glm::dot(wi, m);
       if (eta0 <= 0.0) {
         weight *= conductor(std::max(cosm, 0.0));
-        w = w - 2.0 * dot(w, m) * m;
+        w = w - 2.0 * glm::dot(w, m) * m;
         continue;
       }
-      const double f = fresnelDielectric(std::max(cosm, 0.0), eta0);
+      const double f = closed::fresnel(std::max(cosm, 0.0), eta0);
       if (u() < f) {
-        w = w - 2.0 * dot(w, m) * m;
+        w = w - 2.0 * glm::dot(w, m) * m;
         continue;
       }
       // Refraction into the other medium (Snell in vector form, cosm > 0 when f < 1), then the
       // frame of that medium: heights and directions mirrored.
       const double r = 1.0 / eta0, cost = std::sqrt(std::max(0.0, 1.0 - r * r * (1.0 - cosm * cosm)));
       w = r * w + (r * cosm - cost) * m;
-      w = {w.x, w.y, -w.z};
+      w.z = -w.z;
       h = -h;
       inside = !inside;
       eta0 = 1.0 / eta0;

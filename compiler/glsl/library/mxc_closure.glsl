@@ -34,21 +34,22 @@ vec3 mxc_absorption(vec3 tau, float eta, float mu) {
 }
 
 // How often each lobe is chosen: in proportion to the luminance of what it can return.
-float mxc_lobe_choice(MxcLobe l, vec3 woLocal) {
-  return max(mxc_luminance(l.weight * mxc_lobe_albedo(l, woLocal)), 0.0) + 1e-4;
+// `ms`: the lobe's multiple-scattering factor at woLocal.
+float mxc_lobe_choice(MxcLobe l, vec3 woLocal, vec3 ms) {
+  return max(mxc_luminance(l.weight * mxc_lobe_albedo_scaled(l, woLocal, ms)), 0.0) + 1e-4;
 }
 
 // Fills the lobe choice weights and multiple-scattering factors for the closure's view
 // direction; the generated closure function calls it last, so that evaluation, sampling and
-// pdfs do not recompute them (the lobe albedos here and in the layering compute the factor
-// again: twice per lobe and view, against once per evaluation before).
+// pdfs do not recompute them; the lobe choice reuses the factor (the layering's albedos, built
+// before, compute their own).
 void mxc_closure_prepare(inout MxcClosure c, vec3 wo) {
   c.choiceTotal = 0.0;
   for (int k = 0; k < c.count; ++k) {
     MxcLobe l = c.lobes[k];
     vec3 o = mxc_to_local(mxc_frame(l.N, l.T), wo);
     c.ms[k] = mxc_lobe_ms_scale(l, o);
-    c.choice[k] = mxc_lobe_choice(l, o);
+    c.choice[k] = mxc_lobe_choice(l, o, c.ms[k]);
     c.choiceTotal += c.choice[k];
   }
 }

@@ -250,12 +250,14 @@ vec3 mxc_burley(vec3 rho, float roughness, vec3 wo, vec3 wi) {
 // albedo exactly 1 and lets a coloured one saturate with F0; a dielectric's reflection and
 // refraction together by 1 / E_RT, its single-scattering R + T (the OpenPBR spec's
 // "Microfacet model" names both). A thin sheet's straight-through transmission is not a
-// microfacet lobe: its rough reflection is compensated as a reflector's, with its Fresnel. Not reciprocal (physics notes 2.4): the factor depends
-// on wo only, as albedo scaling does. mxc_lobe_eval is the single-scattering lobe; the closure
-// applies the factor, computed once per lobe for its view (mxc_closure_prepare), and the lobe's
-// albedo includes it.
+// microfacet lobe: its rough reflection is compensated as a reflector's, with its Fresnel.
+// Not reciprocal (physics notes 2.4): the factor depends on wo only, as albedo scaling does.
+// mxc_lobe_eval is the single-scattering lobe; the closure applies the factor, computed once per
+// lobe for its view (mxc_closure_prepare), and the lobe's albedo includes it. Other lobe kinds
+// have no factor.
 vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo) {
-  if (mxc_is_delta(l.alpha)) return vec3(1.0);
+  bool microfacet = l.kind == MXC_LOBE_DIELECTRIC || l.kind == MXC_LOBE_CONDUCTOR || l.kind == MXC_LOBE_SCHLICK;
+  if (!microfacet || mxc_is_delta(l.alpha)) return vec3(1.0);
   float alpha = sqrt(l.alpha.x * l.alpha.y);  // the tables' isotropic alpha: geometric mean
   if (l.kind == MXC_LOBE_DIELECTRIC && (l.mode & MXC_THIN_WALL) == 0) {
     float e = mxc_dielectric_albedo_rt(abs(wo.z), alpha, mxc_lobe_eta(l, wo.z >= 0.0));
@@ -275,9 +277,9 @@ vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo) { return vec3(1.0); }
 
 // ---- The lobe interface used by the closure ----
 
-// The lobe's directional albedo at wo (above the surface), with its multiple-scattering
-// compensation (mxc_lobe_ms_scale) where the tier has one.
-vec3 mxc_lobe_albedo(MxcLobe l, vec3 wo) {
+// The lobe's directional albedo at wo (above the surface), with `ms`, its multiple-scattering
+// factor at wo (mxc_lobe_ms_scale: the closure has it already, mxc_closure_prepare).
+vec3 mxc_lobe_albedo_scaled(MxcLobe l, vec3 wo, vec3 ms) {
   float mu = clamp(wo.z, 0.0, 1.0);
   if (l.kind == MXC_LOBE_DIELECTRIC || l.kind == MXC_LOBE_CONDUCTOR || l.kind == MXC_LOBE_SCHLICK) {
     // Reflection albedo with a Schlick-shaped Fresnel between its normal and grazing values
@@ -296,14 +298,14 @@ vec3 mxc_lobe_albedo(MxcLobe l, vec3 wo) {
         e *= f > 1e-6 ? mxc_lobe_fresnel(l, mu, true) / f : vec3(1.0);
       }
 #endif
-      return clamp(e * l.c0 * mxc_lobe_ms_scale(l, wo), 0.0, 1.0);
+      return clamp(e * l.c0 * ms, 0.0, 1.0);
     }
     vec2 ab = mxc_split_sum(mu, alpha);
     vec3 f0 = mxc_lobe_fresnel(l, 1.0, true);
     vec3 f90 = mxc_lobe_fresnel(l, 0.0, true);
     vec3 tint = l.kind == MXC_LOBE_DIELECTRIC ? l.c0 : vec3(1.0);
     if (mxc_is_delta(l.alpha)) return mxc_lobe_fresnel(l, mu, true) * tint;
-    return clamp((f0 * ab.x + f90 * ab.y) * tint * mxc_lobe_ms_scale(l, wo), 0.0, 1.0);
+    return clamp((f0 * ab.x + f90 * ab.y) * tint * ms, 0.0, 1.0);
   }
   if (l.kind == MXC_LOBE_SHEEN) return l.c0 * min(mxc_sheen_albedo(mu, l.p0), 1.0);
 #ifdef MXC_HAS_FUZZ
@@ -315,6 +317,10 @@ vec3 mxc_lobe_albedo(MxcLobe l, vec3 wo) {
   if (l.kind == MXC_LOBE_SHEET) return l.c0;
   return l.c0;  // EON (albedo ~ rho), Burley, translucent
 }
+
+// The lobe's directional albedo at wo, with its multiple-scattering compensation where the tier
+// has one.
+vec3 mxc_lobe_albedo(MxcLobe l, vec3 wo) { return mxc_lobe_albedo_scaled(l, wo, mxc_lobe_ms_scale(l, wo)); }
 
 // What a lobe takes from the layers under it (albedo scaling, OpenPBR "Layering"): its albedo,
 // except that a sheen or fuzz takes it untinted. Standard Surface "Sheen" passes
