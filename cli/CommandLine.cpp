@@ -68,13 +68,20 @@ void addInputOptions(CLI::App& command, MaterialOptions& options) {
       .add_option_function<std::string>(
           "--accuracy", [&options](const std::string& name) { options.accuracy = *parseAccuracy(name); },
           "Accuracy tier of the shader: fast (analytic albedo fits, no multiple-scattering compensation), "
-          "balanced (tables and multiple-scattering compensation; the default)")
+          "balanced (tables and multiple-scattering compensation; the default), reference (Monte Carlo random walk "
+          "through the slab stacks: the ground truth, eval an unbiased estimate)")
       ->type_name(names)
       ->check(CLI::Validator(
           [names](std::string& text) -> std::string {
             return parseAccuracy(text) ? std::string() : fmt::format("'{}' is not a tier ({})", text, names);
           },
           ""));
+  command
+      .add_option("--reference-samples", options.referenceSamples,
+                  "With --accuracy reference: random walks averaged per evaluation of f cos (default: 1 for render, "
+                  "where the image converges with --spp; 1024 for eval)")
+      ->type_name("N")
+      ->check(CLI::Range(1, 1 << 20));
 }
 
 void addMaterialOptions(CLI::App& command, MaterialOptions& options) {

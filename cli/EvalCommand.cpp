@@ -96,14 +96,24 @@ nlohmann::json vec(glm::vec3 v) { return nlohmann::json::array({v.x, v.y, v.z});
 
 }  // namespace
 
+/// eval's walks per direction pair in the reference tier: its relative noise is then about
+/// 1/sqrt(1024) = 3% of a walk's.
+constexpr uint32_t kEvalReferenceSamples = 1024;
+
 int runEval(const EvalOptions& options) {
   std::vector<rt::DirectionPair> rows;
   if (!readDirections(options.dirs, rows)) return kInvalidDocument;
   Session session;
   MaterialPipeline pipeline(session);
+  // The reference tier's walks per pair: one per dispatch (rt::MaterialKernel says why), as many
+  // dispatches as walks.
+  MaterialOptions materials = options.materials;
+  const uint32_t walks = materials.referenceSamples > 0 ? uint32_t(materials.referenceSamples) : kEvalReferenceSamples;
+  const uint32_t dispatches = materials.accuracy == Accuracy::Reference ? walks : 1;
+  materials.referenceSamples = 1;
   CompileRequest request;
   request.document = options.file;
-  if (int code = pipeline.run(std::move(request), options.materials); code != kOk) return code;
+  if (int code = pipeline.run(std::move(request), materials); code != kOk) return code;
   OutputSet outputs;
   if (int code = declareReport(outputs, options.output, pipeline, options.dirs); code != kOk) return code;
   Device device(options.device);
@@ -115,7 +125,7 @@ int runEval(const EvalOptions& options) {
     if (!program) return kInvalidDocument;
     rt::MaterialEvaluator evaluator(*device.context(), *tables, *program->resources, program->shader.interface,
                                     program->spirv);
-    std::vector<glm::vec4> values = evaluator.evaluate(rows);
+    std::vector<glm::vec4> values = evaluator.evaluate(rows, dispatches);
     for (size_t i = 0; i < values.size(); ++i) {
       csv += fmt::format("{},{},{:.7g},{:.7g},{:.7g},{:.7g}\n", material.name, i + 1, values[i].x, values[i].y,
                          values[i].z, values[i].w);

@@ -20,6 +20,7 @@ struct MaterialOptions {
   std::vector<std::string> parameters;  ///< --param INPUT (repeatable)
   std::string material;                 ///< --material NAME: only this one
   Accuracy accuracy = Accuracy::Balanced;  ///< --accuracy TIER
+  int referenceSamples = 0;                ///< --reference-samples N (0: the command's default)
   LibraryOptions libraries;
 };
 

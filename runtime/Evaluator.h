@@ -36,18 +36,28 @@ class MaterialKernel {
   void run(const Buffer& in, const Buffer& out, uint32_t groups, uint32_t rows, uint32_t samples, uint32_t seed);
 
   VulkanContext& context_;
+  /// Samples an invocation may draw per dispatch (no limit: UINT32_MAX).
+  uint32_t samplesPerDispatch_ = UINT32_MAX;
 
  private:
   std::unique_ptr<ComputeKernel> kernel_;
   Buffer batch_;
 };
 
+/// Lavapipe (llvmpipe) ends a shader loop once it has run 65535 iterations in an invocation,
+/// counted over every entry of that loop (gallivm's guard against infinite loops), and the
+/// invocation then carries on as if the loop had finished: a long Monte Carlo loop is cut
+/// silently. Shaders whose samples are long (the reference tier's walks) say how many samples an
+/// invocation may draw per dispatch (MaterialInterface::samplesPerDispatch); more samples are
+/// more dispatches, and the furnace checks that every invocation drew all of its own.
 class MaterialEvaluator : MaterialKernel {
  public:
   /// `spirv`: the material's shader of kind glsl::ShaderKind::Eval.
   using MaterialKernel::MaterialKernel;
-  /// Per pair: rgb = f(wo, wi) |wi.z|, a = the pdf of sampling wi from wo.
-  std::vector<glm::vec4> evaluate(const std::vector<DirectionPair>& pairs);
+  /// Per pair: rgb = f(wo, wi) |wi.z|, a = the pdf of sampling wi from wo. `dispatches` > 1
+  /// averages that many dispatches with different seeds (the reference tier's estimate of f cos
+  /// is random; the other tiers' is not, and they use 1).
+  std::vector<glm::vec4> evaluate(const std::vector<DirectionPair>& pairs, uint32_t dispatches = 1);
 };
 
 /// The directional albedo at one view direction, split into reflected (wi.z > 0) and
@@ -64,7 +74,9 @@ class FurnaceEstimator : MaterialKernel {
  public:
   /// `spirv`: the material's shader of kind glsl::ShaderKind::Furnace.
   using MaterialKernel::MaterialKernel;
-  /// `samples` per view direction (rounded up to a multiple of 64 invocations).
+  /// `samples` per view direction (rounded up to a multiple of 64 invocations), drawn in
+  /// dispatches of at most the shader's samples per dispatch per invocation. Throws std::runtime_error when
+  /// an invocation did not draw all of its samples (a loop cut by the device).
   std::vector<Albedo> estimate(const std::vector<glm::vec3>& views, uint32_t samples, uint32_t seed = 1);
 };
 

@@ -83,6 +83,7 @@ glsl::MaterialShader buildShader(const ir::Material& material, glsl::ShaderKind 
   glsl::BuildOptions options;
   options.expandLibrary = request.expandLibrary;
   options.accuracy = request.accuracy;
+  options.referenceSamples = request.referenceSamples;
   return glsl::buildMaterialShader(material, kind, options);
 }
 

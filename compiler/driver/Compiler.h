@@ -73,6 +73,8 @@ struct CompileRequest {
   bool partial = false;
   /// The accuracy tier: read by the back end, visible to the passes.
   Accuracy accuracy = Accuracy::Balanced;
+  /// The reference tier's random walks per evaluation of f cos (its sampling is one walk).
+  int referenceSamples = 1;
   /// The shader stage shader() builds unless told another.
   glsl::ShaderKind stage = glsl::ShaderKind::Raster;
   /// Paste the shader library in (false: `#include` lines, for the golden files).

@@ -19,6 +19,8 @@ struct Closure {
   /// How many lobes it holds (MXC_MAX_LOBES). Which kinds, and whether a thin film is used,
   /// the material's features say (ir::Features).
   int lobes = 0;
+  /// The reference tier: how many slab stacks it holds (MXC_MAX_STACKS); 0 for the others.
+  int stacks = 0;
 };
 
 /// How an accuracy tier turns a material's slab tree into lobes with weights.

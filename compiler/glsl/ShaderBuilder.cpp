@@ -139,6 +139,7 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   MaterialInterface& iface = out.interface;
   iface.textures = exprs.textures();
   iface.lobes = closure.lobes;
+  if (options.accuracy == Accuracy::Reference) iface.samplesPerDispatch = 1;
   // The library's closure code refers to a lobe type, so at least one kind is compiled in.
   iface.lobeKinds = material.features.lobes.empty() ? FlagSet<ir::LobeKind>().insert(ir::LobeKind::EON)
                                                     : material.features.lobes;
@@ -153,6 +154,13 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   header(w, material, purpose);
   w.line(fmt::format("#define MXC_MAX_LOBES {}", std::max(iface.lobes, 1)));
   w.line(fmt::format("#define MXC_ACCURACY_{}", accuracyMacro(options.accuracy)));
+  if (options.accuracy == Accuracy::Reference) {
+    w.line(fmt::format("#define MXC_MAX_STACKS {}", std::max(closure.stacks, 1)));
+    w.line(fmt::format("#define MXC_REFERENCE_SAMPLES {}", std::max(options.referenceSamples, 1)));
+    // The emission walk only where emission reaches the surface: each walk is a large inlined
+    // loop, and lavapipe's compile time grows with them.
+    if (material.features.emission) w.line("#define MXC_WALK_EMITS");
+  }
   // The guards of the lobe kinds in use, in the order of their names.
   std::vector<std::string_view> kinds;
   iface.lobeKinds.forEach([&](ir::LobeKind k) { kinds.push_back(ir::lobeKindName(k)); });
@@ -172,7 +180,7 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   w.file("library/mxc_geometry.glsl");
   if (exprs.usesProcedural()) w.file("library/mxc_procedural.glsl");
   w.file("library/mxc_lobes.glsl");
-  w.file("library/mxc_closure.glsl");
+  w.file(options.accuracy == Accuracy::Reference ? "library/mxc_walk.glsl" : "library/mxc_closure.glsl");
 
   w.line("// ---- the material's parameters ----");
   w.line(fmt::format("layout(set = 0, binding = {}, std140) uniform MxcParameters {{", static_cast<uint32_t>(kParameterBinding)));

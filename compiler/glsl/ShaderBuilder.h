@@ -39,6 +39,9 @@ struct MaterialInterface {
   std::vector<UniformField> parameters;  ///< always has missing_textures, frame and time first
   uint32_t parameterBytes = 0;
   int lobes = 0;                        ///< lobes of the closure (MXC_MAX_LOBES)
+  /// Samples (walks) one invocation may draw per dispatch: 0 for no limit; 1 for the reference
+  /// tier, whose walk may run up to the device's loop cap on its own (mxc_walk.glsl, MXC_WALK_BUDGET).
+  uint32_t samplesPerDispatch = 0;
   FlagSet<ir::LobeKind> lobeKinds;      ///< the lobe kinds compiled in (MXC_HAS_*)
   std::vector<std::string> geomprops;
 };
@@ -50,6 +53,9 @@ struct MaterialShader {
 
 struct BuildOptions {
   Accuracy accuracy = Accuracy::Balanced;
+  /// The reference tier: random walks per evaluation of f cos (MXC_REFERENCE_SAMPLES); sampling
+  /// is one walk per sample.
+  int referenceSamples = 1;
   /// Paste the shader library files in (a standalone shader, what glslang compiles). When
   /// false, each library file is an `#include` line instead: the material-specific part only,
   /// which is what the golden files under generated/glsl hold.

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <tuple>
 
@@ -60,12 +61,13 @@ TEST(CompileCommand, EachStageHasItsMain) {
 // tier's reads no albedo table, and a white rough metal's furnace shows what the tier costs in
 // energy (single scattering loses 1 - E; balanced compensates).
 TEST(CompileCommand, AccuracyChoosesTheTier) {
-  for (const char* tier : {"fast", "balanced"}) {
+  for (const char* tier : {"fast", "balanced", "reference"}) {
     const fs::path glsl = writeTemp(std::string("tier_") + tier + ".frag", "");
     CommandRun r = mxc("compile " + corpus(kDefault) + " --accuracy " + tier + " --glsl " + glsl.string());
     ASSERT_EQ(r.exitCode, 0) << tier << ": " << r.err;
     const std::string text = readAll(glsl);
-    std::string macro = std::string("#define MXC_ACCURACY_") + (std::string(tier) == "fast" ? "FAST" : "BALANCED");
+    std::string macro = std::string("#define MXC_ACCURACY_") + tier;
+    for (size_t i = macro.size() - std::string(tier).size(); i < macro.size(); ++i) macro[i] = static_cast<char>(std::toupper(static_cast<unsigned char>(macro[i])));
     EXPECT_NE(text.find(macro), std::string::npos) << tier;
     fs::remove(glsl);
   }
@@ -82,9 +84,11 @@ TEST(CompileCommand, AccuracyChoosesTheTier) {
   <surfacematerial name="m" type="material"><input name="surfaceshader" type="surfaceshader" nodename="s" /></surfacematerial>
 </materialx>
 )");
-  double albedo[2] = {0.0, 0.0};
-  for (int k = 0; k < 2; ++k) {
-    CommandRun r = mxc("furnace " + doc.string() + " --angles 1 --samples 65536 --accuracy " + (k == 0 ? "fast" : "balanced"));
+  double albedo[3] = {0.0, 0.0, 0.0};
+  const char* tiers[3] = {"fast", "balanced", "reference"};
+  for (int k = 0; k < 3; ++k) {
+    CommandRun r = mxc("furnace " + doc.string() + " --angles 1 --samples " + (k == 2 ? "4096" : "65536") + " --accuracy " +
+                       tiers[k]);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     nlohmann::json j = nlohmann::json::parse(r.out);
     const nlohmann::json& m = j.contains("materials") ? j["materials"][0] : j;
@@ -92,6 +96,14 @@ TEST(CompileCommand, AccuracyChoosesTheTier) {
   }
   EXPECT_NEAR(albedo[0], 1.0 - std::log(2.0), 0.02);  // physics notes 2.2: E(mu = 1) at roughness 1
   EXPECT_NEAR(albedo[1], 1.0, 0.02);
+  EXPECT_NEAR(albedo[2], 1.0, 1e-4);  // every order of scattering on the microsurface, F = 1
+  // eval on the reference tier averages --reference-samples walks: finite, non-negative.
+  const fs::path dirs = writeTemp("ref_dirs.csv", "0,0,1,0.6,0,0.8\n0.5,0,0.866,-0.5,0,0.866\n");
+  CommandRun e = mxc("eval " + doc.string() + " --dirs " + dirs.string() + " --accuracy reference --reference-samples 64");
+  ASSERT_EQ(e.exitCode, 0) << e.err;
+  EXPECT_NE(e.out.find("material,row,fcos_r"), std::string::npos) << e.out;
+  EXPECT_EQ(e.out.find("nan"), std::string::npos) << e.out;
+  fs::remove(dirs);
   fs::remove(doc);
 }
 

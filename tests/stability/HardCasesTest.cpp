@@ -25,11 +25,21 @@ enum class Energy : uint8_t {
   /// E(wo) = 1 on the tiers with multiple-scattering compensation (balanced), bounded by 1 on
   /// the fast tier, whose single-scattering microfacet lobes lose energy (physics notes 2.2)
   Compensated,
+  /// E(wo) = 1 with light entering a non-absorbing scattering half-space. The reference tier's
+  /// walk there is a random walk whose length has no finite mean (its tail falls as n^-1/2):
+  /// the walks its budget of events cuts (mxc_walk.glsl, MXC_WALK_BUDGET) are lost, under
+  /// kHalfSpaceLoss of the energy; the other tiers see an opaque diffuse and keep 1.
+  LosslessHalfSpace,
 };
+
+/// The reference tier's loss where a walk in a conservative half-space is cut (measured 0.018
+/// with the subsurface_radius_0 case at a budget of 65000 events).
+constexpr float kHalfSpaceLoss = 0.03f;
 
 /// Whether a case's albedo must be 1 on a tier.
 bool lossless(Energy energy, Accuracy accuracy) {
-  return energy == Energy::Lossless || (energy == Energy::Compensated && accuracy != Accuracy::Fast);
+  return energy == Energy::Lossless || (energy == Energy::LosslessHalfSpace && accuracy != Accuracy::Reference) ||
+         (energy == Energy::Compensated && accuracy != Accuracy::Fast);
 }
 
 struct HardCase {
@@ -101,7 +111,7 @@ const HardCase kCases[] = {
    "a tiny depth makes the absorption coefficient huge (-ln c / d); a zero colour makes it infinite"},
   {"thin_walled_transmission", "openpbr", R"(<input name="geometry_thin_walled" type="boolean" value="true" /><input name="transmission_weight" type="float" value="1" /><input name="specular_roughness" type="float" value="0" />)", Energy::Lossless,
    "a thin dielectric sheet: reflected plus passed straight through is 1 (OpenPBR 'Thin-walled mode')"},
-  {"subsurface_radius_0", "openpbr", R"(<input name="subsurface_weight" type="float" value="1" /><input name="subsurface_radius" type="float" value="0" /><input name="subsurface_color" type="color3" value="1, 1, 1" />)", Energy::Lossless,
+  {"subsurface_radius_0", "openpbr", R"(<input name="subsurface_weight" type="float" value="1" /><input name="subsurface_radius" type="float" value="0" /><input name="subsurface_color" type="color3" value="1, 1, 1" />)", Energy::LosslessHalfSpace,
    "zero mean free path: an opaque diffuse of the subsurface colour (OpenPBR 'Subsurface'); white is lossless"},
   {"fuzz_on_black", "openpbr", R"(<input name="fuzz_weight" type="float" value="1" /><input name="base_color" type="color3" value="0, 0, 0" />)", Energy::Bounded,
    "only the fuzz and the specular lobe reflect"},
@@ -196,7 +206,9 @@ TEST_P(HardCases, StayFiniteAndBounded) {
   const double degrees[] = {0, 30, 60, 80, 89, 89.9};
   std::vector<glm::vec3> views;
   for (double d : degrees) views.push_back(viewAt(d));
-  std::vector<rt::Albedo> albedo = furnace(materials[0], views, 32768, {}, accuracy);
+  // The reference tier draws one walk per invocation and dispatch (runtime/Evaluator.h): fewer
+  // samples keep its run short; the bounds below allow for its larger standard errors.
+  std::vector<rt::Albedo> albedo = furnace(materials[0], views, accuracy == Accuracy::Reference ? 2048 : 32768, {}, accuracy);
   ASSERT_EQ(albedo.size(), views.size());
   for (size_t k = 0; k < albedo.size(); ++k) {
     const glm::vec3 e = albedo[k].total();
@@ -211,6 +223,9 @@ TEST_P(HardCases, StayFiniteAndBounded) {
       // from 0 to 1/31) makes the albedo scaling approximate, and only the bound is checked.
       if (lossless(c.energy, accuracy) && degrees[k] <= 80.0) {
         EXPECT_GE(e[ch], 1.0f - slack) << "energy lost at " << degrees[k] << " degrees";
+      }
+      if (c.energy == Energy::LosslessHalfSpace && accuracy == Accuracy::Reference && degrees[k] <= 80.0) {
+        EXPECT_GE(e[ch], 1.0f - kHalfSpaceLoss - slack) << "energy lost at " << degrees[k] << " degrees";
       }
     }
   }

@@ -126,12 +126,13 @@ inline std::vector<std::vector<rt::SampledDirection>> sampleDirections(const ir:
 }
 
 /// f(wo, wi) |cos| and the pdf for direction pairs.
+/// `dispatches` > 1 averages that many (the reference tier's estimate is random).
 inline std::vector<glm::vec4> evaluate(const ir::Material& material, const std::vector<rt::DirectionPair>& pairs,
-                                       Accuracy accuracy = Accuracy::Balanced) {
+                                       Accuracy accuracy = Accuracy::Balanced, uint32_t dispatches = 1) {
   Prepared p = prepare(material, glsl::ShaderKind::Eval, {}, accuracy);
   if (!p.ok()) return {};
   rt::MaterialEvaluator evaluator(Device::get().context, Device::get().tables, *p.resources, p.shader.interface, p.words);
-  return evaluator.evaluate(pairs);
+  return evaluator.evaluate(pairs, dispatches);
 }
 
 /// A view direction at `degrees` from the normal, in the xz plane.

@@ -16,6 +16,10 @@ struct MxcClosure {
   vec3 transparency;  // weight of light passing straight through (opacity < 1)
 };
 
+// The closures of this file are deterministic: the stages' seed is not needed (the reference
+// tier's walk, mxc_walk.glsl, uses it).
+void mxc_closure_seed(uint seed) {}
+
 struct MxcSample {
   vec3 wi;       // world space
   vec3 weight;   // f |cos| / pdf (for a delta lobe: its discrete weight / probability)

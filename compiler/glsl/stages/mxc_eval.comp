@@ -8,6 +8,7 @@ void main() {
   MxcGeometry g = mxc_flat_geometry();
   vec3 wo = mxc_in[2u * i].xyz;
   vec3 wi = mxc_in[2u * i + 1u].xyz;
+  mxc_closure_seed(mxc_pcg(i + mxc_pcg(mxc_batch.counts.z)));
   MxcClosure c;
   mxc_material_closure(g, wo, c);
   mxc_out[i] = vec4(mxc_closure_eval(c, wo, wi), mxc_closure_pdf(c, wo, wi));

@@ -10,11 +10,14 @@ void main() {
   if (a >= mxc_batch.counts.x) return;
   MxcGeometry g = mxc_flat_geometry();
   vec3 wo = mxc_in[a].xyz;
+  uint seed = mxc_pcg(MXC_WORK_GROUP_SIZE * a + t + mxc_pcg(mxc_batch.counts.z));
+  mxc_closure_seed(seed ^ 0x5bd1e995u);
   MxcClosure c;
   mxc_material_closure(g, wo, c);
-  uint seed = mxc_pcg(MXC_WORK_GROUP_SIZE * a + t + mxc_pcg(mxc_batch.counts.z));
   vec3 r = vec3(0.0), tr = vec3(0.0), r2 = vec3(0.0), tr2 = vec3(0.0);
+  uint drawn = 0u;
   for (uint s = 0u; s < mxc_batch.counts.y; ++s) {
+    ++drawn;
     vec3 u = vec3(mxc_uniform(seed), mxc_uniform(seed), mxc_uniform(seed));
     MxcSample smp = mxc_closure_sample(c, wo, u);
     vec3 w = smp.valid ? smp.weight : vec3(0.0);
@@ -26,7 +29,8 @@ void main() {
     tr2 += transmitted * transmitted;
   }
   uint base = 4u * (MXC_WORK_GROUP_SIZE * a + t);
-  mxc_out[base] = vec4(r, 0.0);
+  // w: the samples this invocation drew, which the host checks (a device may cut long loops).
+  mxc_out[base] = vec4(r, float(drawn));
   mxc_out[base + 1u] = vec4(tr, 0.0);
   mxc_out[base + 2u] = vec4(r2, 0.0);
   mxc_out[base + 3u] = vec4(tr2, 0.0);

@@ -67,6 +67,7 @@ void main() {
   g.time = mxc_params.time;
   vec3 wo = mxc_safe_normalize(mxc_view.eye.xyz - vPosition, N);
 
+  mxc_closure_seed(mxc_pcg(uint(gl_FragCoord.x) ^ mxc_pcg(uint(gl_FragCoord.y) + mxc_pcg(uint(mxc_view.counts.z) + 7u))));
   MxcClosure c;
   mxc_material_closure(g, wo, c);
   vec3 radiance = c.emission * mxc_view.environment.y;

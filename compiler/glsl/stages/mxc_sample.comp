@@ -9,9 +9,10 @@ void main() {
   if (a >= mxc_batch.counts.x) return;
   MxcGeometry g = mxc_flat_geometry();
   vec3 wo = mxc_in[a].xyz;
+  uint seed = mxc_pcg(MXC_WORK_GROUP_SIZE * a + t + mxc_pcg(mxc_batch.counts.z));
+  mxc_closure_seed(seed ^ 0x5bd1e995u);
   MxcClosure c;
   mxc_material_closure(g, wo, c);
-  uint seed = mxc_pcg(MXC_WORK_GROUP_SIZE * a + t + mxc_pcg(mxc_batch.counts.z));
   uint base = (MXC_WORK_GROUP_SIZE * a + t) * mxc_batch.counts.y;
   for (uint s = 0u; s < mxc_batch.counts.y; ++s) {
     vec3 u = vec3(mxc_uniform(seed), mxc_uniform(seed), mxc_uniform(seed));
