@@ -215,6 +215,22 @@ TEST(ReferenceWalk, ErrorFallsAsOneOverSqrtN) {
                                  << ", " << std::exp(y[3]);
 }
 
+// An emission layer emits; it neither absorbs nor reflects (OpenPBR "Emission": the emission
+// sits under the coat and fuzz, on the base): the albedo with and without it is the same.
+TEST(ReferenceWalk, EmissionLeavesTheAlbedoAlone) {
+  double albedo[2] = {0.0, 0.0}, error[2] = {0.0, 0.0};
+  for (int k = 0; k < 2; ++k) {
+    Context context;
+    ir::Material m = openPbr(context, input("emission_luminance", "float", k == 0 ? "0" : "100"));
+    std::vector<rt::Albedo> a = furnace(m, {viewAt(30)}, 8192, {}, kReference);
+    ASSERT_EQ(a.size(), 1u);
+    albedo[k] = a[0].total().x;
+    error[k] = a[0].reflectedError.x;
+  }
+  EXPECT_GT(albedo[0], 0.7);
+  expectNear(albedo[1], albedo[0], error[0] + error[1], 1e-3, "with emission");
+}
+
 /// Stratified directions on the upper hemisphere, each standing for 2 pi / count of solid angle.
 std::vector<glm::vec3> hemisphere(int side) {
   std::vector<glm::vec3> out;

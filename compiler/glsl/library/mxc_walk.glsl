@@ -504,7 +504,14 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
       if (!present[k]) {
         // No interface: straight on.
         if (!down) {
-          if (k == 0) return res;  // left the stack upwards with nothing collected here
+          if (k == 0) {  // out of the stack upwards: a reflection
+            if (mode == MXC_WALK_SAMPLE) {
+              res.value = beta;
+              res.wi = w;
+              res.valid = true;
+            }
+            break;
+          }
           k -= 1;
           inMedium = true;
           z = max(c.medium[first + k].y, 0.0);
