@@ -173,26 +173,7 @@ class Walk {
       case ScatterKind::Tint: node(n.a, v_.mul(weight, v_.asVec3(n.weight.value)), above); break;
       case ScatterKind::Emissive: {
         const ir::Emission& e = m_.emissions[n.emission];
-        const Id color = v_.slot(e.slots, Slot::Color, v_.vec3(0.0f));
-        Id shape = v_.constant(1.0f);
-        if (e.kind == ir::Emission::Kind::Conical) {
-          // Inside the cone of half-angle `inner` (degrees) fully, fading to `outer` (MaterialX
-          // conical_edf; its defaults 60 and 0: a hard edge).
-          const ir::Param* normal = e.slots.find(Slot::Normal);
-          shape = v_.local(fmt::format("mxc_cone_falloff(dot({}, wo), {}, {})", normal ? v_.glsl(normal->value) : "g.N",
-                                       v_.glsl(v_.slot(e.slots, Slot::InnerAngle, v_.constant(60.0f))),
-                                       v_.glsl(v_.slot(e.slots, Slot::OuterAngle, v_.constant(0.0f)))),
-                           Type::Float);
-        }
-        std::string directional;
-        if (const ir::Param* f0 = e.slots.find(Slot::F0)) {
-          // MaterialX generalized_schlick_edf: lerp(color0, color90, (1 - cos)^exponent).
-          directional = fmt::format(" * mxc_fresnel_schlick(clamp(dot(g.N, wo), 0.0, 1.0), {}, {}, {})", v_.glsl(f0->value),
-                                    v_.glsl(v_.slot(e.slots, Slot::F90, v_.vec3(1.0f))),
-                                    v_.glsl(v_.slot(e.slots, Slot::Exponent, v_.constant(5.0f))));
-        }
-        out_.lines.add(fmt::format("  c.emission += {}{};", v_.glsl(v_.mul(v_.mul(weight, color), shape)), directional),
-                       e.origin.location);
+        out_.lines.add(fmt::format("  c.emission += {};", emittedRadiance(v_, e, weight)), e.origin.location);
         node(n.a, weight, above);
         break;
       }

@@ -106,6 +106,28 @@ LobeFields mapInterface(ClosureValues& v, const ir::Material& m, const ir::Inter
   return fields;
 }
 
+std::string emittedRadiance(ClosureValues& v, const ir::Emission& e, ClosureValues::Id weight) {
+  const ClosureValues::Id color = v.slot(e.slots, Slot::Color, v.vec3(0.0f));
+  ClosureValues::Id shape = v.constant(1.0f);
+  if (e.kind == ir::Emission::Kind::Conical) {
+    // Inside the cone of half-angle `inner` (degrees) fully, fading to `outer` (MaterialX
+    // conical_edf; its defaults 60 and 0: a hard edge).
+    const ir::Param* normal = e.slots.find(Slot::Normal);
+    shape = v.local(fmt::format("mxc_cone_falloff(dot({}, wo), {}, {})", normal ? v.glsl(normal->value) : "g.N",
+                                v.glsl(v.slot(e.slots, Slot::InnerAngle, v.constant(60.0f))),
+                                v.glsl(v.slot(e.slots, Slot::OuterAngle, v.constant(0.0f)))),
+                    ir::Type::Float);
+  }
+  std::string directional;
+  if (const ir::Param* f0 = e.slots.find(Slot::F0)) {
+    // MaterialX generalized_schlick_edf: lerp(color0, color90, (1 - cos)^exponent).
+    directional = fmt::format(" * mxc_fresnel_schlick(clamp(dot(g.N, wo), 0.0, 1.0), {}, {}, {})", v.glsl(f0->value),
+                              v.glsl(v.slot(e.slots, Slot::F90, v.vec3(1.0f))),
+                              v.glsl(v.slot(e.slots, Slot::Exponent, v.constant(5.0f))));
+  }
+  return v.glsl(v.mul(v.mul(weight, color), shape)) + directional;
+}
+
 void writeLobe(Lines& out, const std::string& name, int index, const LobeFields& fields, SourceLocation at,
                SourceLocation filmAt) {
   out.add(fmt::format("  MxcLobe {};", name), at);

@@ -43,6 +43,11 @@ struct Above {
 LobeFields mapInterface(ClosureValues& values, const ir::Material& material, const ir::Interface& interface,
                         const Above& above, int mode, ClosureValues::Id weight);
 
+/// The GLSL of the radiance an emission sends towards wo, scaled by `weight`: its colour, the
+/// conical falloff and the generalized Schlick factor where it has them. Shared by every tier:
+/// where the emission sits is the tier's; what it emits is not.
+std::string emittedRadiance(ClosureValues& values, const ir::Emission& emission, ClosureValues::Id weight);
+
 /// The GLSL of a lobe's normal: the slot's value normalised, unless it is the geometry's unit
 /// normal (a shading normal from a document need not be unit length: geometry_normal = 0.9,0,0.1).
 std::string unitNormal(const ClosureValues& values, const ir::Material& material, const ir::Param* normal);

@@ -189,25 +189,10 @@ class Walk {
       case ScatterKind::Tint: node(n.a, v_.mul(weight, v_.asVec3(n.weight.value)), std::move(stack), coat); break;
       case ScatterKind::Emissive: {
         const ir::Emission& e = m_.emissions[n.emission];
-        const Id color = v_.slot(e.slots, Slot::Color, v_.vec3(0.0f));
-        Id shape = v_.constant(1.0f);
-        if (e.kind == ir::Emission::Kind::Conical) {
-          const ir::Param* normal = e.slots.find(Slot::Normal);
-          shape = v_.local(fmt::format("mxc_cone_falloff(dot({}, wo), {}, {})", normal ? v_.glsl(normal->value) : "g.N",
-                                       v_.glsl(v_.slot(e.slots, Slot::InnerAngle, v_.constant(60.0f))),
-                                       v_.glsl(v_.slot(e.slots, Slot::OuterAngle, v_.constant(0.0f)))),
-                           Type::Float);
-        }
-        std::string directional;
-        if (const ir::Param* f0 = e.slots.find(Slot::F0)) {
-          directional = fmt::format(" * mxc_fresnel_schlick(clamp(dot(g.N, wo), 0.0, 1.0), {}, {}, {})", v_.glsl(f0->value),
-                                    v_.glsl(v_.slot(e.slots, Slot::F90, v_.vec3(1.0f))),
-                                    v_.glsl(v_.slot(e.slots, Slot::Exponent, v_.constant(5.0f))));
-        }
         // An emitting plane over what is under it; the walk collects it on the way down.
         Layer plane;
         plane.flags = kNoInterface;
-        plane.emitted = v_.glsl(v_.mul(color, shape)) + directional;
+        plane.emitted = emittedRadiance(v_, e, v_.vec3(1.0f));
         plane.at = e.origin.location;
         stack.push_back(std::move(plane));
         if (n.a == ir::kNone || m_.nodes[n.a].kind == ScatterKind::Absorber) {

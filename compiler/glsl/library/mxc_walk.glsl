@@ -501,70 +501,58 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
     if (!inMedium) {
       int lk = first + k;
       if (down && mode == MXC_WALK_EMISSION) res.value += beta * c.emitted[lk];
-      if (!present[k]) {
-        // No interface: straight on.
-        if (!down) {
-          if (k == 0) {  // out of the stack upwards: a reflection
-            if (mode == MXC_WALK_SAMPLE) {
-              res.value = beta;
-              res.wi = w;
-              res.valid = true;
-            }
-            break;
-          }
-          k -= 1;
-          inMedium = true;
-          z = max(c.medium[first + k].y, 0.0);
-          continue;
-        }
+      if (!present[k] && down) {
+        // No interface: straight on into the medium, if the layer is there at all.
         if ((int(c.medium[lk].w) & MXC_LAYER_NO_INTERFACE) == 0) return res;  // an absent layer: nothing under it
         inMedium = true;
         z = 0.0;
         continue;
       }
-      MxcLobe l = c.lobes[lk];
-      l.eta = eta[k];
-      if ((l.kind == MXC_LOBE_EON || l.kind == MXC_LOBE_DIFFUSE || l.kind == MXC_LOBE_BURLEY) && k > 0 && present[k - 1] &&
-          c.lobes[lk - 1].kind == MXC_LOBE_DIELECTRIC) {
-        l.c0 = mxc_gloss_albedo(l.c0, eta[k - 1]);
-      }
-      // Where this vertex connects to: the medium above for wi above, the one below for wi below.
-      vec3 conn = vec3(0.0);
-      vec3 factor = vec3(0.0);
-      // Each path is counted once, at its anchor: its last reflection or medium scattering, whose
-      // own density is evaluated towards the chain of the medium it leaves into; the chain then
-      // samples the transmissions from there to wi. A path of transmissions only is anchored at
-      // its first event, the one crossing from wo. So an interface connects by reflection (back to
-      // the side the light came from), and by transmission only at the walk's first event.
-      bool reflectSide = up == down;  // wi is on the side the light arrived from
-      if (mode == MXC_WALK_EVAL && (reflectSide || firstEvent)) {
-        int m = up ? k - 1 : k;
-        if (up && m < 0) {
-          conn = wi;
-          factor = vec3(1.0);
-        } else if (m >= 0 && any(greaterThan(chainW[m], vec3(0.0)))) {
-          conn = chainDir[m];
-          float cosd = max(abs(dot(conn, ns)), 1e-4);
-          float d = max(c.medium[first + m].y, 0.0);
-          vec3 tr = (up && d > 0.0) ? exp(-(c.sigmaA[first + m] + c.sigmaS[first + m]) * d / cosd) : vec3(1.0);
-          factor = chainW[m] * tr * mxc_sqr(nEnd / nAbs[m]) * (m == exitLayer ? 1.0 : cosWi / cosd);
+      if (present[k]) {
+        MxcLobe l = c.lobes[lk];
+        l.eta = eta[k];
+        if ((l.kind == MXC_LOBE_EON || l.kind == MXC_LOBE_DIFFUSE || l.kind == MXC_LOBE_BURLEY) && k > 0 && present[k - 1] &&
+            c.lobes[lk - 1].kind == MXC_LOBE_DIELECTRIC) {
+          l.c0 = mxc_gloss_albedo(l.c0, eta[k - 1]);
         }
-        if (!up && m != exitLayer && exitLayer >= 0 && m >= 0) {
-          // Going down through a finite medium to where the chain enters it (its bottom).
-          float d = max(c.medium[first + m].y, 0.0);
-          float cosd = max(abs(dot(conn, ns)), 1e-4);
-          if (d > 0.0) factor *= exp(-(c.sigmaA[first + m] + c.sigmaS[first + m]) * d / cosd);
+        // Where this vertex connects to: the medium above for wi above, the one below for wi below.
+        vec3 conn = vec3(0.0);
+        vec3 factor = vec3(0.0);
+        // Each path is counted once, at its anchor: its last reflection or medium scattering, whose
+        // own density is evaluated towards the chain of the medium it leaves into; the chain then
+        // samples the transmissions from there to wi. A path of transmissions only is anchored at
+        // its first event, the one crossing from wo. So an interface connects by reflection (back to
+        // the side the light came from), and by transmission only at the walk's first event.
+        bool reflectSide = up == down;  // wi is on the side the light arrived from
+        if (mode == MXC_WALK_EVAL && (reflectSide || firstEvent)) {
+          int m = up ? k - 1 : k;
+          if (up && m < 0) {
+            conn = wi;
+            factor = vec3(1.0);
+          } else if (m >= 0 && any(greaterThan(chainW[m], vec3(0.0)))) {
+            conn = chainDir[m];
+            float cosd = max(abs(dot(conn, ns)), 1e-4);
+            float d = max(c.medium[first + m].y, 0.0);
+            vec3 tr = (up && d > 0.0) ? exp(-(c.sigmaA[first + m] + c.sigmaS[first + m]) * d / cosd) : vec3(1.0);
+            factor = chainW[m] * tr * mxc_sqr(nEnd / nAbs[m]) * (m == exitLayer ? 1.0 : cosWi / cosd);
+          }
+          if (!up && m != exitLayer && exitLayer >= 0 && m >= 0) {
+            // Going down through a finite medium to where the chain enters it (its bottom).
+            float d = max(c.medium[first + m].y, 0.0);
+            float cosd = max(abs(dot(conn, ns)), 1e-4);
+            if (d > 0.0) factor *= exp(-(c.sigmaA[first + m] + c.sigmaS[first + m]) * d / cosd);
+          }
         }
+        vec3 nee = vec3(0.0);
+        MxcCross x = mxc_walk_interface(l, w, factor != vec3(0.0) ? conn : vec3(0.0), true, nee);
+        res.value += mode == MXC_WALK_EVAL ? beta * nee * factor : vec3(0.0);
+        firstEvent = false;
+        if (!x.valid) break;
+        beta *= x.weight;
+        res.delta = res.delta && x.delta;
+        w = x.w;
       }
-      vec3 nee = vec3(0.0);
-      MxcCross x = mxc_walk_interface(l, w, factor != vec3(0.0) ? conn : vec3(0.0), true, nee);
-      res.value += mode == MXC_WALK_EVAL ? beta * nee * factor : vec3(0.0);
-      firstEvent = false;
-      if (!x.valid) break;
-      beta *= x.weight;
-      res.delta = res.delta && x.delta;
-      w = x.w;
-      if (dot(w, ns) > 0.0) {
+      if (dot(w, ns) > 0.0) {  // upwards: out of the stack (a reflection), or into the medium above
         if (k == 0) {
           if (mode == MXC_WALK_SAMPLE) {
             res.value = beta;
@@ -717,12 +705,4 @@ MxcSample mxc_closure_sample(MxcClosure c, vec3 wo, vec3 u) {
   s.pdf = walk.delta ? 1.0 : mxc_closure_pdf(c, wo, s.wi);
   s.valid = all(lessThan(abs(s.weight), vec3(1e30)));
   return s;
-}
-
-// Transmittance of absorbing media at normal incidence along a direction (shared with the
-// other tiers' signature; the walk does not use it).
-vec3 mxc_absorption(vec3 tau, float eta, float mu) {
-  if (tau == vec3(0.0)) return vec3(1.0);
-  float mut = mxc_safe_sqrt(1.0 - (1.0 - mu * mu) / (eta * eta));  // eta >= 1e-3 (set by the generator)
-  return exp(-tau / max(mut, 0.05));
 }
