@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "cli/AccuracyBench.h"
 #include "cli/CompileCommand.h"
 #include "cli/EvalCommand.h"
 #include "cli/ExitCode.h"
@@ -203,6 +204,39 @@ void registerRender(CLI::App& app, int& exitCode) {
   command->callback([options, &exitCode] { exitCode = runRender(*options); });
 }
 
+void registerBench(CLI::App& app, int& exitCode) {
+  CLI::App* bench = app.add_subcommand("bench", "Measure mxc against itself: 'mxc bench accuracy'");
+  bench->require_subcommand(1);
+  auto options = std::make_shared<AccuracyBenchOptions>();
+  CLI::App* command = bench->add_subcommand(
+      "accuracy",
+      "Every accuracy tier of a set of materials against the reference tier: the error of the directional albedo, "
+      "of f cos and of a rendered sphere, and the cost (ns per evaluation, ms per frame, SPIR-V instructions, the "
+      "reference's time to 1% noise). Writes accuracy.md, accuracy.csv and accuracy.png (error against cost) to "
+      "--report-dir. Takes minutes: the reference is refined until its noise is below the errors it measures");
+  command->add_option("files", options->files,
+                      "Documents (every material of each); default: a fixed set of corpus materials covering coat, "
+                      "fuzz, metal, glass, subsurface, thin film and emission");
+  command->add_option("--corpus", options->corpus, "The corpus folder of the fixed set (default: ../shared/corpus "
+                      "beside the source tree)");
+  command->add_option("--report-dir", options->reportDir, "Folder of the report files (default: generated/reports)");
+  command->add_option("--albedo-walks", options->albedoWalks, "Cap of the reference's walks per view")
+      ->check(CLI::Range(64, 1 << 26));
+  command->add_option("--eval-walks", options->evalWalks, "Cap of the reference's walks per direction pair")
+      ->check(CLI::Range(4, 1 << 22));
+  command->add_option("--image-frames", options->imageFrames, "Cap of the reference image's frames")
+      ->check(CLI::Range(2, 1 << 16));
+  command->add_option("--tier-frames", options->tierFrames, "Frames of the fast and balanced images")
+      ->check(CLI::Range(1, 1 << 16));
+  command->add_option("--image-size", options->imageSize, "Width and height of the error images")
+      ->check(CLI::Range(8, 4096));
+  command->add_option("--frame-size", options->frameSize, "Width and height of the frame-time image")
+      ->check(CLI::Range(8, 4096));
+  addLibraryOptions(*command, options->libraries);
+  addDeviceOptions(*command, options->device);
+  command->callback([options, &exitCode] { exitCode = runAccuracyBench(*options); });
+}
+
 }  // namespace
 
 int runCommandLine(int argc, char** argv) {
@@ -218,6 +252,7 @@ int runCommandLine(int argc, char** argv) {
   registerEval(app, exitCode);
   registerFurnace(app, exitCode);
   registerRender(app, exitCode);
+  registerBench(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

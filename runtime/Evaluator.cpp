@@ -43,7 +43,8 @@ void MaterialKernel::run(const Buffer& in, const Buffer& out, uint32_t groups, u
   kernel_->dispatch(groups, 1, nullptr);
 }
 
-std::vector<glm::vec4> MaterialEvaluator::evaluate(const std::vector<DirectionPair>& pairs, uint32_t dispatches) {
+std::vector<glm::vec4> MaterialEvaluator::evaluate(const std::vector<DirectionPair>& pairs, uint32_t dispatches,
+                                                   uint32_t seed) {
   if (pairs.empty()) return {};
   const size_t n = pairs.size();
   Buffer in = context_.createBuffer(n * 2 * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
@@ -56,7 +57,7 @@ std::vector<glm::vec4> MaterialEvaluator::evaluate(const std::vector<DirectionPa
   dispatches = std::max<uint32_t>(dispatches, 1);
   std::vector<glm::dvec4> sum(n, glm::dvec4(0.0));
   for (uint32_t d = 0; d < dispatches; ++d) {
-    run(in, out, static_cast<uint32_t>((n + kGroup - 1) / kGroup), static_cast<uint32_t>(n), 1, 1 + d);
+    run(in, out, static_cast<uint32_t>((n + kGroup - 1) / kGroup), static_cast<uint32_t>(n), 1, seed + d);
     const auto* values = static_cast<const glm::vec4*>(out.mapped);
     for (size_t i = 0; i < n; ++i) sum[i] += glm::dvec4(values[i]);
   }

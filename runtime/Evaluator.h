@@ -56,8 +56,10 @@ class MaterialEvaluator : MaterialKernel {
   using MaterialKernel::MaterialKernel;
   /// Per pair: rgb = f(wo, wi) |wi.z|, a = the pdf of sampling wi from wo. `dispatches` > 1
   /// averages that many dispatches with different seeds (the reference tier's estimate of f cos
-  /// is random; the other tiers' is not, and they use 1).
-  std::vector<glm::vec4> evaluate(const std::vector<DirectionPair>& pairs, uint32_t dispatches = 1);
+  /// is random; the other tiers' is not, and they use 1). Dispatch d uses the seed `seed + d`:
+  /// calls whose seed ranges do not overlap are independent estimates.
+  std::vector<glm::vec4> evaluate(const std::vector<DirectionPair>& pairs, uint32_t dispatches = 1,
+                                  uint32_t seed = 1);
 };
 
 /// The directional albedo at one view direction, split into reflected (wi.z > 0) and

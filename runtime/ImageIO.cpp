@@ -94,16 +94,24 @@ std::variant<RgbaImage, std::string> readImage(const std::filesystem::path& path
 }
 
 std::variant<std::string, std::string> encodeImage(const std::filesystem::path& path, const RgbaImage& image,
-                                                   float exposure) {
+                                                   float exposure, ToneMapping tone) {
   using Result = std::variant<std::string, std::string>;
   std::string error;
   const ImageCodec* c = codec(error);
   if (!c) return Result(std::in_place_index<1>, fmt::format("cannot write '{}': {}", path.string(), error));
-  auto encoded = c->encode(lowerExtension(path), image, exposure);
+  auto encoded = c->encode(lowerExtension(path), image, exposure, tone);
   if (auto* why = std::get_if<1>(&encoded)) {
     return Result(std::in_place_index<1>, fmt::format("cannot write '{}': {}", path.string(), *why));
   }
   return encoded;
+}
+
+std::optional<std::string> drawText(RgbaImage& image, int x, int y, const std::string& text, int size,
+                                    const float rgb[3], bool centred) {
+  std::string error;
+  const ImageCodec* c = codec(error);
+  if (!c) return fmt::format("cannot draw text: {}", error);
+  return c->drawText(image, x, y, text, size, rgb, centred);
 }
 
 std::optional<std::string> loadImageModule() {

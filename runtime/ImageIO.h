@@ -43,11 +43,23 @@ struct ImageReadOptions {
 std::variant<RgbaImage, std::string> readImage(const std::filesystem::path& path, const ImageReadOptions& options = {},
                                                std::vector<std::string>* warnings = nullptr);
 
+/// How 8-bit formats map linear values to code values.
+enum class ToneMapping : uint8_t {
+  Filmic,   ///< scene-referred radiance: `tonemap` below, then sRGB (rendered images)
+  Display,  ///< display-referred values in [0, 1] (a plot): clamped, then sRGB
+};
+
 /// The bytes of an image file in the format of `path`'s extension. `.exr`: linear half floats
-/// with alpha. Other formats: RGB tone-mapped with `exposure` (in stops) and encoded as sRGB, 8
-/// bits. Returns an error message instead.
+/// with alpha. Other formats: RGB scaled by `exposure` (in stops), mapped by `tone` and encoded
+/// as sRGB, 8 bits. Returns an error message instead.
 std::variant<std::string, std::string> encodeImage(const std::filesystem::path& path, const RgbaImage& image,
-                                                   float exposure = 0.0f);
+                                                   float exposure = 0.0f, ToneMapping tone = ToneMapping::Filmic);
+
+/// Text drawn into `image` with OpenImageIO's renderer and the DejaVu Sans font (Debian's
+/// fonts-dejavu-core): `x` is the left edge, or the centre when `centred`; `y` the baseline;
+/// `size` the font size in pixels; `rgb` linear. Returns why it could not be drawn instead.
+std::optional<std::string> drawText(RgbaImage& image, int x, int y, const std::string& text, int size,
+                                    const float rgb[3], bool centred = false);
 
 /// Loads the image module (OpenImageIO) now: nullopt, or why it cannot be loaded. A command
 /// that writes images calls it before long work, so a missing module is known at once.
@@ -69,9 +81,13 @@ struct ImageCodec {
   /// opened by `path`, which the caller has checked is a regular file).
   std::variant<RgbaImage, std::string> (*read)(const std::filesystem::path& path, const std::string& bytes,
                                                const ImageReadOptions& options, std::vector<std::string>& warnings);
-  std::variant<std::string, std::string> (*encode)(const std::string& extension, const RgbaImage& image, float exposure);
+  std::variant<std::string, std::string> (*encode)(const std::string& extension, const RgbaImage& image, float exposure,
+                                                   ToneMapping tone);
   /// nullopt when `extension` (".png") can be encoded, else why not.
   std::optional<std::string> (*writable)(const std::string& extension);
+  /// drawText above.
+  std::optional<std::string> (*drawText)(RgbaImage& image, int x, int y, const std::string& text, int size,
+                                         const float rgb[3], bool centred);
 };
 
 /// The sRGB transfer function, decoded (IEC 61966-2-1): texture values to linear.

@@ -12,6 +12,8 @@
 
 #include <fmt/format.h>
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
 #include "runtime/ImageIO.h"
@@ -144,7 +146,8 @@ std::optional<std::string> writable(const std::string& extension) {
   return fmt::format("mxc does not write the '{}' format (it writes {})", extension, known);
 }
 
-std::variant<std::string, std::string> encode(const std::string& extension, const RgbaImage& image, float exposure) {
+std::variant<std::string, std::string> encode(const std::string& extension, const RgbaImage& image, float exposure,
+                                              ToneMapping tone) {
   using Result = std::variant<std::string, std::string>;
   if (auto why = writable(extension)) return Result(std::in_place_index<1>, *why);
   std::vector<unsigned char> buffer;
@@ -171,7 +174,8 @@ std::variant<std::string, std::string> encode(const std::string& extension, cons
     std::vector<uint8_t> bytes(count * 3);
     for (size_t i = 0; i < count; ++i) {
       for (int c = 0; c < 3; ++c) {
-        const float v = linearToSrgb(tonemap(image.pixels[i * 4 + c] * scale));
+        const float linear = image.pixels[i * 4 + c] * scale;
+        const float v = linearToSrgb(tone == ToneMapping::Filmic ? tonemap(linear) : linear);  // clamps to [0, 1]
         bytes[i * 3 + c] = static_cast<uint8_t>(std::lround(v * 255.0f));
       }
     }
@@ -185,7 +189,25 @@ std::variant<std::string, std::string> encode(const std::string& extension, cons
   return Result(std::in_place_index<0>, std::string(buffer.begin(), buffer.end()));
 }
 
-const ImageCodec kCodec{read, encode, writable};
+std::optional<std::string> drawText(RgbaImage& image, int x, int y, const std::string& text, int size,
+                                    const float rgb[3], bool centred) {
+  // The image's own pixels, wrapped: OpenImageIO draws into them in place.
+  OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::FLOAT);
+  OIIO::ImageBuf buffer(spec, image.pixels.data());
+  const float color[4] = {rgb[0], rgb[1], rgb[2], 1.0f};
+  // By name, found on OpenImageIO's font path (/usr/share/fonts/truetype/...); its default font
+  // is not installed by Debian.
+  if (!OIIO::ImageBufAlgo::render_text(buffer, x, y, text, size, "DejaVuSans", color,
+                                       centred ? OIIO::ImageBufAlgo::TextAlignX::Center
+                                               : OIIO::ImageBufAlgo::TextAlignX::Left)) {
+    const std::string why = buffer.geterror();
+    return fmt::format("cannot draw text with the font DejaVuSans (Debian's fonts-dejavu-core): {}",
+                       why.empty() ? "no reason given" : why);
+  }
+  return std::nullopt;
+}
+
+const ImageCodec kCodec{read, encode, writable, drawText};
 
 }  // namespace
 }  // namespace mxc::rt

@@ -309,9 +309,10 @@ RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& verte
   RenderResult result;
   double totalMs = 0.0;
   const uint32_t frames = std::max(s.frames, 1u);
-  for (uint32_t frame = 0; frame < frames; ++frame) {
+  for (uint32_t drawn = 0; drawn < frames; ++drawn) {
+    const uint32_t frame = s.firstFrame + drawn;
     // Sub-pixel offset in [-0.5, 0.5) pixels, in normalised device units (2 / size per pixel);
-    // the first frame samples pixel centres.
+    // frame 0 samples pixel centres.
     const float jx = frame == 0 ? 0.0f : halton(frame, 2) - 0.5f;
     const float jy = frame == 0 ? 0.0f : halton(frame, 3) - 0.5f;
     // The jitter is a translation in clip space, applied before the perspective divide
@@ -346,8 +347,8 @@ RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& verte
       vkCmdEndRenderPass(cmd);
     });
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (frame > 0 || frames == 1) totalMs += ms;  // the first frame also warms caches up
-    if (progress) progress(frame + 1);
+    if (drawn > 0 || frames == 1) totalMs += ms;  // the first frame also warms caches up
+    if (progress) progress(drawn + 1);
   }
   result.msPerFrame = totalMs / double(frames > 1 ? frames - 1 : 1);
   std::vector<float> sum = context_.download(f.color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);

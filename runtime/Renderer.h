@@ -41,6 +41,9 @@ struct RenderSettings {
   uint32_t width = 512;
   uint32_t height = 512;
   uint32_t frames = 64;           ///< accumulated frames, each with its own sub-pixel jitter
+  /// The index of the first frame: frames firstFrame .. firstFrame + frames - 1 are drawn, each
+  /// with that index's jitter and random numbers, so renders of disjoint ranges are independent.
+  uint32_t firstFrame = 0;
   uint32_t samplesPerFrame = 1;   ///< environment samples per pixel and frame
   Environment environment = Environment::Sky;
   float environmentIntensity = 1.0f;
