@@ -49,8 +49,8 @@ enum class ToneMapping : uint8_t {
   Display,  ///< display-referred values in [0, 1] (a plot): clamped, then sRGB
 };
 
-/// The bytes of an image file in the format of `path`'s extension. `.exr`: linear half floats
-/// with alpha. Other formats: RGB scaled by `exposure` (in stops), mapped by `tone` and encoded
+/// The bytes of an image file in the format of `path`'s extension. `.exr`: linear 32-bit floats
+/// with alpha (ZIP-compressed), every finite value kept as it is. Other formats: RGB scaled by `exposure` (in stops), mapped by `tone` and encoded
 /// as sRGB, 8 bits. Returns an error message instead.
 std::variant<std::string, std::string> encodeImage(const std::filesystem::path& path, const RgbaImage& image,
                                                    float exposure = 0.0f, ToneMapping tone = ToneMapping::Filmic);

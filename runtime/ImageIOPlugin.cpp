@@ -158,7 +158,9 @@ std::variant<std::string, std::string> encode(const std::string& extension, cons
   const size_t count = size_t(image.width) * image.height;
   bool ok = false;
   if (extension == ".exr") {
-    OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::HALF);
+    // 32-bit float: half's largest value, 65504, is below what a render can hold (a light
+    // bulb's emission, a firefly), and a half file would turn it into Inf.
+    OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::FLOAT);
     spec.attribute("compression", "zip");
     ok = output->open(name, spec) && output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
   } else if (extension == ".hdr") {
