@@ -195,7 +195,7 @@ void registerRender(CLI::App& app, int& exitCode) {
       ->check(finiteNumber(true));
   command->add_option("--emission-scale", options->emissionScale, "Radiance per unit of emission")
       ->check(finiteNumber(true));
-  command->add_option("--exposure", options->exposure, "Exposure of 8-bit outputs, in stops")->check(finiteNumber(false))
+  command->add_option("--exposure", options->exposure, "Exposure of 8-bit outputs, in stops: scales the rendered radiance, not the --background colour")->check(finiteNumber(false))
       ->check(CLI::Range(-64.0, 64.0));
   command->add_option("--background", options->background, "Background of 8-bit outputs, linear R,G,B");
   command->add_option("--mesh", options->mesh, "sphere, plane, or an .obj file");

@@ -181,13 +181,15 @@ int runRender(const RenderOptions& options) {
         const auto path = perMaterialPath(output, material.name, several);
         rt::RgbaImage pixels = image.image;
         if (path.extension() != ".exr") {
-          // 8-bit outputs get the background under what the surface does not cover.
+          // 8-bit outputs: the exposure scales the rendered radiance (a camera's), then the
+          // background goes under what the surface does not cover, as the constant colour it is.
+          const float scale = std::exp2(options.exposure);  // |exposure| <= 64: finite, > 0
           for (size_t i = 0; i < pixels.pixels.size(); i += 4) {
             const float uncovered = 1.0f - std::clamp(pixels.pixels[i + 3], 0.0f, 1.0f);
-            for (int c = 0; c < 3; ++c) pixels.pixels[i + c] += uncovered * background[c];
+            for (int c = 0; c < 3; ++c) pixels.pixels[i + c] = scale * pixels.pixels[i + c] + uncovered * background[c];
           }
         }
-        auto encoded = rt::encodeImage(path, pixels, options.exposure);
+        auto encoded = rt::encodeImage(path, pixels);
         std::optional<std::string> error;
         if (auto* why = std::get_if<1>(&encoded)) error = *why;
         if (!error) error = outputs.stage(path, std::move(std::get<0>(encoded)));

@@ -175,5 +175,27 @@ TEST(RenderCommand, WritesAFiniteImage) {
   EXPECT_FALSE(fs::exists(exr));
 }
 
+// --exposure scales the rendered radiance of an 8-bit output, not the constant background under
+// it: the corner keeps the background's code value, the lit sphere gets brighter.
+TEST(RenderCommand, ExposureScalesTheRenderNotTheBackground) {
+  auto render = [](const std::string& exposure) {
+    const fs::path png = writeTemp("exposure" + exposure + ".png", "");
+    CommandRun r = mxc("render " + corpus(kDefault) + " -o " + png.string() +
+                       " --size 32 --spp 1 --env sky --background 0.5,0.5,0.5 --exposure " + exposure);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    auto image = rt::readImage(png);
+    fs::remove(png);
+    EXPECT_TRUE(std::holds_alternative<rt::RgbaImage>(image));
+    return std::holds_alternative<rt::RgbaImage>(image) ? std::get<rt::RgbaImage>(image) : rt::RgbaImage{};
+  };
+  const rt::RgbaImage plain = render("0"), brighter = render("1.5");
+  ASSERT_EQ(plain.width, 32u);
+  ASSERT_EQ(brighter.width, 32u);
+  // The background as 8-bit outputs encode it: tone curve, then sRGB.
+  const float background = rt::linearToSrgb(rt::tonemap(0.5f));
+  for (const rt::RgbaImage* img : {&plain, &brighter}) EXPECT_NEAR(img->at(0, 0)[1], background, 1.0f / 255.0f);
+  EXPECT_GT(brighter.at(16, 16)[1], plain.at(16, 16)[1] + 0.05f);
+}
+
 }  // namespace
 }  // namespace mxc::test
