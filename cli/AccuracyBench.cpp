@@ -1,6 +1,7 @@
 #include "cli/AccuracyBench.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -209,8 +210,16 @@ class TierRun {
   }
   int status() const { return status_; }
   const ir::Material& material() { return pipeline_.materials().at(0); }
-  std::optional<MaterialProgram> program(rt::VulkanContext& context, glsl::ShaderKind kind) {
-    return prepareMaterial(pipeline_, session_, context, material(), kind);
+  /// The furnace, eval and raster programs; nullopt when one does not compile (printed).
+  std::optional<std::array<MaterialProgram, 3>> programs(rt::VulkanContext& context) {
+    std::array<MaterialProgram, 3> out;
+    const glsl::ShaderKind kinds[3] = {glsl::ShaderKind::Furnace, glsl::ShaderKind::Eval, glsl::ShaderKind::Raster};
+    for (int k = 0; k < 3; ++k) {
+      auto p = prepareMaterial(pipeline_, session_, context, material(), kinds[k]);
+      if (!p) return std::nullopt;
+      out[k] = std::move(*p);
+    }
+    return out;
   }
 
  private:
@@ -254,10 +263,10 @@ struct TierEstimates {
   TierFigures figures;
 };
 
-/// The cost figures: ns per evaluation, ms per frame, instruction count.
-void measureCost(BenchContext& bench, const MaterialProgram& eval, const MaterialProgram& raster,
+/// The cost figures: ns per evaluation (with the tier's evaluator, already built: a pipeline
+/// takes seconds on lavapipe), ms per frame, instruction count.
+void measureCost(BenchContext& bench, rt::MaterialEvaluator& evaluator, const MaterialProgram& raster,
                  TierFigures& figures, bool reference) {
-  rt::MaterialEvaluator evaluator(bench.context, bench.tables, *eval.resources, eval.shader.interface, eval.spirv);
   std::vector<rt::DirectionPair> many;
   while (many.size() < (size_t{1} << 16)) many.insert(many.end(), bench.pairs.begin(), bench.pairs.end());
   double best = std::numeric_limits<double>::infinity();
@@ -281,27 +290,26 @@ void log(const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); 
 std::optional<TierEstimates> measureTier(BenchContext& bench, const BenchMaterial& m, Accuracy tier) {
   TierRun run(m, tier, bench.options);
   if (run.status() != kOk) return std::nullopt;
-  auto furnace = run.program(bench.context, glsl::ShaderKind::Furnace);
-  auto eval = run.program(bench.context, glsl::ShaderKind::Eval);
-  auto raster = run.program(bench.context, glsl::ShaderKind::Raster);
-  if (!furnace || !eval || !raster) return std::nullopt;
+  auto programs = run.programs(bench.context);
+  if (!programs) return std::nullopt;
+  auto& [furnace, eval, raster] = *programs;
   TierEstimates out;
   out.figures.tier = tier;
-  rt::FurnaceEstimator estimator(bench.context, bench.tables, *furnace->resources, furnace->shader.interface,
-                                 furnace->spirv);
+  rt::FurnaceEstimator estimator(bench.context, bench.tables, *furnace.resources, furnace.shader.interface,
+                                 furnace.spirv);
   for (const rt::Albedo& a : estimator.estimate(bench.views, 1u << 20, 1)) {
     out.albedo.push_back(luminance(a.total()));
     out.albedoError.push_back(luminance(a.reflectedError) + luminance(a.transmittedError));
   }
-  rt::MaterialEvaluator evaluator(bench.context, bench.tables, *eval->resources, eval->shader.interface, eval->spirv);
+  rt::MaterialEvaluator evaluator(bench.context, bench.tables, *eval.resources, eval.shader.interface, eval.spirv);
   std::vector<double> fcos;
   for (const glm::vec4& v : evaluator.evaluate(bench.pairs)) fcos.push_back(luminance(glm::vec3(v)));
   out.fcos.add(std::move(fcos), 1.0);
   const uint32_t size = uint32_t(bench.options.imageSize);
-  rt::RenderResult image = bench.renderer.render(bench.sphere, *raster->resources, raster->shader.interface,
-                                                 raster->spirv, sceneSettings(size, uint32_t(bench.options.tierFrames), false));
+  rt::RenderResult image = bench.renderer.render(bench.sphere, *raster.resources, raster.shader.interface,
+                                                 raster.spirv, sceneSettings(size, uint32_t(bench.options.tierFrames), false));
   out.image.add(blockLuminance(image.image), 1.0);
-  measureCost(bench, *eval, *raster, out.figures, false);
+  measureCost(bench, evaluator, raster, out.figures, false);
   return out;
 }
 
@@ -325,10 +333,9 @@ std::optional<MaterialFigures> measureMaterial(BenchContext& bench, const BenchM
 
   TierRun run(m, Accuracy::Reference, o);
   if (run.status() != kOk) return std::nullopt;
-  auto furnace = run.program(bench.context, glsl::ShaderKind::Furnace);
-  auto eval = run.program(bench.context, glsl::ShaderKind::Eval);
-  auto raster = run.program(bench.context, glsl::ShaderKind::Raster);
-  if (!furnace || !eval || !raster) return std::nullopt;
+  auto programs = run.programs(bench.context);
+  if (!programs) return std::nullopt;
+  auto& [furnace, eval, raster] = *programs;
   MaterialFigures out;
   out.name = m.name;
   out.source = m.file.filename().string();
@@ -340,8 +347,8 @@ std::optional<MaterialFigures> measureMaterial(BenchContext& bench, const BenchM
   // The albedo: the furnace's own standard errors, combined over rounds of n_r walks per view
   // as SE^2 = sum n_r^2 SE_r^2 / N^2.
   {
-    rt::FurnaceEstimator estimator(bench.context, bench.tables, *furnace->resources, furnace->shader.interface,
-                                   furnace->spirv);
+    rt::FurnaceEstimator estimator(bench.context, bench.tables, *furnace.resources, furnace.shader.interface,
+                                   furnace.spirv);
     const size_t views = bench.views.size();
     std::vector<double> sum(views, 0.0), variance(views, 0.0);
     uint32_t total = 0, next = std::min<uint32_t>(uint32_t(o.albedoWalks), 16384), round = 0;
@@ -373,9 +380,8 @@ std::optional<MaterialFigures> measureMaterial(BenchContext& bench, const BenchM
   }
 
   // f cos: batches of walks per pair, seeds disjoint (dispatch d of a batch has seed first + d).
+  rt::MaterialEvaluator evaluator(bench.context, bench.tables, *eval.resources, eval.shader.interface, eval.spirv);
   {
-    rt::MaterialEvaluator evaluator(bench.context, bench.tables, *eval->resources, eval->shader.interface,
-                                    eval->spirv);
     BatchEstimate estimate;
     // The pairs repeated kReplicas times in one dispatch: a dispatch of 52 invocations would
     // leave the device idle. Every invocation has its own random stream.
@@ -422,8 +428,8 @@ std::optional<MaterialFigures> measureMaterial(BenchContext& bench, const BenchM
     auto batch = [&](uint32_t frames) {
       rt::RenderSettings s = sceneSettings(size, frames, false);
       s.firstFrame = next;
-      rt::RenderResult r = bench.renderer.render(bench.sphere, *raster->resources, raster->shader.interface,
-                                                 raster->spirv, s);
+      rt::RenderResult r = bench.renderer.render(bench.sphere, *raster.resources, raster.shader.interface,
+                                                 raster.spirv, s);
       next += frames;
       ms += r.msPerFrame * frames;
       estimate.add(blockLuminance(r.image), frames);
@@ -448,7 +454,7 @@ std::optional<MaterialFigures> measureMaterial(BenchContext& bench, const BenchM
     out.reference.imageFrames = next;
     out.reference.imageSeconds = ms / 1000.0;
   }
-  measureCost(bench, *eval, *raster, ref, true);
+  measureCost(bench, evaluator, raster, ref, true);
   for (TierEstimates& t : tiers) out.tiers.push_back(t.figures);
   out.tiers.push_back(ref);
   return out;
