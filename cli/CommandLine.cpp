@@ -179,25 +179,31 @@ void registerRender(CLI::App& app, int& exitCode) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* command = app.add_subcommand(
       "render",
-      "Render each material on a sphere: lights evaluated exactly, the environment integrated by Monte Carlo "
-      "over --spp frames. .exr: linear radiance with coverage alpha; .png (and other 8-bit formats): tone-mapped "
-      "(ACES fit), sRGB, over --background. With several materials, file names get _<material>");
+      "Render each material on a sphere: lights evaluated exactly, the environment (analytic, or an HDR image "
+      "importance-sampled with MIS) integrated by Monte Carlo over --spp frames. .exr: linear radiance with "
+      "coverage alpha; .png (and other 8-bit formats): tone-mapped (ACES fit), sRGB, over --background or the "
+      "environment image. With several materials, file names get _<material>");
   command->add_option("file", options->file, "The .mtlx document")->required();
   command->add_option("-o,--output", options->outputs, "Output image (.png, .exr, .jpg, ...); repeatable")->required();
   command->add_option("--size", options->size, "Width and height in pixels")->check(CLI::Range(8, 8192));
   command->add_option("--spp", options->spp, "Samples (frames) per pixel")->check(CLI::Range(1, 1 << 20));
   command->add_option("--light", options->lights,
                       "dir:X,Y,Z[:INTENSITY[:R,G,B]] (towards the light) or point:X,Y,Z[:INTENSITY[:R,G,B]]; "
-                      "repeatable, up to 8; 'none' for no light (default: dir:-1,1.2,1.5:2)");
-  command->add_option("--env", options->environment, "Environment: none, white (the furnace) or sky")
-      ->check(CLI::IsMember({"none", "white", "sky"}));
+                      "repeatable, up to 8; 'none' for no light (default: dir:-1,1.2,1.5:2, none with an --env image)");
+  command->add_option("--env", options->environment,
+                      "Environment: none, white (the furnace), sky (analytic), or an equirectangular HDR image "
+                      "(.exr, .hdr, ...: importance-sampled, and the background unless --background is given)");
   command->add_option("--env-intensity", options->environmentIntensity, "Environment radiance scale")
       ->check(finiteNumber(true));
+  command->add_option("--env-rotation", options->environmentRotation,
+                      "Turn of the environment image about +y, in degrees (counter-clockwise seen from above)")
+      ->check(finiteNumber(false));
   command->add_option("--emission-scale", options->emissionScale, "Radiance per unit of emission")
       ->check(finiteNumber(true));
   command->add_option("--exposure", options->exposure, "Exposure of 8-bit outputs, in stops: scales the rendered radiance, not the --background colour")->check(finiteNumber(false))
       ->check(CLI::Range(-64.0, 64.0));
-  command->add_option("--background", options->background, "Background of 8-bit outputs, linear R,G,B");
+  command->add_option("--background", options->background,
+                      "Background of 8-bit outputs, linear R,G,B (default: the environment image, else 0.05,0.05,0.05)");
   command->add_option("--mesh", options->mesh, "sphere, plane, or an .obj file");
   addMaterialOptions(*command, options->materials);
   addDeviceOptions(*command, options->device);

@@ -11,6 +11,7 @@
 #include "cli/MaterialPipeline.h"
 #include "cli/OutputSet.h"
 #include "compiler/glsl/Contract.h"
+#include "runtime/EnvironmentMap.h"
 #include "runtime/ImageIO.h"
 #include "runtime/Renderer.h"
 
@@ -83,13 +84,18 @@ int runRender(const RenderOptions& options) {
   rt::RenderSettings settings;
   settings.width = settings.height = static_cast<uint32_t>(options.size);
   settings.frames = static_cast<uint32_t>(options.spp);
+  const bool environmentImage = options.environment != "none" && options.environment != "white" &&
+                                options.environment != "sky";
   settings.environment = options.environment == "none"    ? rt::Environment::None
                          : options.environment == "white" ? rt::Environment::White
-                                                          : rt::Environment::Sky;
+                         : options.environment == "sky"   ? rt::Environment::Sky
+                                                          : rt::Environment::Map;
   settings.environmentIntensity = options.environmentIntensity;
+  settings.environmentRotation = options.environmentRotation;
   settings.emissionScale = options.emissionScale;
-  if (options.lights.empty()) {
-    // The default key light: from the upper left, in front.
+  if (options.lights.empty() && !environmentImage) {
+    // The default key light: from the upper left, in front. An environment image is its own
+    // lighting, as in a look-development viewer.
     settings.lights.push_back({rt::Light::Kind::Directional, glm::normalize(glm::vec3(-1.0f, 1.2f, 1.5f)), glm::vec3(1.0f), 2.0f});
   }
   for (const std::string& text : options.lights) {
@@ -106,9 +112,13 @@ int runRender(const RenderOptions& options) {
     std::fprintf(stderr, "error: at most %u lights\n", glsl::kMaxLights);
     return kUsage;
   }
+  // The background: a constant colour under 8-bit outputs, or the environment image behind the
+  // mesh under every output (it is radiance, like the render).
   std::vector<float> background;
-  if (!parseNumbers(options.background, 3, background)) {
-    std::fprintf(stderr, "error: --background %s: expected R,G,B\n", options.background.c_str());
+  const bool imageBackground = environmentImage && options.background.empty();
+  const std::string backgroundText = options.background.empty() ? kDefaultBackground : options.background;
+  if (!parseNumbers(backgroundText, 3, background)) {
+    std::fprintf(stderr, "error: --background %s: expected R,G,B\n", backgroundText.c_str());
     return kUsage;
   }
   // Everything that can be refused is refused before the render: the image module, the
@@ -151,9 +161,25 @@ int runRender(const RenderOptions& options) {
   if (options.mesh != "sphere" && options.mesh != "plane" && printError(outputs.checkNotInput(options.mesh, "the mesh"))) {
     return kUsage;
   }
+  if (environmentImage && printError(outputs.checkNotInput(options.environment, "the environment image"))) {
+    return kUsage;
+  }
   Device device(options.device);
   rt::AlbedoTables* tables = device.tables();
   if (!tables) return kInvalidDocument;
+  std::unique_ptr<rt::EnvironmentMap> environment;
+  if (environmentImage) {
+    std::vector<std::string> warnings;
+    auto read = rt::EnvironmentMap::read(options.environment, device.context()->maxImageDimension2D(), warnings);
+    for (const std::string& w : warnings) std::fprintf(stderr, "warning: --env %s\n", w.c_str());
+    if (auto* why = std::get_if<std::string>(&read)) {
+      std::fprintf(stderr, "error: --env %s\n", why->c_str());
+      return kInvalidDocument;
+    }
+    environment = std::make_unique<rt::EnvironmentMap>(*device.context(), std::move(std::get<rt::RgbaImage>(read)));
+    settings.environmentMap = environment.get();
+  }
+  const rt::RgbaImage behind = imageBackground ? rt::renderBackground(settings) : rt::RgbaImage{};
   int result = kOk;
   std::vector<std::string> wrote;
   try {
@@ -180,7 +206,19 @@ int runRender(const RenderOptions& options) {
       for (const std::string& output : options.outputs) {
         const auto path = perMaterialPath(output, material.name, several);
         rt::RgbaImage pixels = image.image;
-        if (path.extension() != ".exr") {
+        // Linear formats hold radiance as rendered; 8-bit ones get the exposure (rt::encodeImage).
+        const bool linear = path.extension() == ".exr" || path.extension() == ".hdr";
+        if (imageBackground) {
+          // The environment behind the mesh, under what the surface does not cover; alpha stays
+          // the coverage. 8-bit outputs scale the whole radiance by the exposure.
+          const float scale = linear ? 1.0f : std::exp2(options.exposure);  // |exposure| <= 64: finite, > 0
+          for (size_t i = 0; i < pixels.pixels.size(); i += 4) {
+            const float uncovered = 1.0f - std::clamp(pixels.pixels[i + 3], 0.0f, 1.0f);
+            for (int c = 0; c < 3; ++c) {
+              pixels.pixels[i + c] = scale * (pixels.pixels[i + c] + uncovered * behind.pixels[i + c]);
+            }
+          }
+        } else if (!linear) {
           // 8-bit outputs: the exposure scales the rendered radiance (a camera's), then the
           // background goes under what the surface does not cover, as the constant colour it is.
           const float scale = std::exp2(options.exposure);  // |exposure| <= 64: finite, > 0

@@ -17,15 +17,20 @@ struct RenderOptions {
   int size = 512;
   int spp = 64;
   std::vector<std::string> lights;
-  std::string environment = "sky";
+  std::string environment = "sky";  ///< none, white, sky, or an image file
   float environmentIntensity = 1.0f;
+  float environmentRotation = 0.0f;  ///< degrees about +y
   float emissionScale = 1.0f;
   float exposure = 0.0f;
-  std::string background = "0.05,0.05,0.05";
+  /// Linear R,G,B; empty: the environment image where there is one, else kDefaultBackground.
+  std::string background;
   std::string mesh = "sphere";
   MaterialOptions materials;
   DeviceOptions device;
 };
+
+/// The background of 8-bit outputs when the environment is not an image and none is given.
+inline constexpr const char* kDefaultBackground = "0.05,0.05,0.05";
 
 int runRender(const RenderOptions& options);
 

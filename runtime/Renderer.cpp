@@ -1,7 +1,9 @@
 #include "runtime/Renderer.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
@@ -21,6 +23,7 @@ glsl::EnvironmentCode environmentCode(Environment e) {
     case Environment::None: return glsl::EnvironmentCode::None;
     case Environment::White: return glsl::EnvironmentCode::White;
     case Environment::Sky: return glsl::EnvironmentCode::Sky;
+    case Environment::Map: return glsl::EnvironmentCode::Map;
   }
   return glsl::EnvironmentCode::None;
 }
@@ -183,11 +186,40 @@ VkPipeline createPipeline(VkDevice device, VkRenderPass pass, VkPipelineLayout l
 
 }  // namespace
 
+RgbaImage renderBackground(const RenderSettings& s) {
+  RgbaImage out{s.width, s.height, std::vector<float>(size_t{s.width} * s.height * 4, 0.0f)};
+  for (size_t i = 3; i < out.pixels.size(); i += 4) out.pixels[i] = 1.0f;
+  if (s.environment != Environment::Map || !s.environmentMap) return out;
+  // The camera of draw(): a right-handed view, vertical field of view, row 0 at the top.
+  const glm::vec3 forward = glm::normalize(s.camera.target - s.camera.eye);
+  const glm::vec3 right = glm::normalize(glm::cross(forward, s.camera.up));
+  const glm::vec3 up = glm::cross(right, forward);
+  const float tanHalf = std::tan(glm::radians(s.camera.fovDegrees) * 0.5f);
+  const float aspect = float(s.width) / float(s.height);
+  const float rotation = glm::radians(s.environmentRotation);
+  const RgbaImage& radiance = s.environmentMap->radiance();
+  for (uint32_t y = 0; y < s.height; ++y) {
+    for (uint32_t x = 0; x < s.width; ++x) {
+      glm::vec3 sum(0.0f);
+      for (int k = 0; k < 4; ++k) {
+        const float px = (float(x) + 0.25f + 0.5f * float(k % 2)) / float(s.width) * 2.0f - 1.0f;
+        const float py = 1.0f - (float(y) + 0.25f + 0.5f * float(k / 2)) / float(s.height) * 2.0f;
+        const glm::vec3 d = glm::normalize(forward + right * (px * tanHalf * aspect) + up * (py * tanHalf));
+        sum += equirectLookup(radiance, environmentToMap(d, rotation));
+      }
+      float* p = out.at(x, y);
+      for (int c = 0; c < 3; ++c) p[c] = 0.25f * sum[c] * s.environmentIntensity;
+    }
+  }
+  return out;
+}
+
 Renderer::Renderer(VulkanContext& context, const AlbedoTables& tables) : context_(context), tables_(tables) {
   Diagnostics diagnostics;
   auto words = spirv::compile(glsl::buildVertexShader(), {}, diagnostics);
   if (!words) throw VulkanError("the renderer's vertex shader does not compile:\n" + diagnostics.format());
   vertexSpirv_ = std::move(*words);
+  black_ = std::make_unique<EnvironmentMap>(context, RgbaImage{});
 }
 
 Renderer::~Renderer() = default;
@@ -223,13 +255,18 @@ RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resourc
     block.set("lightVector", glm::vec4(l.vector, l.kind == Light::Kind::Point ? 1.0f : 0.0f), k);
     block.set("lightRadiance", glm::vec4(l.color * l.intensity, 0.0f), k);
   }
-  block.set("environment", glm::vec4(s.environmentIntensity, s.emissionScale, 0.0f, 0.0f));
+  if (s.environment == Environment::Map && !s.environmentMap) {
+    throw std::logic_error("Renderer::render: Environment::Map without an environment image");
+  }
+  const EnvironmentMap& environment = s.environment == Environment::Map ? *s.environmentMap : *black_;
+  block.set("environment", glm::vec4(s.environmentIntensity, s.emissionScale, glm::radians(s.environmentRotation), 0.0f));
   const std::vector<VertexInput> inputs = {
       {glsl::kAttributePosition, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
       {glsl::kAttributeNormal, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
       {glsl::kAttributeTangent, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
       {glsl::kAttributeUv, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}};
-  return draw(mesh, vertexSpirv_, fragmentSpirv, inputs, set, s,
+  static_assert(glsl::kEnvironmentSet == 1, "the sets are bound in order: the material's, the environment's");
+  return draw(mesh, vertexSpirv_, fragmentSpirv, inputs, {&set, &environment.set()}, s,
               [&](const FrameView& v) {
                 block.set("objectToWorld", v.objectToWorld);
                 block.set("normalToWorld", v.normalToWorld);
@@ -245,7 +282,7 @@ RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resourc
 
 RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& vertexSpirv,
                             const std::vector<uint32_t>& fragmentSpirv, const std::vector<VertexInput>& inputs,
-                            const DescriptorSet& set, const RenderSettings& s,
+                            const std::vector<const DescriptorSet*>& sets, const RenderSettings& s,
                             const std::function<void(const FrameView&)>& beforeFrame,
                             const std::function<void(uint32_t)>& progress) {
   VkDevice device = context_.device();
@@ -271,10 +308,15 @@ RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& verte
   fb.height = s.height;
   fb.layers = 1;
   check(vkCreateFramebuffer(device, &fb, nullptr, &f.framebuffer), "vkCreateFramebuffer");
-  VkDescriptorSetLayout setLayout = set.layout();
+  std::vector<VkDescriptorSetLayout> setLayouts;
+  std::vector<VkDescriptorSet> descriptorSets;
+  for (const DescriptorSet* set : sets) {
+    setLayouts.push_back(set->layout());
+    descriptorSets.push_back(set->set());
+  }
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &setLayout;
+  layoutInfo.setLayoutCount = static_cast<uint32_t>(setLayouts.size());
+  layoutInfo.pSetLayouts = setLayouts.data();
   check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &f.layout), "vkCreatePipelineLayout");
   f.depthPipeline =
       createPipeline(device, f.renderPass, f.layout, vertex.get(), VK_NULL_HANDLE, inputs, s.width, s.height);
@@ -335,8 +377,8 @@ RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& verte
       begin.clearValueCount = 2;
       begin.pClearValues = clears;
       vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-      VkDescriptorSet ds = set.set();
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.layout, 0, 1, &ds, 0, nullptr);
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.layout, 0,
+                              static_cast<uint32_t>(descriptorSets.size()), descriptorSets.data(), 0, nullptr);
       VkDeviceSize offset = 0;
       vkCmdBindVertexBuffers(cmd, 0, 1, &f.vertices.buffer, &offset);
       vkCmdBindIndexBuffer(cmd, f.indices.buffer, 0, VK_INDEX_TYPE_UINT32);

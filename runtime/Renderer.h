@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// The raster renderer: a mesh (sphere, plane, OBJ) with a material's fragment shader, a
-/// camera, directional and point lights, and an environment (white furnace or analytic sky)
-/// integrated by Monte Carlo over frames. Frames are drawn depth first, then shaded with an
+/// camera, directional and point lights, and an environment (white furnace, analytic sky or an
+/// HDR image) integrated by Monte Carlo over frames. Frames are drawn depth first, then shaded with an
 /// EQUAL depth test and added into an RGBA32F image; the result is their average.
 
 #include <cstdint>
@@ -14,6 +14,7 @@
 #include <glm/vec3.hpp>
 
 #include "runtime/Descriptors.h"
+#include "runtime/EnvironmentMap.h"
 #include "runtime/ImageIO.h"
 #include "runtime/MaterialResources.h"
 #include "runtime/Mesh.h"
@@ -28,7 +29,9 @@ struct Light {
   float intensity = 1.0f;
 };
 
-enum class Environment : uint8_t { None, White, Sky };
+/// Map: RenderSettings::environmentMap, importance-sampled and combined with the closure's
+/// samples by multiple importance sampling.
+enum class Environment : uint8_t { None, White, Sky, Map };
 
 struct Camera {
   glm::vec3 eye{0.0f, 0.0f, 3.4f};
@@ -47,6 +50,10 @@ struct RenderSettings {
   uint32_t samplesPerFrame = 1;   ///< environment samples per pixel and frame
   Environment environment = Environment::Sky;
   float environmentIntensity = 1.0f;
+  /// The image of Environment::Map (not owned; required for it, ignored otherwise).
+  const EnvironmentMap* environmentMap = nullptr;
+  /// The environment image's turn about +y, in degrees (counter-clockwise seen from above).
+  float environmentRotation = 0.0f;
   float emissionScale = 1.0f;     ///< radiance per unit of the material's emission
   std::vector<Light> lights;
   Camera camera;
@@ -78,6 +85,11 @@ struct FrameView {
   uint32_t frame = 0;
 };
 
+/// The environment image of `settings` as the camera sees it behind the mesh: per pixel the
+/// mean radiance over 2 x 2 sub-pixel rays (times the environment's intensity), alpha 1; the
+/// pixels under what a render does not cover. Black unless the environment is an image.
+RgbaImage renderBackground(const RenderSettings& settings);
+
 class Renderer {
  public:
   Renderer(VulkanContext& context, const AlbedoTables& tables);
@@ -93,10 +105,11 @@ class Renderer {
 
   /// Renders `mesh` with any vertex and fragment shader pair (for instance another generator's,
   /// whose resource interface the caller found by reflection): the same passes, accumulation
-  /// and timing as render(). `beforeFrame` updates the caller's uniforms for each frame.
+  /// and timing as render(). `sets` are bound as sets 0, 1, ...; `beforeFrame` updates the
+  /// caller's uniforms for each frame.
   RenderResult draw(const Mesh& mesh, const std::vector<uint32_t>& vertexSpirv,
                     const std::vector<uint32_t>& fragmentSpirv, const std::vector<VertexInput>& inputs,
-                    const DescriptorSet& set, const RenderSettings& settings,
+                    const std::vector<const DescriptorSet*>& sets, const RenderSettings& settings,
                     const std::function<void(const FrameView&)>& beforeFrame,
                     const std::function<void(uint32_t)>& progress = {});
 
@@ -104,6 +117,8 @@ class Renderer {
   VulkanContext& context_;
   const AlbedoTables& tables_;
   std::vector<uint32_t> vertexSpirv_;
+  /// Bound as the environment set when the environment is not an image.
+  std::unique_ptr<EnvironmentMap> black_;
 };
 
 }  // namespace mxc::rt

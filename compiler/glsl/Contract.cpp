@@ -39,7 +39,9 @@ constexpr Member kView[] = {
     {"vec4", "lightRadiance", kMaxLights,
      "rgb: irradiance at normal incidence (directional) or intensity in W/sr (point)"},
     {"ivec4", "counts", 0, "x: lights, y: environment (MXC_ENV_*), z: frame index, w: samples per frame"},
-    {"vec4", "environment", 0, "x: environment intensity, y: emission scale (radiance per unit of emission_luminance)"},
+    {"vec4", "environment", 0,
+     "x: environment intensity, y: emission scale (radiance per unit of emission_luminance), z: rotation of the "
+     "environment image about +y (radians)"},
 };
 
 constexpr Member kBatch[] = {
@@ -80,6 +82,8 @@ std::string viewHeader() {
   out += fmt::format("const int MXC_ENV_NONE = {};\n", int(EnvironmentCode::None));
   out += fmt::format("const int MXC_ENV_WHITE = {};  // the white furnace\n", int(EnvironmentCode::White));
   out += fmt::format("const int MXC_ENV_SKY = {};\n", int(EnvironmentCode::Sky));
+  out += fmt::format("const int MXC_ENV_MAP = {};  // an equirectangular image (stages/mxc_environment.glsl)\n",
+                     int(EnvironmentCode::Map));
   out += fmt::format("layout(set = 0, binding = {}, std140) uniform MxcView {{\n", uint32_t(kStageBinding));
   out += declarations(viewMembers()) + "} mxc_view;\n";
   return out;
@@ -125,6 +129,21 @@ std::string tablesHeader() {
   out += fmt::format("layout(local_size_x = {0}, local_size_y = {0}) in;\n", kTablesGroupSize);
   out += fmt::format("layout(set = 0, binding = {}, std430) writeonly buffer MxcOutput {{ vec4 mxc_out[]; }};\n",
                      kTablesOutputBinding);
+  return out;
+}
+
+/// The environment image and its distribution, in set MXC_ENV_SET (defined by the includer: the
+/// renderer's set kEnvironmentSet, or 0 in the sampling stage that tests it).
+std::string environmentHeader() {
+  std::string out = kGeneratedNote;
+  out += fmt::format("layout(set = MXC_ENV_SET, binding = {}) uniform sampler2D mxc_env_radiance;\n",
+                     kEnvironmentRadianceBinding);
+  out += fmt::format(
+      "layout(set = MXC_ENV_SET, binding = {}, std430) readonly buffer MxcEnvDistribution {{\n"
+      "  uvec4 mxc_env_size;     // x, y: cells across and down\n"
+      "  vec4 mxc_env_cells[];   // x: keep probability, y: alias (uint bits), z: pdf per steradian\n"
+      "}};\n",
+      kEnvironmentDistributionBinding);
   return out;
 }
 
@@ -192,6 +211,7 @@ std::optional<std::string> generatedLibraryFile(std::string_view path) {
   if (path == "generated/mxc_tables_stage.glsl") return tablesHeader();
   if (path == "generated/mxc_codes.glsl") return codesHeader();
   if (path == "generated/mxc_vertex_inputs.glsl") return vertexInputsHeader();
+  if (path == "generated/mxc_environment_block.glsl") return environmentHeader();
   return std::nullopt;
 }
 

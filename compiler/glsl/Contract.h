@@ -33,7 +33,18 @@ constexpr uint32_t kTablesGroupSize = 8;
 constexpr uint32_t kTablesOutputBinding = 0;
 
 /// The environment of the raster renderer, MxcView.counts.y.
-enum class EnvironmentCode : int32_t { None = 0, White = 1, Sky = 2 };
+enum class EnvironmentCode : int32_t { None = 0, White = 1, Sky = 2, Map = 3 };
+
+/// The raster renderer's environment image (stages/mxc_environment.glsl) is its own descriptor
+/// set, so that a material's set 0 does not change with the scene: the radiance (an RGBA32F
+/// equirectangular image, repeating across, clamped down) and its sampling distribution (a
+/// storage buffer: uvec4 size, then one vec4 per cell, runtime/EnvironmentDistribution.h).
+constexpr uint32_t kEnvironmentSet = 1;
+constexpr uint32_t kEnvironmentRadianceBinding = 0;
+constexpr uint32_t kEnvironmentDistributionBinding = 1;
+/// The output buffer of the environment sampling stage (stages/mxc_environment_sample.comp),
+/// which reads the environment at set 0.
+constexpr uint32_t kEnvironmentSampleOutputBinding = 2;
 
 /// MaterialX texture address modes, as mxc_sample_image takes them (MXC_ADDRESS_*).
 enum class AddressMode : int32_t { Constant = 0, Clamp = 1, Periodic = 2, Mirror = 3 };
@@ -92,7 +103,8 @@ class BlockWriter {
 
 /// The GLSL of a generated library file ("generated/mxc_lobe.glsl", "generated/mxc_codes.glsl",
 /// "generated/mxc_view_block.glsl", "generated/mxc_batch_block.glsl",
-/// "generated/mxc_tables_stage.glsl", "generated/mxc_vertex_inputs.glsl"), or nullopt for any
+/// "generated/mxc_tables_stage.glsl", "generated/mxc_vertex_inputs.glsl",
+/// "generated/mxc_environment_block.glsl"), or nullopt for any
 /// other path.
 std::optional<std::string> generatedLibraryFile(std::string_view path);
 

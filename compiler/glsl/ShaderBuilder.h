@@ -71,6 +71,10 @@ spirv::GlslSource buildVertexShader();
 /// The compute shader that fills the albedo tables the lobes read (kTableSize^2 texels).
 spirv::GlslSource buildTablesShader();
 
+/// The compute shader drawing directions from an environment image's distribution
+/// (stages/mxc_environment_sample.comp), for runtime/EnvironmentMap's sample().
+spirv::GlslSource buildEnvironmentSampleShader();
+
 }  // namespace mxc::glsl
 
 namespace mxc::glsl {

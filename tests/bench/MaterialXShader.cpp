@@ -249,7 +249,7 @@ rt::RenderResult MaterialXShader::render(rt::VulkanContext& context, rt::Rendere
     }
   };
   fill(nullptr);
-  return renderer.draw(mesh, vertex_, pixel_, inputs, set, settings, [&](const rt::FrameView& v) { fill(&v); });
+  return renderer.draw(mesh, vertex_, pixel_, inputs, {&set}, settings, [&](const rt::FrameView& v) { fill(&v); });
 }
 
 }  // namespace mxc::bench

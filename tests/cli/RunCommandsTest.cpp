@@ -197,5 +197,64 @@ TEST(RenderCommand, ExposureScalesTheRenderNotTheBackground) {
   EXPECT_GT(brighter.at(16, 16)[1], plain.at(16, 16)[1] + 0.05f);
 }
 
+/// An equirectangular EXR of one colour (with `bad` NaN values), w x h, in the temporary folder.
+fs::path environmentImage(const std::string& name, uint32_t w, uint32_t h, int bad = 0) {
+  rt::RgbaImage image{w, h, {}};
+  for (uint32_t i = 0; i < w * h; ++i) image.pixels.insert(image.pixels.end(), {0.2f, 0.4f, 0.8f, 1.0f});
+  for (int k = 0; k < bad; ++k) image.pixels[size_t(k) * 4] = std::nanf("");
+  const fs::path path = writeTemp(name, "");
+  EXPECT_EQ(rt::writeImage(path, image), std::nullopt);
+  return path;
+}
+
+// An environment image lights the material and, unless --background says otherwise, is the
+// background of every output (EXR included; its alpha stays the coverage), scaled by
+// --env-intensity.
+TEST(RenderCommand, EnvironmentImageLightsAndFillsTheBackground) {
+  const fs::path env = environmentImage("env.exr", 32, 16);
+  auto render = [&](const std::string& options) {
+    const fs::path exr = writeTemp("env-render.exr", "");
+    CommandRun r = mxc("render " + corpus(kDefault) + " -o " + exr.string() + " --size 32 --spp 2 --env " + env.string() +
+                       " " + options);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    auto image = rt::readImage(exr);
+    fs::remove(exr);
+    EXPECT_TRUE(std::holds_alternative<rt::RgbaImage>(image));
+    return std::holds_alternative<rt::RgbaImage>(image) ? std::get<rt::RgbaImage>(image) : rt::RgbaImage{};
+  };
+  const rt::RgbaImage plain = render(""), doubled = render("--env-intensity 2 --env-rotation 90");
+  ASSERT_EQ(plain.width, 32u);
+  ASSERT_EQ(doubled.width, 32u);
+  const float want[3] = {0.2f, 0.4f, 0.8f};
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(plain.at(0, 0)[c], want[c], 1e-4f);
+    EXPECT_NEAR(doubled.at(0, 0)[c], 2.0f * want[c], 2e-4f);
+  }
+  EXPECT_EQ(plain.at(0, 0)[3], 0.0f);
+  EXPECT_GT(plain.at(16, 16)[3], 0.999f);
+  // The sphere is lit by the blue environment alone (no default key light with an image).
+  EXPECT_GT(plain.at(16, 16)[2], plain.at(16, 16)[0]);
+  fs::remove(env);
+}
+
+TEST(RenderCommand, RefusesEnvironmentImagesItCannotUse) {
+  const fs::path square = environmentImage("square.exr", 16, 16);
+  const fs::path nan = environmentImage("nan.exr", 16, 8, 3);
+  const fs::path missing = fs::temp_directory_path() / "mxc-no-such-environment.exr";
+  const std::vector<std::pair<fs::path, std::string>> cases = {
+      {square, "not an equirectangular"}, {nan, "3 values are NaN or infinite"}, {missing, missing.string()}};
+  for (const auto& [env, message] : cases) {
+    const fs::path png = fs::temp_directory_path() / "mxc-refused-env.png";
+    fs::remove(png);
+    CommandRun r = mxc("render " + corpus(kDefault) + " -o " + png.string() + " --size 16 --spp 1 --env " + env.string());
+    EXPECT_EQ(r.exitCode, 1) << env << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--env"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(png)) << "nothing is written when the environment is refused";
+  }
+  fs::remove(square);
+  fs::remove(nan);
+}
+
 }  // namespace
 }  // namespace mxc::test

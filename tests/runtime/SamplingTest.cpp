@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "support/ChiSquare.h"
 #include "support/MaterialSupport.h"
 
 namespace mxc::test {
@@ -42,13 +43,6 @@ int binOf(const glm::vec3& w) {
   const int iz = std::min(int((z + 1.0) * 0.5 * kZBins), kZBins - 1);
   const int ip = std::min(int(phi / (2.0 * kPi) * kPhiBins), kPhiBins - 1);
   return iz * kPhiBins + ip;
-}
-
-/// Upper quantile of chi-square with `dof` degrees of freedom at the standard normal quantile z
-/// (Wilson & Hilferty 1931: (X / dof)^(1/3) is close to normal).
-double chiSquareQuantile(double dof, double z) {
-  const double v = 2.0 / (9.0 * dof);
-  return dof * std::pow(1.0 - v + z * std::sqrt(v), 3.0);
 }
 
 class Sampling : public ::testing::TestWithParam<Case> {};
@@ -116,22 +110,11 @@ TEST_P(Sampling, DrawsTheDensityItReports) {
 
     // Pearson's statistic over the bins expecting at least 20, the rest pooled. The quadrature
     // error of the expected counts must stay far below the counting noise (about 5% per bin).
-    double statistic = 0.0, pooledObserved = 0.0, pooledExpected = 0.0;
-    int bins = 0;
-    for (size_t b = 0; b < expected.size(); ++b) {
-      if (expected[b] < 20.0) {
-        pooledObserved += observed[b];
-        pooledExpected += expected[b];
-        continue;
-      }
-      statistic += (observed[b] - expected[b]) * (observed[b] - expected[b]) / expected[b];
-      ++bins;
-    }
-    if (pooledExpected >= 20.0) {
-      statistic += (pooledObserved - pooledExpected) * (pooledObserved - pooledExpected) / pooledExpected;
-      ++bins;
-    } else {
-      EXPECT_LT(pooledObserved, 40.0 + 10.0 * pooledExpected) << what << ": samples where the pdf is about 0";
+    const PearsonResult test = pearson(observed, expected, 20.0);
+    const double statistic = test.statistic;
+    const int bins = test.bins;
+    if (test.pooledExpected < 20.0) {
+      EXPECT_LT(test.pooledObserved, 40.0 + 10.0 * test.pooledExpected) << what << ": samples where the pdf is about 0";
     }
     ASSERT_GT(bins, 10) << what;
     // z = 5: a false alarm once in about 3.5 million runs per view.

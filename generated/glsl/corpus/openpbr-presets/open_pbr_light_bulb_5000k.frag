@@ -72,4 +72,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"

@@ -51,6 +51,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/generalized_schlick.mtlx: material schlick_bsdf/T_out ====
 #version 450
@@ -105,6 +107,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/generalized_schlick.mtlx: material schlick_bsdf/RT_out ====
 #version 450
@@ -159,6 +163,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/generalized_schlick.mtlx: material schlick_bsdf/layer_RT_out ====
 #version 450
@@ -232,6 +238,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/generalized_schlick.mtlx: material schlick_bsdf/R2_out ====
 #version 450
@@ -286,6 +294,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/generalized_schlick.mtlx: material schlick_bsdf/T2_out ====
 #version 450
@@ -340,6 +350,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/generalized_schlick.mtlx: material schlick_bsdf/RT2_out ====
 #version 450
@@ -394,6 +406,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/generalized_schlick.mtlx: material schlick_bsdf/layer_RT2_out ====
 #version 450
@@ -467,6 +481,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/generalized_schlick.mtlx: material schlick_bsdf/R3_out ====
 #version 450
@@ -521,4 +537,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"

@@ -111,6 +111,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/layer_bsdf.mtlx: material layer_bsdf_test2/out ====
 #version 450
@@ -185,4 +187,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"

@@ -68,6 +68,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/mix_bsdf.mtlx: material mix_bsdf_test2/out ====
 #version 450
@@ -141,6 +143,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/mix_bsdf.mtlx: material mix_bsdf_test3/out ====
 #version 450
@@ -194,4 +198,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"

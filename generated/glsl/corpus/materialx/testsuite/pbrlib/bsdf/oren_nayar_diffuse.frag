@@ -50,6 +50,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/oren_nayar_diffuse.mtlx: material oren_nayar_diffuse/out2 ====
 #version 450
@@ -103,6 +105,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/oren_nayar_diffuse.mtlx: material oren_nayar_diffuse/out3 ====
 #version 450
@@ -156,6 +160,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/oren_nayar_diffuse.mtlx: material oren_nayar_diffuse/out4 ====
 #version 450
@@ -209,6 +215,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/oren_nayar_diffuse.mtlx: material oren_nayar_diffuse/out5 ====
 #version 450
@@ -262,4 +270,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"

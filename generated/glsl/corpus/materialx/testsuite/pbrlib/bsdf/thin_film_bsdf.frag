@@ -52,6 +52,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/thin_film_bsdf.mtlx: material thin_film_test2/out ====
 #version 450
@@ -127,6 +129,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/thin_film_bsdf.mtlx: material thin_film_test3/out ====
 #version 450
@@ -202,6 +206,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/thin_film_bsdf.mtlx: material thin_film_test4/out ====
 #version 450
@@ -276,6 +282,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/thin_film_bsdf.mtlx: material thin_film_test5/out ====
 #version 450
@@ -349,6 +357,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/thin_film_bsdf.mtlx: material thin_film_test6/out ====
 #version 450
@@ -405,6 +415,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/thin_film_bsdf.mtlx: material thin_film_test7/out ====
 #version 450
@@ -460,6 +472,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
 // ==== corpus/materialx/testsuite/pbrlib/bsdf/thin_film_bsdf.mtlx: material thin_film_test8/out ====
 #version 450
@@ -515,4 +529,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 }
 
 #include "stages/mxc_view.glsl"
+#define MXC_ENV_SET 1
+#include "stages/mxc_environment.glsl"
 #include "stages/mxc_raster.frag"
