@@ -12,28 +12,13 @@
 
 #include "runtime/EnvironmentMap.h"
 #include "support/ChiSquare.h"
+#include "support/EnvironmentImages.h"
 #include "support/MaterialSupport.h"
 
 namespace mxc::test {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-/// A dim sky brighter towards the ground, with one bright patch up and to the left.
-rt::RgbaImage patchImage(uint32_t width, float patch) {
-  rt::RgbaImage image{width, width / 2, std::vector<float>(size_t{width} * (width / 2) * 4, 1.0f)};
-  for (uint32_t y = 0; y < image.height; ++y) {
-    for (uint32_t x = 0; x < image.width; ++x) {
-      float* p = image.at(x, y);
-      const float sky = 0.2f + 0.8f * float(y) / float(image.height);
-      p[0] = sky, p[1] = 0.9f * sky, p[2] = 0.7f * sky;
-      if (x >= width / 8 && x < width / 8 + width / 16 && y >= width / 16 && y < width / 16 + width / 32) {
-        p[0] = p[1] = p[2] = patch;
-      }
-    }
-  }
-  return image;
-}
 
 void expectSamplerDrawsItsDensity(const rt::RgbaImage& image, uint32_t binsAcross, const std::string& what) {
   rt::EnvironmentMap map(Device::get().context, image);
@@ -76,7 +61,9 @@ void expectSamplerDrawsItsDensity(const rt::RgbaImage& image, uint32_t binsAcros
   }
   ASSERT_NEAR(mass, 1.0, 1e-4) << what;
   const PearsonResult test = pearson(observed, expected, 20.0);
-  if (test.pooledExpected < 20.0) EXPECT_LT(test.pooledObserved, 40.0 + 10.0 * test.pooledExpected) << what;
+  if (test.pooledExpected < 20.0) {
+    EXPECT_LT(test.pooledObserved, 40.0 + 10.0 * test.pooledExpected) << what;
+  }
   ASSERT_GT(test.bins, 100) << what;
   // z = 5: a false alarm once in about 3.5 million runs.
   EXPECT_LT(test.statistic, chiSquareQuantile(test.bins - 1, 5.0))
