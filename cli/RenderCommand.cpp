@@ -206,25 +206,19 @@ int runRender(const RenderOptions& options) {
       for (const std::string& output : options.outputs) {
         const auto path = perMaterialPath(output, material.name, several);
         rt::RgbaImage pixels = image.image;
-        // Linear formats hold radiance as rendered; 8-bit ones get the exposure (rt::encodeImage).
+        // Linear formats hold radiance as rendered; 8-bit ones get the exposure, which scales
+        // the rendered radiance (a camera's). Under what the surface does not cover goes the
+        // environment image (radiance too: scaled with it, in every format; alpha stays the
+        // coverage) or, in 8-bit formats only, the constant --background colour (not scaled).
         const bool linear = path.extension() == ".exr" || path.extension() == ".hdr";
-        if (imageBackground) {
-          // The environment behind the mesh, under what the surface does not cover; alpha stays
-          // the coverage. 8-bit outputs scale the whole radiance by the exposure.
+        if (imageBackground || !linear) {
           const float scale = linear ? 1.0f : std::exp2(options.exposure);  // |exposure| <= 64: finite, > 0
           for (size_t i = 0; i < pixels.pixels.size(); i += 4) {
             const float uncovered = 1.0f - std::clamp(pixels.pixels[i + 3], 0.0f, 1.0f);
             for (int c = 0; c < 3; ++c) {
-              pixels.pixels[i + c] = scale * (pixels.pixels[i + c] + uncovered * behind.pixels[i + c]);
+              const float under = imageBackground ? scale * behind.pixels[i + c] : background[c];
+              pixels.pixels[i + c] = scale * pixels.pixels[i + c] + uncovered * under;
             }
-          }
-        } else if (!linear) {
-          // 8-bit outputs: the exposure scales the rendered radiance (a camera's), then the
-          // background goes under what the surface does not cover, as the constant colour it is.
-          const float scale = std::exp2(options.exposure);  // |exposure| <= 64: finite, > 0
-          for (size_t i = 0; i < pixels.pixels.size(); i += 4) {
-            const float uncovered = 1.0f - std::clamp(pixels.pixels[i + 3], 0.0f, 1.0f);
-            for (int c = 0; c < 3; ++c) pixels.pixels[i + c] = scale * pixels.pixels[i + c] + uncovered * background[c];
           }
         }
         auto encoded = rt::encodeImage(path, pixels);

@@ -184,27 +184,36 @@ VkPipeline createPipeline(VkDevice device, VkRenderPass pass, VkPipelineLayout l
   return pipeline;
 }
 
+/// The camera's projection: Vulkan's clip space (depth 0..1, y down, hence the flip), and its
+/// right-handed view. draw() and renderBackground() share them.
+glm::mat4 viewToClip(const Camera& camera, uint32_t width, uint32_t height) {
+  glm::mat4 projection =
+      glm::perspectiveRH_ZO(glm::radians(camera.fovDegrees), float(width) / float(height), 0.05f, 100.0f);
+  projection[1][1] *= -1.0f;
+  return projection;
+}
+glm::mat4 worldToView(const Camera& camera) { return glm::lookAtRH(camera.eye, camera.target, camera.up); }
+
 }  // namespace
 
 RgbaImage renderBackground(const RenderSettings& s) {
   RgbaImage out{s.width, s.height, std::vector<float>(size_t{s.width} * s.height * 4, 0.0f)};
   for (size_t i = 3; i < out.pixels.size(); i += 4) out.pixels[i] = 1.0f;
   if (s.environment != Environment::Map || !s.environmentMap) return out;
-  // The camera of draw(): a right-handed view, vertical field of view, row 0 at the top.
-  const glm::vec3 forward = glm::normalize(s.camera.target - s.camera.eye);
-  const glm::vec3 right = glm::normalize(glm::cross(forward, s.camera.up));
-  const glm::vec3 up = glm::cross(right, forward);
-  const float tanHalf = std::tan(glm::radians(s.camera.fovDegrees) * 0.5f);
-  const float aspect = float(s.width) / float(s.height);
+  // Each ray through the camera of draw(): a point of the far plane, back to the world.
+  const glm::mat4 clipToWorld = glm::inverse(viewToClip(s.camera, s.width, s.height) * worldToView(s.camera));
   const float rotation = glm::radians(s.environmentRotation);
   const RgbaImage& radiance = s.environmentMap->radiance();
   for (uint32_t y = 0; y < s.height; ++y) {
     for (uint32_t x = 0; x < s.width; ++x) {
       glm::vec3 sum(0.0f);
       for (int k = 0; k < 4; ++k) {
+        // Normalised device coordinates: -1 at the left and top edges (Vulkan's y points down).
         const float px = (float(x) + 0.25f + 0.5f * float(k % 2)) / float(s.width) * 2.0f - 1.0f;
-        const float py = 1.0f - (float(y) + 0.25f + 0.5f * float(k / 2)) / float(s.height) * 2.0f;
-        const glm::vec3 d = glm::normalize(forward + right * (px * tanHalf * aspect) + up * (py * tanHalf));
+        const float py = (float(y) + 0.25f + 0.5f * float(k / 2)) / float(s.height) * 2.0f - 1.0f;
+        const glm::vec4 far = clipToWorld * glm::vec4(px, py, 1.0f, 1.0f);
+        // far.w > 0 for a point in front of the camera; eye and far point differ (near < far).
+        const glm::vec3 d = glm::normalize(glm::vec3(far) / far.w - s.camera.eye);
         sum += equirectLookup(radiance, environmentToMap(d, rotation));
       }
       float* p = out.at(x, y);
@@ -336,16 +345,11 @@ RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& verte
                               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT);
   });
 
-  // Camera: a right-handed view, Vulkan's clip space (depth 0..1, y down, hence the flip).
-  const float aspect = float(s.width) / float(s.height);
-  glm::mat4 projection = glm::perspectiveRH_ZO(glm::radians(s.camera.fovDegrees), aspect, 0.05f, 100.0f);
-  projection[1][1] *= -1.0f;
-  const glm::mat4 viewMatrix = glm::lookAtRH(s.camera.eye, s.camera.target, s.camera.up);
   FrameView frameView;
   frameView.objectToWorld = s.objectToWorld;
   frameView.normalToWorld = glm::transpose(glm::inverse(s.objectToWorld));
-  frameView.viewToClip = projection;
-  frameView.worldToView = viewMatrix;
+  frameView.viewToClip = viewToClip(s.camera, s.width, s.height);
+  frameView.worldToView = worldToView(s.camera);
   frameView.eye = s.camera.eye;
 
   RenderResult result;
@@ -363,7 +367,7 @@ RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& verte
     glm::mat4 jitter(1.0f);
     jitter[3][0] = frameView.jitter.x;
     jitter[3][1] = frameView.jitter.y;
-    frameView.worldToClip = jitter * projection * viewMatrix;
+    frameView.worldToClip = jitter * frameView.viewToClip * frameView.worldToView;
     frameView.frame = frame;
     beforeFrame(frameView);
     const auto start = std::chrono::steady_clock::now();

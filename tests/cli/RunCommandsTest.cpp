@@ -177,16 +177,22 @@ TEST(RenderCommand, WritesAFiniteImage) {
 
 // --exposure scales the rendered radiance of an 8-bit output, not the constant background under
 // it: the corner keeps the background's code value, the lit sphere gets brighter.
+/// `mxc render` of the default material into temporary file `name` with `options`, read back
+/// (empty when the command or the read failed, which the expectations report).
+rt::RgbaImage renderDefault(const std::string& name, const std::string& options) {
+  const fs::path out = writeTemp(name, "");
+  CommandRun r = mxc("render " + corpus(kDefault) + " -o " + out.string() + " " + options);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  auto image = rt::readImage(out);
+  fs::remove(out);
+  EXPECT_TRUE(std::holds_alternative<rt::RgbaImage>(image));
+  return std::holds_alternative<rt::RgbaImage>(image) ? std::get<rt::RgbaImage>(image) : rt::RgbaImage{};
+}
+
 TEST(RenderCommand, ExposureScalesTheRenderNotTheBackground) {
   auto render = [](const std::string& exposure) {
-    const fs::path png = writeTemp("exposure" + exposure + ".png", "");
-    CommandRun r = mxc("render " + corpus(kDefault) + " -o " + png.string() +
-                       " --size 32 --spp 1 --env sky --background 0.5,0.5,0.5 --exposure " + exposure);
-    EXPECT_EQ(r.exitCode, 0) << r.err;
-    auto image = rt::readImage(png);
-    fs::remove(png);
-    EXPECT_TRUE(std::holds_alternative<rt::RgbaImage>(image));
-    return std::holds_alternative<rt::RgbaImage>(image) ? std::get<rt::RgbaImage>(image) : rt::RgbaImage{};
+    return renderDefault("exposure" + exposure + ".png",
+                         "--size 32 --spp 1 --env sky --background 0.5,0.5,0.5 --exposure " + exposure);
   };
   const rt::RgbaImage plain = render("0"), brighter = render("1.5");
   ASSERT_EQ(plain.width, 32u);
@@ -213,14 +219,7 @@ fs::path environmentImage(const std::string& name, uint32_t w, uint32_t h, int b
 TEST(RenderCommand, EnvironmentImageLightsAndFillsTheBackground) {
   const fs::path env = environmentImage("env.exr", 32, 16);
   auto render = [&](const std::string& options) {
-    const fs::path exr = writeTemp("env-render.exr", "");
-    CommandRun r = mxc("render " + corpus(kDefault) + " -o " + exr.string() + " --size 32 --spp 2 --env " + env.string() +
-                       " " + options);
-    EXPECT_EQ(r.exitCode, 0) << r.err;
-    auto image = rt::readImage(exr);
-    fs::remove(exr);
-    EXPECT_TRUE(std::holds_alternative<rt::RgbaImage>(image));
-    return std::holds_alternative<rt::RgbaImage>(image) ? std::get<rt::RgbaImage>(image) : rt::RgbaImage{};
+    return renderDefault("env-render.exr", "--size 32 --spp 2 --env " + env.string() + " " + options);
   };
   const rt::RgbaImage plain = render(""), doubled = render("--env-intensity 2 --env-rotation 90");
   ASSERT_EQ(plain.width, 32u);

@@ -9,27 +9,12 @@
 #include <cstring>
 
 #include "runtime/EnvironmentDistribution.h"
+#include "support/EnvironmentImages.h"
 
 namespace mxc::rt {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-/// A dim sky with one bright patch, `width` x `width / 2`.
-RgbaImage patchImage(uint32_t width) {
-  RgbaImage image{width, width / 2, std::vector<float>(size_t{width} * (width / 2) * 4, 1.0f)};
-  for (uint32_t y = 0; y < image.height; ++y) {
-    for (uint32_t x = 0; x < image.width; ++x) {
-      float* p = image.at(x, y);
-      const float sky = 0.2f + 0.8f * float(y) / float(image.height);
-      p[0] = sky, p[1] = 0.9f * sky, p[2] = 0.7f * sky;
-      if (x >= width / 8 && x < width / 8 + width / 16 && y >= width / 16 && y < width / 16 + width / 32) {
-        p[0] = p[1] = p[2] = 400.0f;
-      }
-    }
-  }
-  return image;
-}
 
 TEST(EnvironmentMapping, FollowsTheStatedConvention) {
   // The image's centre along -z, a quarter turn to the right along +x, the top row up.
@@ -60,7 +45,7 @@ TEST(EnvironmentMapping, FollowsTheStatedConvention) {
 
 TEST(EnvironmentDistribution, DensityIntegratesToOneAndTheAliasTableDrawsIt) {
   for (uint32_t width : {64u, 2048u}) {  // 2048: cells at half the image's resolution
-    const RgbaImage image = patchImage(width);
+    const RgbaImage image = test::patchImage(width, 400.0f);
     const EnvironmentDistribution d = EnvironmentDistribution::build(image, 1024);
     ASSERT_EQ(d.width, std::min(width, 1024u));
     ASSERT_EQ(d.height, d.width / 2);
@@ -100,7 +85,7 @@ TEST(EnvironmentDistribution, DensityBoundsTheBilinearLookup) {
   // lookup it stays at most the bounding power, here about 2.5 times the power; with each
   // cell's own texel alone (the mean, at the image's resolution) it reaches 750 times beside the
   // patch (light interpolated from a bright texel into a dark cell).
-  const RgbaImage image = patchImage(64);
+  const RgbaImage image = test::patchImage(64, 400.0f);
   const EnvironmentDistribution d = EnvironmentDistribution::build(image);
   double highest = 0.0, power = 0.0;
   constexpr int kAcross = 1024, kDown = 512;
