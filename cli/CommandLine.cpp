@@ -179,13 +179,13 @@ void registerRender(CLI::App& app, int& exitCode) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* command = app.add_subcommand(
       "render",
-      "Render each material on a sphere: lights evaluated exactly, the environment (analytic, or an HDR image "
+      "Render each material on a mesh (a sphere by default): lights evaluated exactly, the environment (analytic, or an HDR image "
       "importance-sampled with MIS) integrated by Monte Carlo over --spp frames. .exr: linear radiance with "
       "coverage alpha; .png (and other 8-bit formats): tone-mapped (ACES fit), sRGB, over --background or the "
       "environment image. With several materials, file names get _<material>");
   command->add_option("file", options->file, "The .mtlx document")->required();
   command->add_option("-o,--output", options->outputs, "Output image (.png, .exr, .jpg, ...); repeatable")->required();
-  command->add_option("--size", options->size, "Width and height in pixels")->check(CLI::Range(8, 8192));
+  command->add_option("--size", options->size, "N (square) or WxH, in pixels, each 8 to 8192");
   command->add_option("--spp", options->spp, "Samples (frames) per pixel")->check(CLI::Range(1, 1 << 20));
   command->add_option("--light", options->lights,
                       "dir:X,Y,Z[:INTENSITY[:R,G,B]] (towards the light) or point:X,Y,Z[:INTENSITY[:R,G,B]]; "
@@ -204,7 +204,16 @@ void registerRender(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(-64.0, 64.0));
   command->add_option("--background", options->background,
                       "Background of 8-bit outputs, linear R,G,B (default: the environment image, else 0.05,0.05,0.05)");
-  command->add_option("--mesh", options->mesh, "sphere, plane, or an .obj file");
+  command->add_option("--mesh", options->mesh,
+                      "sphere, plane, a name found on the search path as resources/Geometry/NAME.glb or .obj "
+                      "(shaderball, teapot, cube, ...), or a .glb, .gltf or .obj file");
+  command->add_option("--search-path", options->searchPaths,
+                      "A folder searched for --mesh names, before those of MATERIALX_SEARCH_PATH; repeatable");
+  command->add_option("--camera-position", options->cameraPosition,
+                      "X,Y,Z (default: framed to fit the mesh, from the front; from above for the plane)");
+  command->add_option("--camera-target", options->cameraTarget, "X,Y,Z (default: the centre of the mesh's bounds)");
+  command->add_option("--camera-up", options->cameraUp, "X,Y,Z (default: 0,1,0)");
+  command->add_option("--fov", options->fovDegrees, "Vertical field of view in degrees")->check(CLI::Range(1.0, 170.0));
   addMaterialOptions(*command, options->materials);
   addDeviceOptions(*command, options->device);
   command->callback([options, &exitCode] { exitCode = runRender(*options); });

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 #include "cli/ExitCode.h"
 #include "cli/Harness.h"
 #include "cli/MaterialPipeline.h"
+#include "cli/MeshArgument.h"
 #include "cli/OutputSet.h"
 #include "compiler/glsl/Contract.h"
 #include "runtime/EnvironmentMap.h"
@@ -78,11 +80,57 @@ bool parseLight(const std::string& text, rt::Light& light, std::string& why) {
   return true;
 }
 
+/// "N" or "WxH", each 8 to 8192.
+bool parseSize(const std::string& text, uint32_t& width, uint32_t& height) {
+  const size_t x = text.find('x');
+  auto one = [](const std::string& part, uint32_t& out) {
+    if (part.empty() || part.size() > 5 || part.find_first_not_of("0123456789") != std::string::npos) return false;
+    const unsigned long v = std::stoul(part);  // 1 to 5 digits: no overflow
+    if (v < 8 || v > 8192) return false;
+    out = static_cast<uint32_t>(v);
+    return true;
+  };
+  if (x == std::string::npos) return one(text, width) && one(text, height);
+  return one(text.substr(0, x), width) && one(text.substr(x + 1), height);
+}
+
+/// The camera of the options: framed to the mesh unless a position is given.
+std::optional<std::string> chooseCamera(const RenderOptions& options, const MeshChoice& mesh, rt::RenderSettings& settings) {
+  const rt::MeshBounds bounds = rt::meshBounds(mesh.mesh);
+  std::vector<float> v;
+  auto vector = [&](const std::string& text, const char* option, glm::vec3& out) -> std::optional<std::string> {
+    if (!parseNumbers(text, 3, v)) return fmt::format("{} {}: expected X,Y,Z", option, text);
+    out = {v[0], v[1], v[2]};
+    return std::nullopt;
+  };
+  rt::Camera& camera = settings.camera;
+  if (options.cameraPosition.empty()) {
+    if (!options.cameraTarget.empty()) return std::string("--camera-target needs --camera-position");
+    camera = rt::frameBounds(bounds, mesh.viewDirection, options.fovDegrees, float(settings.width) / float(settings.height));
+  } else {
+    camera.fovDegrees = options.fovDegrees;
+    if (auto why = vector(options.cameraPosition, "--camera-position", camera.eye)) return why;
+    camera.target = bounds.center;
+    if (!options.cameraTarget.empty()) {
+      if (auto why = vector(options.cameraTarget, "--camera-target", camera.target)) return why;
+    }
+    rt::fitClipPlanes(camera, bounds);
+  }
+  if (!options.cameraUp.empty()) {
+    if (auto why = vector(options.cameraUp, "--camera-up", camera.up)) return why;
+  }
+  if (auto why = rt::cameraProblem(camera)) return fmt::format("the camera: {}", *why);
+  return std::nullopt;
+}
+
 }  // namespace
 
 int runRender(const RenderOptions& options) {
   rt::RenderSettings settings;
-  settings.width = settings.height = static_cast<uint32_t>(options.size);
+  if (!parseSize(options.size, settings.width, settings.height)) {
+    std::fprintf(stderr, "error: --size %s: expected N or WxH, each from 8 to 8192\n", options.size.c_str());
+    return kUsage;
+  }
   settings.frames = static_cast<uint32_t>(options.spp);
   const bool environmentImage = options.environment != "none" && options.environment != "white" &&
                                 options.environment != "sky";
@@ -130,19 +178,15 @@ int runRender(const RenderOptions& options) {
       return kUsage;
     }
   }
-  rt::Mesh mesh;
-  if (options.mesh == "sphere") {
-    mesh = rt::makeSphere();
-  } else if (options.mesh == "plane") {
-    mesh = rt::makePlane();
-    settings.camera.eye = glm::vec3(0.0f, 2.6f, 2.6f);  // looking down at 45 degrees
-  } else {
-    auto loaded = rt::loadObj(options.mesh);
-    if (auto* error = std::get_if<std::string>(&loaded)) {
-      std::fprintf(stderr, "error: %s\n", error->c_str());
-      return kInvalidDocument;
-    }
-    mesh = std::move(std::get<rt::Mesh>(loaded));
+  auto chosen = chooseMesh(options.mesh, searchPaths(options.searchPaths));
+  if (auto* why = std::get_if<std::string>(&chosen)) {
+    std::fprintf(stderr, "error: --mesh %s\n", why->c_str());
+    return kInvalidDocument;
+  }
+  const MeshChoice& mesh = std::get<MeshChoice>(chosen);
+  if (auto why = chooseCamera(options, mesh, settings)) {
+    std::fprintf(stderr, "error: %s\n", why->c_str());
+    return kUsage;
   }
 
   Session session;
@@ -158,7 +202,7 @@ int runRender(const RenderOptions& options) {
     }
   }
   if (printError(outputs.checkDistinct()) || printError(pipeline.checkOutputsAreNotInputs(outputs))) return kUsage;
-  if (options.mesh != "sphere" && options.mesh != "plane" && printError(outputs.checkNotInput(options.mesh, "the mesh"))) {
+  if (!mesh.file.empty() && printError(outputs.checkNotInput(mesh.file, "the mesh"))) {
     return kUsage;
   }
   if (environmentImage && printError(outputs.checkNotInput(options.environment, "the environment image"))) {
@@ -196,7 +240,7 @@ int runRender(const RenderOptions& options) {
       const ir::Material& material = pipeline.materials()[m];
       const MaterialProgram& program = programs[m];
       Progress progress(settings.frames);
-      rt::RenderResult image = renderer.render(mesh, *program.resources, program.shader.interface, program.spirv,
+      rt::RenderResult image = renderer.render(mesh.mesh, *program.resources, program.shader.interface, program.spirv,
                                                settings, [&](uint32_t frame) {
                                                  progress.step(fmt::format("{}: frame {}", material.name, frame));
                                                });

@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// `mxc render`: materials on a sphere (or a plane, or an OBJ mesh) to EXR or PNG.
+/// `mxc render`: materials on a mesh (a sphere by default, MaterialX's shader ball, a glTF or
+/// OBJ file) to EXR or PNG.
 
 #include <string>
 #include <vector>
@@ -14,7 +15,7 @@ namespace mxc::cli {
 struct RenderOptions {
   std::string file;
   std::vector<std::string> outputs;
-  int size = 512;
+  std::string size = "512";  ///< N or WxH
   int spp = 64;
   std::vector<std::string> lights;
   std::string environment = "sky";  ///< none, white, sky, or an image file
@@ -24,7 +25,13 @@ struct RenderOptions {
   float exposure = 0.0f;
   /// Linear R,G,B; empty: the environment image where there is one, else kDefaultBackground.
   std::string background;
-  std::string mesh = "sphere";
+  std::string mesh = "sphere";  ///< cli/MeshArgument.h
+  std::vector<std::string> searchPaths;
+  /// X,Y,Z; empty: framed from the mesh's bounds (runtime/Camera.h).
+  std::string cameraPosition;
+  std::string cameraTarget;  ///< X,Y,Z; empty: the centre of the mesh's bounds
+  std::string cameraUp;      ///< X,Y,Z; empty: +y
+  float fovDegrees = 45.0f;  ///< vertical
   MaterialOptions materials;
   DeviceOptions device;
 };

@@ -1,12 +1,9 @@
 #pragma once
 /// \file
-/// Triangle meshes for the renderer: a UV sphere, a plane, and Wavefront OBJ files, each with
-/// normals, tangents (along increasing u) and texture coordinates.
+/// Triangle meshes for the renderer, each with normals, tangents (along increasing u) and
+/// texture coordinates: a UV sphere and a plane made here; files are read by runtime/MeshFile.h.
 
 #include <cstdint>
-#include <filesystem>
-#include <string>
-#include <variant>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -32,9 +29,13 @@ struct Mesh {
 Mesh makeSphere(uint32_t segments = 128, uint32_t rings = 64);
 /// A square of side 2 in the xz plane facing +y, uv [0, 1]^2.
 Mesh makePlane();
-/// Reads an OBJ file (v, vt, vn, f with polygons as fans; other statements ignored). Missing
-/// normals are computed from the faces; tangents from the texture coordinates (or any
-/// perpendicular when there are none). Returns an error "path:line: message" instead.
-std::variant<Mesh, std::string> loadObj(const std::filesystem::path& path);
+/// The sphere about a mesh that framing fits: centred on its bounding box, through its
+/// farthest vertex (tighter than the box's half diagonal: exactly the unit sphere for
+/// makeSphere()).
+struct MeshBounds {
+  glm::vec3 center{0.0f};
+  float radius = 0.0f;
+};
+MeshBounds meshBounds(const Mesh& mesh);
 
 }  // namespace mxc::rt

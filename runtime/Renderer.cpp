@@ -188,7 +188,7 @@ VkPipeline createPipeline(VkDevice device, VkRenderPass pass, VkPipelineLayout l
 /// right-handed view. draw() and renderBackground() share them.
 glm::mat4 viewToClip(const Camera& camera, uint32_t width, uint32_t height) {
   glm::mat4 projection =
-      glm::perspectiveRH_ZO(glm::radians(camera.fovDegrees), float(width) / float(height), 0.05f, 100.0f);
+      glm::perspectiveRH_ZO(glm::radians(camera.fovDegrees), float(width) / float(height), camera.nearPlane, camera.farPlane);
   projection[1][1] *= -1.0f;
   return projection;
 }

@@ -13,6 +13,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "runtime/Camera.h"
 #include "runtime/Descriptors.h"
 #include "runtime/EnvironmentMap.h"
 #include "runtime/ImageIO.h"
@@ -32,13 +33,6 @@ struct Light {
 /// Map: RenderSettings::environmentMap, importance-sampled and combined with the closure's
 /// samples by multiple importance sampling.
 enum class Environment : uint8_t { None, White, Sky, Map };
-
-struct Camera {
-  glm::vec3 eye{0.0f, 0.0f, 3.4f};
-  glm::vec3 target{0.0f};
-  glm::vec3 up{0.0f, 1.0f, 0.0f};
-  float fovDegrees = 45.0f;
-};
 
 struct RenderSettings {
   uint32_t width = 512;

@@ -255,5 +255,55 @@ TEST(RenderCommand, RefusesEnvironmentImagesItCannotUse) {
   fs::remove(nan);
 }
 
+TEST(RenderCommand, RendersTheShaderBallFoundOnTheSearchPath) {
+  const fs::path tree = sharedDir() / "conformance/materialx-tree";
+  if (!fs::exists(tree / "resources/Geometry/shaderball.glb")) GTEST_SKIP() << "no shader ball under " << tree;
+  // By --search-path, and by MATERIALX_SEARCH_PATH (after an empty and a missing entry).
+  for (const auto& [shell, option] : {std::pair<std::string, std::string>{"", "--search-path " + tree.string()},
+                                      {"MATERIALX_SEARCH_PATH=:/nonexistent:" + tree.string(), ""}}) {
+    const fs::path out = writeTemp("ball.exr", "");
+    CommandRun r = mxc("render " + corpus(kDefault) + " -o " + out.string() + " --mesh shaderball --size 48x32 --spp 1 " + option, shell);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto read = rt::readImage(out);
+    fs::remove(out);
+    ASSERT_TRUE(std::holds_alternative<rt::RgbaImage>(read));
+    const rt::RgbaImage& image = std::get<rt::RgbaImage>(read);
+    ASSERT_EQ(image.width, 48u);
+    ASSERT_EQ(image.height, 32u);
+    // Framed to fit: the centre is covered, the corners are not, and the ball takes a fair share.
+    EXPECT_EQ(image.at(24, 16)[3], 1.0f);
+    EXPECT_EQ(image.at(0, 0)[3], 0.0f);
+    EXPECT_EQ(image.at(47, 31)[3], 0.0f);
+    double covered = 0.0;
+    for (uint32_t y = 0; y < 32; ++y) {
+      for (uint32_t x = 0; x < 48; ++x) covered += image.at(x, y)[3];
+    }
+    EXPECT_GT(covered / (48.0 * 32.0), 0.15);
+    EXPECT_LT(covered / (48.0 * 32.0), 0.6);
+  }
+}
+
+TEST(RenderCommand, RefusesBadSizesMeshesAndCamerasWritingNothing) {
+  const fs::path png = fs::temp_directory_path() / "mxc-refused-mesh.png";
+  const std::vector<std::tuple<std::string, int, std::string>> cases = {
+      {"--size 7", 2, "--size 7"},
+      {"--size 64x", 2, "expected N or WxH"},
+      {"--size 9000x64", 2, "from 8 to 8192"},
+      {"--mesh nosuch", 1, "no mesh file named 'nosuch'"},
+      {"--mesh nosuch --search-path /nonexistent", 1, "/nonexistent/resources/Geometry/nosuch.glb"},
+      {"--mesh /nonexistent/ball.glb", 1, "/nonexistent/ball.glb"},
+      {"--camera-position 0,0,3 --camera-up 0,0,1", 2, "along its view direction"},
+      {"--camera-position 0,0,0 --camera-target 0,0,0", 2, "at its target"},
+      {"--camera-target 1,0,0", 2, "needs --camera-position"},
+      {"--camera-position 1,2", 2, "expected X,Y,Z"}};
+  for (const auto& [options, code, message] : cases) {
+    fs::remove(png);
+    CommandRun r = mxc("render " + corpus(kDefault) + " -o " + png.string() + " --spp 1 " + options, "MATERIALX_SEARCH_PATH=");
+    EXPECT_EQ(r.exitCode, code) << options << ": " << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << options << ": " << r.err;
+    EXPECT_FALSE(fs::exists(png)) << options;
+  }
+}
+
 }  // namespace
 }  // namespace mxc::test

@@ -1,0 +1,454 @@
+#include "runtime/MeshFile.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <optional>
+#include <tuple>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <tiny_gltf.h>
+#include <tiny_obj_loader.h>
+
+#include "compiler/common/InputFile.h"
+#include "runtime/Tangents.h"
+
+namespace mxc::rt {
+
+namespace {
+
+/// A mesh file, or a buffer a .gltf names, larger than this is refused.
+constexpr size_t kMaxMeshBytes = size_t{2} << 30;
+
+/// Unit face normal of a triangle, or nullopt when it has no area.
+std::optional<glm::vec3> faceNormal(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+  const glm::vec3 n = glm::cross(b - a, c - a);
+  const float length = glm::length(n);
+  if (!(length > 1e-30f)) return std::nullopt;
+  return n / length;  // length > 0
+}
+
+/// Unit normal from a sum, or +y when the sum vanishes (a vertex of degenerate faces only).
+glm::vec3 unitOr(glm::vec3 sum, glm::vec3 fallback) {
+  const float length = glm::length(sum);
+  return length > 1e-30f ? sum / length : fallback;  // length > 0
+}
+
+/// Every triangle gets its own three vertices with the face's normal (glTF 2.0 spec, 3.7.2.1).
+void makeFlat(Mesh& mesh) {
+  Mesh flat;
+  flat.vertices.reserve(mesh.indices.size());
+  for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+    Vertex v[3] = {mesh.vertices[mesh.indices[i]], mesh.vertices[mesh.indices[i + 1]], mesh.vertices[mesh.indices[i + 2]]};
+    const glm::vec3 n = faceNormal(v[0].position, v[1].position, v[2].position).value_or(glm::vec3(0, 1, 0));
+    for (Vertex& x : v) {
+      x.normal = n;
+      flat.indices.push_back(static_cast<uint32_t>(flat.vertices.size()));
+      flat.vertices.push_back(x);
+    }
+  }
+  mesh = std::move(flat);
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+bool finite(const Mesh& mesh) {
+  for (const Vertex& v : mesh.vertices) {
+    const float sum = v.position.x + v.position.y + v.position.z + v.normal.x + v.normal.y + v.normal.z + v.uv.x + v.uv.y +
+                      v.tangent.x + v.tangent.y + v.tangent.z;
+    if (!std::isfinite(sum)) return false;
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// glTF
+
+/// tinygltf's file access, through readInputFile: a buffer URI naming a FIFO or /dev/zero is
+/// refused instead of blocking or filling memory; nothing is ever written.
+bool gltfFileExists(const std::string& path, void*) { return !inputFileProblem(path); }
+std::string gltfExpandPath(const std::string& path, void*) { return path; }
+bool gltfReadFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  auto bytes = readInputFile(path, kMaxMeshBytes);
+  if (auto* why = std::get_if<1>(&bytes)) {
+    if (err) *err += fmt::format("cannot read '{}': {}\n", path, *why);
+    return false;
+  }
+  const std::string& data = std::get<0>(bytes);
+  out->assign(data.begin(), data.end());
+  return true;
+}
+bool gltfRefuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "mxc does not write glTF files\n";
+  return false;
+}
+/// Images are not decoded: the material's textures come from its document.
+bool gltfSkipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;
+}
+
+/// Whether the accessor's last element ends inside its view and the view inside its buffer
+/// (written so that no sum can overflow).
+bool fitsInView(size_t bufferBytes, const tinygltf::BufferView& view, const tinygltf::Accessor& a, size_t elementBytes,
+                size_t stride) {
+  if (a.count == 0) return true;
+  if (view.byteOffset > bufferBytes || view.byteLength > bufferBytes - view.byteOffset) return false;
+  if (a.byteOffset > view.byteLength || elementBytes > view.byteLength - a.byteOffset) return false;
+  return (a.count - 1) <= (view.byteLength - a.byteOffset - elementBytes) / stride;  // stride >= 1
+}
+
+/// Reads accessor `index` as `components` floats per element into `out` (FLOAT, or the
+/// normalised integer types of glTF 2.0 spec 3.11 "normalized" with their decoding formulas).
+std::optional<std::string> readFloats(const tinygltf::Model& model, int index, int components, std::vector<float>& out) {
+  if (index < 0 || size_t(index) >= model.accessors.size()) return fmt::format("accessor {} does not exist", index);
+  const tinygltf::Accessor& a = model.accessors[size_t(index)];
+  if (a.sparse.isSparse) return fmt::format("accessor {} is sparse, which mxc does not read", index);
+  if (tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type)) != components) {
+    return fmt::format("accessor {} has {} components per element, expected {}", index,
+                       tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type)), components);
+  }
+  const int componentBytes = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
+  if (componentBytes <= 0) return fmt::format("accessor {} has an unknown component type {}", index, a.componentType);
+  if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !a.normalized) {
+    return fmt::format("accessor {} holds integers that are not normalized", index);
+  }
+  out.assign(a.count * size_t(components), 0.0f);
+  if (a.bufferView < 0) return std::nullopt;  // no buffer view: all zeros (glTF 2.0 spec, 3.6.2.1)
+  if (size_t(a.bufferView) >= model.bufferViews.size()) return fmt::format("accessor {}: no buffer view {}", index, a.bufferView);
+  const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
+  if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size()) return fmt::format("buffer view {}: no buffer {}", a.bufferView, view.buffer);
+  const std::vector<unsigned char>& data = model.buffers[size_t(view.buffer)].data;
+  const size_t elementBytes = size_t(componentBytes) * size_t(components);
+  const size_t stride = view.byteStride ? view.byteStride : elementBytes;
+  if (!fitsInView(data.size(), view, a, elementBytes, stride)) return fmt::format("accessor {} reaches past the end of its buffer", index);
+  const unsigned char* base = data.data() + view.byteOffset + a.byteOffset;
+  for (size_t e = 0; e < a.count; ++e) {
+    const unsigned char* element = base + e * stride;
+    for (int c = 0; c < components; ++c) {
+      const unsigned char* p = element + size_t(c) * size_t(componentBytes);
+      float v = 0.0f;
+      switch (a.componentType) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: std::memcpy(&v, p, 4); break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: v = float(*p) / 255.0f; break;
+        case TINYGLTF_COMPONENT_TYPE_BYTE: v = std::max(float(int8_t(*p)) / 127.0f, -1.0f); break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t s; std::memcpy(&s, p, 2); v = float(s) / 65535.0f; break; }
+        case TINYGLTF_COMPONENT_TYPE_SHORT: { int16_t s; std::memcpy(&s, p, 2); v = std::max(float(s) / 32767.0f, -1.0f); break; }
+        default: return fmt::format("accessor {}: component type {} cannot hold this attribute", index, a.componentType);
+      }
+      out[e * size_t(components) + size_t(c)] = v;
+    }
+  }
+  return std::nullopt;
+}
+
+/// Reads an index accessor (unsigned byte, short or int; glTF 2.0 spec 3.7.2.1).
+std::optional<std::string> readIndices(const tinygltf::Model& model, int index, std::vector<uint32_t>& out) {
+  if (index < 0 || size_t(index) >= model.accessors.size()) return fmt::format("accessor {} does not exist", index);
+  const tinygltf::Accessor& a = model.accessors[size_t(index)];
+  if (a.sparse.isSparse) return fmt::format("accessor {} is sparse, which mxc does not read", index);
+  if (a.type != TINYGLTF_TYPE_SCALAR) return fmt::format("index accessor {} is not scalar", index);
+  const int bytes = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
+  if (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+      a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
+    return fmt::format("index accessor {} is not of an unsigned integer type", index);
+  }
+  out.assign(a.count, 0);
+  if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size()) return fmt::format("index accessor {} has no buffer view", index);
+  const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
+  if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size()) return fmt::format("buffer view {}: no buffer {}", a.bufferView, view.buffer);
+  const std::vector<unsigned char>& data = model.buffers[size_t(view.buffer)].data;
+  const size_t stride = view.byteStride ? view.byteStride : size_t(bytes);
+  if (!fitsInView(data.size(), view, a, size_t(bytes), stride)) {
+    return fmt::format("index accessor {} reaches past the end of its buffer", index);
+  }
+  const unsigned char* base = data.data() + view.byteOffset + a.byteOffset;
+  for (size_t e = 0; e < a.count; ++e) {
+    const unsigned char* p = base + e * stride;
+    if (bytes == 1) {
+      out[e] = *p;
+    } else if (bytes == 2) {
+      uint16_t s;
+      std::memcpy(&s, p, 2);
+      out[e] = s;
+    } else {
+      std::memcpy(&out[e], p, 4);
+    }
+  }
+  return std::nullopt;
+}
+
+/// A node's local transform: its matrix, else translation * rotation * scale (glTF 2.0 spec,
+/// 3.5.3).
+glm::dmat4 localTransform(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, as glTF
+  glm::dmat4 m(1.0);
+  if (node.translation.size() == 3) m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+  if (node.rotation.size() == 4) {
+    // glTF stores x, y, z, w; glm's constructor takes w first.
+    m *= glm::mat4_cast(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
+  }
+  if (node.scale.size() == 3) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+  return m;
+}
+
+/// Triangle corner indices of a primitive from its mode (lists, strips, fans; glTF 2.0 spec
+/// 3.7.2.1), in counter-clockwise order.
+std::vector<uint32_t> triangles(int mode, const std::vector<uint32_t>& order) {
+  std::vector<uint32_t> out;
+  if (mode == TINYGLTF_MODE_TRIANGLES || mode == -1) {
+    out.assign(order.begin(), order.begin() + long(order.size() / 3 * 3));
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+    for (size_t i = 0; i + 2 < order.size(); ++i) {
+      // Every second triangle of a strip is wound the other way.
+      if (i % 2 == 0) out.insert(out.end(), {order[i], order[i + 1], order[i + 2]});
+      else out.insert(out.end(), {order[i + 1], order[i], order[i + 2]});
+    }
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+    for (size_t i = 1; i + 1 < order.size(); ++i) out.insert(out.end(), {order[0], order[i], order[i + 1]});
+  }
+  return out;
+}
+
+/// One primitive in world space, its normals and tangents complete.
+std::variant<Mesh, std::string> readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                                              const glm::dmat4& toWorld) {
+  auto attribute = [&](const char* name) {
+    auto found = primitive.attributes.find(name);
+    return found == primitive.attributes.end() ? -1 : found->second;
+  };
+  std::vector<float> positions, normals, uvs, tangents;
+  if (attribute("POSITION") < 0) return std::string("a primitive has no POSITION");
+  if (auto why = readFloats(model, attribute("POSITION"), 3, positions)) return *why;
+  const size_t count = positions.size() / 3;
+  if (count > size_t{1} << 31) return std::string("a primitive has more than 2^31 vertices");
+  auto sized = [&](std::vector<float>& values, size_t components, const char* name) -> std::optional<std::string> {
+    if (values.size() != count * components) return fmt::format("{} has {} elements, POSITION {}", name, values.size() / components, count);
+    return std::nullopt;
+  };
+  if (attribute("NORMAL") >= 0) {
+    if (auto why = readFloats(model, attribute("NORMAL"), 3, normals)) return *why;
+    if (auto why = sized(normals, 3, "NORMAL")) return *why;
+  }
+  if (attribute("TEXCOORD_0") >= 0) {
+    if (auto why = readFloats(model, attribute("TEXCOORD_0"), 2, uvs)) return *why;
+    if (auto why = sized(uvs, 2, "TEXCOORD_0")) return *why;
+  }
+  if (attribute("TANGENT") >= 0 && !normals.empty()) {  // tangents without normals are ignored (3.7.2.1)
+    if (auto why = readFloats(model, attribute("TANGENT"), 4, tangents)) return *why;
+    if (auto why = sized(tangents, 4, "TANGENT")) return *why;
+  }
+  std::vector<uint32_t> order;
+  if (primitive.indices >= 0) {
+    if (auto why = readIndices(model, primitive.indices, order)) return *why;
+    for (uint32_t i : order) {
+      if (i >= count) return fmt::format("index {} of accessor {} is past the {} vertices", i, primitive.indices, count);
+    }
+  } else {
+    order.resize(count);
+    for (size_t i = 0; i < count; ++i) order[i] = uint32_t(i);
+  }
+  Mesh mesh;
+  mesh.indices = triangles(primitive.mode, order);
+  const glm::dmat3 linear(toWorld);
+  const double det = glm::determinant(linear);
+  // A mirroring transform turns counter-clockwise faces clockwise (glTF 2.0 spec, 3.7.1).
+  if (det < 0.0) {
+    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
+  }
+  // Normals by the inverse transpose; a singular transform (a zero scale) flattens the mesh,
+  // and its normals are then left as the file gives them.
+  const glm::dmat3 normalMatrix = std::abs(det) > 1e-300 ? glm::transpose(glm::inverse(linear)) : glm::dmat3(1.0);
+  mesh.vertices.resize(count);
+  for (size_t v = 0; v < count; ++v) {
+    Vertex& x = mesh.vertices[v];
+    x.position = glm::vec3(toWorld * glm::dvec4(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2], 1.0));
+    if (!normals.empty()) {
+      x.normal = unitOr(glm::vec3(normalMatrix * glm::dvec3(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2])), glm::vec3(0, 1, 0));
+    }
+    // glTF's v runs down the image; MaterialX's (and this renderer's) up.
+    if (!uvs.empty()) x.uv = glm::vec2(uvs[2 * v], 1.0f - uvs[2 * v + 1]);
+    if (!tangents.empty()) {
+      const glm::vec3 t = glm::vec3(linear * glm::dvec3(tangents[4 * v], tangents[4 * v + 1], tangents[4 * v + 2]));
+      // The flip of v leaves the bitangent's direction (image up) unchanged; a mirror flips it.
+      const float w = (tangents[4 * v + 3] < 0.0f ? -1.0f : 1.0f) * (det < 0.0 ? -1.0f : 1.0f);
+      glm::vec3 unit = t - x.normal * glm::dot(x.normal, t);
+      const float length = glm::length(unit);
+      unit = length > 1e-30f ? unit / length : glm::vec3(0.0f);  // length > 0; zero marks "compute"
+      x.tangent = glm::vec4(unit, w);
+    }
+  }
+  if (normals.empty()) makeFlat(mesh);
+  bool missingTangent = tangents.empty();
+  for (const Vertex& x : mesh.vertices) missingTangent = missingTangent || glm::vec3(x.tangent) == glm::vec3(0.0f);
+  if (missingTangent) generateTangents(mesh);
+  return mesh;
+}
+
+std::variant<Mesh, std::string> loadGltf(const std::filesystem::path& path, const std::string& bytes, bool binary) {
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(&gltfSkipImage, nullptr);
+  loader.SetFsCallbacks({&gltfFileExists, &gltfExpandPath, &gltfReadFile, &gltfRefuseWrite, nullptr});
+  tinygltf::Model model;
+  std::string err, warn;
+  const std::string base = path.parent_path().empty() ? std::string(".") : path.parent_path().string();
+  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                       static_cast<unsigned int>(bytes.size()), base)
+                         : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()), base);
+  auto trimmed = [](std::string s) {
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
+    for (char& c : s) c = c == '\n' ? ';' : c;
+    return s;
+  };
+  if (!ok) return fmt::format("{}: {}", path.string(), err.empty() ? std::string("not a glTF 2.0 file") : trimmed(err));
+
+  // The node hierarchy, each node once (a node has at most one parent: glTF 2.0 spec, 3.5.1).
+  std::vector<int> roots;
+  if (!model.scenes.empty()) {
+    const size_t scene = model.defaultScene >= 0 && size_t(model.defaultScene) < model.scenes.size() ? size_t(model.defaultScene) : 0;
+    roots = model.scenes[scene].nodes;
+  } else {
+    std::vector<bool> child(model.nodes.size(), false);
+    for (const tinygltf::Node& n : model.nodes) {
+      for (int c : n.children) {
+        if (c >= 0 && size_t(c) < child.size()) child[size_t(c)] = true;
+      }
+    }
+    for (size_t n = 0; n < model.nodes.size(); ++n) {
+      if (!child[n]) roots.push_back(int(n));
+    }
+  }
+  Mesh out;
+  std::vector<bool> visited(model.nodes.size(), false);
+  std::vector<std::pair<int, glm::dmat4>> stack;
+  for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.emplace_back(*it, glm::dmat4(1.0));
+  while (!stack.empty()) {
+    auto [index, parent] = stack.back();
+    stack.pop_back();
+    if (index < 0 || size_t(index) >= model.nodes.size()) return fmt::format("{}: node {} does not exist", path.string(), index);
+    if (visited[size_t(index)]) return fmt::format("{}: node {} appears twice in the hierarchy", path.string(), index);
+    visited[size_t(index)] = true;
+    const tinygltf::Node& node = model.nodes[size_t(index)];
+    const glm::dmat4 toWorld = parent * localTransform(node);
+    if (node.mesh >= 0) {
+      if (size_t(node.mesh) >= model.meshes.size()) return fmt::format("{}: node {}: mesh {} does not exist", path.string(), index, node.mesh);
+      const tinygltf::Mesh& gltfMesh = model.meshes[size_t(node.mesh)];
+      for (size_t p = 0; p < gltfMesh.primitives.size(); ++p) {
+        auto read = readPrimitive(model, gltfMesh.primitives[p], toWorld);
+        if (auto* why = std::get_if<std::string>(&read)) {
+          return fmt::format("{}: mesh {} ('{}') primitive {}: {}", path.string(), node.mesh, gltfMesh.name, p, *why);
+        }
+        const Mesh& part = std::get<Mesh>(read);
+        if (out.vertices.size() + part.vertices.size() > size_t{1} << 31) return fmt::format("{}: more than 2^31 vertices", path.string());
+        const uint32_t offset = static_cast<uint32_t>(out.vertices.size());
+        out.vertices.insert(out.vertices.end(), part.vertices.begin(), part.vertices.end());
+        for (uint32_t i : part.indices) out.indices.push_back(offset + i);
+      }
+    }
+    for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.emplace_back(*c, toWorld);
+  }
+  if (out.indices.empty()) return fmt::format("{}: the file has no triangles in its scene", path.string());
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// OBJ
+
+std::variant<Mesh, std::string> loadObjText(const std::filesystem::path& path, const std::string& text) {
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  // No material library is read (empty MTL text): a material comes from the document.
+  if (!reader.ParseFromString(text, "", config)) {
+    std::string why = reader.Error();
+    while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back()))) why.pop_back();
+    return fmt::format("{}: {}", path.string(), why.empty() ? std::string("not an OBJ file") : why);
+  }
+  const tinyobj::attrib_t& attrib = reader.GetAttrib();
+  const size_t positions = attrib.vertices.size() / 3, normals = attrib.normals.size() / 3, uvs = attrib.texcoords.size() / 2;
+  Mesh mesh;
+  // One vertex per distinct (position, texture coordinate, normal) triple.
+  std::map<std::tuple<int, int, int>, uint32_t> vertexOf;
+  std::vector<int> positionOf;  // per vertex, for smooth normals
+  bool missingNormals = false;
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    size_t corner = 0;
+    for (unsigned char faceSize : shape.mesh.num_face_vertices) {
+      if (faceSize != 3) return fmt::format("{}: shape '{}' has a face of {} corners after triangulation", path.string(), shape.name, int(faceSize));
+      for (int k = 0; k < 3; ++k, ++corner) {
+        if (corner >= shape.mesh.indices.size()) return fmt::format("{}: shape '{}' has fewer indices than corners", path.string(), shape.name);
+        const tinyobj::index_t& ix = shape.mesh.indices[corner];
+        if (ix.vertex_index < 0 || size_t(ix.vertex_index) >= positions || ix.normal_index >= int(normals) ||
+            ix.texcoord_index >= int(uvs) || ix.normal_index < -1 || ix.texcoord_index < -1) {
+          return fmt::format("{}: shape '{}': face index out of range (corner {})", path.string(), shape.name, corner);
+        }
+        const auto key = std::make_tuple(ix.vertex_index, ix.texcoord_index, ix.normal_index);
+        auto [found, inserted] = vertexOf.emplace(key, static_cast<uint32_t>(mesh.vertices.size()));
+        if (inserted) {
+          Vertex v{};
+          const size_t p = size_t(ix.vertex_index);
+          v.position = {attrib.vertices[3 * p], attrib.vertices[3 * p + 1], attrib.vertices[3 * p + 2]};
+          if (ix.normal_index >= 0) {
+            const size_t n = size_t(ix.normal_index);
+            v.normal = unitOr({attrib.normals[3 * n], attrib.normals[3 * n + 1], attrib.normals[3 * n + 2]}, glm::vec3(0.0f));
+          }
+          if (ix.texcoord_index >= 0) {
+            const size_t t = size_t(ix.texcoord_index);
+            v.uv = {attrib.texcoords[2 * t], attrib.texcoords[2 * t + 1]};  // OBJ's v runs up, as ours
+          }
+          missingNormals = missingNormals || v.normal == glm::vec3(0.0f);
+          mesh.vertices.push_back(v);
+          positionOf.push_back(ix.vertex_index);
+        }
+        mesh.indices.push_back(found->second);
+      }
+    }
+  }
+  if (mesh.indices.empty()) return fmt::format("{}: the mesh has no faces (f lines)", path.string());
+  if (missingNormals) {
+    // Smooth normals: the faces around each position, weighted by their area (the length of
+    // the cross product is twice the area).
+    std::vector<glm::vec3> sums(positions, glm::vec3(0.0f));
+    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+      const Vertex* v[3] = {&mesh.vertices[mesh.indices[i]], &mesh.vertices[mesh.indices[i + 1]], &mesh.vertices[mesh.indices[i + 2]]};
+      const glm::vec3 n = glm::cross(v[1]->position - v[0]->position, v[2]->position - v[0]->position);
+      for (int k = 0; k < 3; ++k) sums[size_t(positionOf[mesh.indices[i + size_t(k)]])] += n;
+    }
+    for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+      if (mesh.vertices[v].normal == glm::vec3(0.0f)) mesh.vertices[v].normal = unitOr(sums[size_t(positionOf[v])], glm::vec3(0, 1, 0));
+    }
+  }
+  generateTangents(mesh);
+  return mesh;
+}
+
+}  // namespace
+
+std::variant<Mesh, std::string> loadMesh(const std::filesystem::path& path) {
+  // What the path is comes first (a FIFO, a directory, nothing): then its format.
+  if (auto why = inputFileProblem(path)) return fmt::format("cannot read the mesh '{}': {}", path.string(), *why);
+  const std::string extension = lower(path.extension().string());
+  if (extension != ".obj" && extension != ".glb" && extension != ".gltf") {
+    return fmt::format("{}: unknown mesh format '{}' (expected .glb, .gltf or .obj)", path.string(), path.extension().string());
+  }
+  auto bytes = readInputFile(path, kMaxMeshBytes);
+  if (auto* why = std::get_if<1>(&bytes)) return fmt::format("cannot read the mesh '{}': {}", path.string(), *why);
+  auto mesh = extension == ".obj" ? loadObjText(path, std::get<0>(bytes)) : loadGltf(path, std::get<0>(bytes), extension == ".glb");
+  if (auto* loaded = std::get_if<Mesh>(&mesh); loaded && !finite(*loaded)) {
+    return fmt::format("{}: the mesh holds NaN or infinite values", path.string());
+  }
+  return mesh;
+}
+
+}  // namespace mxc::rt
