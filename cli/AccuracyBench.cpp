@@ -563,7 +563,7 @@ int runAccuracyBench(const AccuracyBenchOptions& options) {
     std::fprintf(stderr, "error: %s\n", why->c_str());
     return kOutputFailed;
   }
-  auto encoded = rt::encodeImage(png, std::get<rt::RgbaImage>(plot), 0.0f, rt::ToneMapping::Display);
+  auto encoded = rt::encodeImage(png, std::get<rt::RgbaImage>(plot), rt::ToneMapping::None);
   std::optional<std::string> error;
   if (auto* why = std::get_if<1>(&encoded)) error = *why;
   if (!error) error = outputs.stage(png, std::move(std::get<0>(encoded)));

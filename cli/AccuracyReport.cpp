@@ -164,7 +164,7 @@ std::string accuracyCsv(const AccuracyReport& r) {
 
 namespace {
 
-/// A canvas of display-referred colours in [0, 1] (encoded with rt::ToneMapping::Display).
+/// A canvas of display-referred colours in [0, 1] (encoded with rt::ToneMapping::None).
 class Canvas {
  public:
   Canvas(uint32_t width, uint32_t height) {

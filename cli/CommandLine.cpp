@@ -181,9 +181,9 @@ void registerRender(CLI::App& app, int& exitCode) {
       "render",
       "Render each material on a mesh (a sphere by default): lights evaluated exactly, the environment (analytic, or an HDR image "
       "importance-sampled with MIS) integrated by Monte Carlo over --spp frames. .exr: linear radiance with "
-      "coverage alpha; .png (and other 8-bit formats): tone-mapped (ACES fit), sRGB, over --background or the "
+      "coverage alpha; .png (and other 8-bit formats): tone-mapped (--tonemap), sRGB, over --background or the "
       "environment image. With several materials, file names get _<material>");
-  command->add_option("file", options->file, "The .mtlx document")->required();
+  command->add_option("file", options->file, "The .mtlx document, or a scene file (.json: docs/scenes.md)")->required();
   command->add_option("-o,--output", options->outputs, "Output image (.png, .exr, .jpg, ...); repeatable")->required();
   command->add_option("--size", options->size, "N (square) or WxH, in pixels, each 8 to 8192");
   command->add_option("--spp", options->spp, "Samples (frames) per pixel")->check(CLI::Range(1, 1 << 20));
@@ -202,6 +202,10 @@ void registerRender(CLI::App& app, int& exitCode) {
       ->check(finiteNumber(true));
   command->add_option("--exposure", options->exposure, "Exposure of 8-bit outputs, in stops: scales the rendered radiance, not the --background colour")->check(finiteNumber(false))
       ->check(CLI::Range(-64.0, 64.0));
+  command->add_option("--tonemap", options->toneMapping,
+                      "Tone curve of 8-bit outputs: aces (Narkowicz's ACES fit, default), neutral (Khronos PBR Neutral) "
+                      "or none (clamp); named in the file's metadata")
+      ->check(CLI::IsMember({"none", "aces", "neutral"}));
   command->add_option("--background", options->background,
                       "Background of 8-bit outputs, linear R,G,B (default: the environment image, else 0.05,0.05,0.05)");
   command->add_option("--mesh", options->mesh,
@@ -216,7 +220,12 @@ void registerRender(CLI::App& app, int& exitCode) {
   command->add_option("--fov", options->fovDegrees, "Vertical field of view in degrees")->check(CLI::Range(1.0, 170.0));
   addMaterialOptions(*command, options->materials);
   addDeviceOptions(*command, options->device);
-  command->callback([options, &exitCode] { exitCode = runRender(*options); });
+  command->callback([options, command, &exitCode] {
+    for (const CLI::Option* option : command->get_options()) {
+      if (option->count() > 0 && !option->get_lnames().empty()) options->explicitOptions.push_back("--" + option->get_lnames()[0]);
+    }
+    exitCode = runRender(*options);
+  });
 }
 
 void registerBench(CLI::App& app, int& exitCode) {

@@ -160,13 +160,13 @@ int runFurnace(const FurnaceOptions& options) {
                         {"materials", nlohmann::json::array()}};
   Progress progress(pipeline.materials().size());
   for (const ir::Material& material : pipeline.materials()) {
-    progress.step(material.name);
     auto program = prepareMaterial(pipeline, session, *device.context(), material, glsl::ShaderKind::Furnace);
     if (!program) return kInvalidDocument;
     rt::FurnaceEstimator furnace(*device.context(), *tables, *program->resources, program->shader.interface,
                                  program->spirv);
     std::vector<rt::Albedo> albedo =
         furnace.estimate(views, static_cast<uint32_t>(options.samples), static_cast<uint32_t>(options.seed));
+    progress.step(material.name);
     nlohmann::json m{{"name", material.name}, {"angles", nlohmann::json::array()}};
     for (size_t k = 0; k < albedo.size(); ++k) {
       m["angles"].push_back({{"theta_deg", thetas[k] * 180.0 / M_PI},

@@ -1,6 +1,10 @@
 #include "cli/Harness.h"
 
+#include <sys/ioctl.h>
 #include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -58,15 +62,35 @@ std::optional<MaterialProgram> prepareMaterial(MaterialPipeline& pipeline, Sessi
   return program;
 }
 
-Progress::Progress(size_t total) : total_(total), tty_(isatty(fileno(stderr)) != 0) {}
+Progress::Progress(size_t total)
+    : total_(total), tty_(isatty(fileno(stderr)) != 0), start_(std::chrono::steady_clock::now()) {}
 
 void Progress::step(const std::string& what) {
   ++done_;
-  if (tty_ && total_ > 1) std::fprintf(stderr, "\r\033[K[%zu/%zu] %s", done_, total_, what.c_str());
+  if (!tty_ || total_ == 0) return;
+  using namespace std::chrono;
+  const auto now = steady_clock::now();
+  const double elapsed = duration<double>(now - start_).count();
+  if (elapsed < 1.0 || (drawn_ && now - lastDraw_ < milliseconds(100) && done_ < total_)) return;
+  lastDraw_ = now;
+  drawn_ = true;
+  const size_t done = std::min(done_, total_);
+  const double share = double(done) / double(total_);  // total_ > 0
+  const int left = int(std::lround(elapsed * double(total_ - done) / double(done)));  // done >= 1 here
+  constexpr int kBar = 24;
+  const int filled = int(share * kBar);
+  // The estimate before the label: a narrow terminal cuts the label, not the estimate.
+  std::string line = fmt::format("[{}{}] {:3.0f}% ETA {}:{:02d}  {}/{} {}", std::string(size_t(filled), '#'),
+                                 std::string(size_t(kBar - filled), '-'), 100.0 * share, left / 60, left % 60, done,
+                                 total_, what);
+  winsize size{};
+  const size_t columns = ioctl(fileno(stderr), TIOCGWINSZ, &size) == 0 && size.ws_col > 1 ? size.ws_col : 80;
+  if (line.size() > columns - 1) line.resize(columns - 1);  // no wrap: "\r" returns to the line's start
+  std::fprintf(stderr, "\r\033[K%s", line.c_str());
 }
 
 Progress::~Progress() {
-  if (tty_ && total_ > 1 && done_ > 0) std::fprintf(stderr, "\r\033[K");
+  if (drawn_) std::fprintf(stderr, "\r\033[K");
 }
 
 }  // namespace mxc::cli

@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
@@ -56,10 +57,14 @@ struct MaterialProgram {
 std::optional<MaterialProgram> prepareMaterial(MaterialPipeline& pipeline, Session& session, rt::VulkanContext& context,
                                                const ir::Material& material, glsl::ShaderKind kind);
 
-/// "[k/n] what" on stderr, rewritten in place, only when stderr is a terminal.
+/// A progress bar with the share done and an estimate of the time left, on stderr, rewritten
+/// in place: only when stderr is a terminal and the work has taken more than a second, at most
+/// ten times a second, cut to the terminal's width (a line that wraps cannot be rewritten), and
+/// cleared when the object is destroyed, so nothing of it stays before the command's output.
 class Progress {
  public:
   explicit Progress(size_t total);
+  /// One more unit of the total is done; `what` says where the work is.
   void step(const std::string& what);
   ~Progress();
 
@@ -67,6 +72,9 @@ class Progress {
   size_t total_;
   size_t done_ = 0;
   bool tty_;
+  bool drawn_ = false;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point lastDraw_;
 };
 
 }  // namespace mxc::cli

@@ -12,6 +12,8 @@
 #include "cli/MaterialPipeline.h"
 #include "cli/MeshArgument.h"
 #include "cli/OutputSet.h"
+#include "cli/RenderOutput.h"
+#include "cli/Scene.h"
 #include "compiler/glsl/Contract.h"
 #include "runtime/EnvironmentMap.h"
 #include "runtime/ImageIO.h"
@@ -80,20 +82,6 @@ bool parseLight(const std::string& text, rt::Light& light, std::string& why) {
   return true;
 }
 
-/// "N" or "WxH", each 8 to 8192.
-bool parseSize(const std::string& text, uint32_t& width, uint32_t& height) {
-  const size_t x = text.find('x');
-  auto one = [](const std::string& part, uint32_t& out) {
-    if (part.empty() || part.size() > 5 || part.find_first_not_of("0123456789") != std::string::npos) return false;
-    const unsigned long v = std::stoul(part);  // 1 to 5 digits: no overflow
-    if (v < 8 || v > 8192) return false;
-    out = static_cast<uint32_t>(v);
-    return true;
-  };
-  if (x == std::string::npos) return one(text, width) && one(text, height);
-  return one(text.substr(0, x), width) && one(text.substr(x + 1), height);
-}
-
 /// The camera of the options: framed to the mesh unless a position is given.
 std::optional<std::string> chooseCamera(const RenderOptions& options, const MeshChoice& mesh, rt::RenderSettings& settings) {
   const rt::MeshBounds bounds = rt::meshBounds(mesh.mesh);
@@ -125,9 +113,23 @@ std::optional<std::string> chooseCamera(const RenderOptions& options, const Mesh
 
 }  // namespace
 
+bool parseRenderSize(const std::string& text, uint32_t& width, uint32_t& height) {
+  const size_t x = text.find('x');
+  auto one = [](const std::string& part, uint32_t& out) {
+    if (part.empty() || part.size() > 5 || part.find_first_not_of("0123456789") != std::string::npos) return false;
+    const unsigned long v = std::stoul(part);  // 1 to 5 digits: no overflow
+    if (v < 8 || v > 8192) return false;
+    out = static_cast<uint32_t>(v);
+    return true;
+  };
+  if (x == std::string::npos) return one(text, width) && one(text, height);
+  return one(text.substr(0, x), width) && one(text.substr(x + 1), height);
+}
+
 int runRender(const RenderOptions& options) {
+  if (isSceneFile(options.file)) return runSceneRender(options);
   rt::RenderSettings settings;
-  if (!parseSize(options.size, settings.width, settings.height)) {
+  if (!parseRenderSize(options.size, settings.width, settings.height)) {
     std::fprintf(stderr, "error: --size %s: expected N or WxH, each from 8 to 8192\n", options.size.c_str());
     return kUsage;
   }
@@ -224,6 +226,14 @@ int runRender(const RenderOptions& options) {
     settings.environmentMap = environment.get();
   }
   const rt::RgbaImage behind = imageBackground ? rt::renderBackground(settings) : rt::RgbaImage{};
+  const rt::ToneMapping toneMapping = rt::parseToneMapping(options.toneMapping).value_or(rt::ToneMapping::AcesFit);
+  // What a reader of the file needs to know how its values were made.
+  ImageFinish finish;
+  finish.behind = imageBackground ? &behind : nullptr;
+  finish.background = glm::vec3(background[0], background[1], background[2]);
+  finish.exposure = options.exposure;
+  finish.tone = toneMapping;
+  finish.attributes = renderAttributes(options.file, settings.frames, options.exposure, toneMapping);
   int result = kOk;
   std::vector<std::string> wrote;
   try {
@@ -236,40 +246,22 @@ int runRender(const RenderOptions& options) {
       programs.push_back(std::move(*program));
     }
     rt::Renderer renderer(*device.context(), *tables);
+    // One bar over every frame of every material: its estimate covers the whole command.
+    Progress progress(size_t{settings.frames} * programs.size());
     for (size_t m = 0; m < programs.size(); ++m) {
       const ir::Material& material = pipeline.materials()[m];
       const MaterialProgram& program = programs[m];
-      Progress progress(settings.frames);
       rt::RenderResult image = renderer.render(mesh.mesh, *program.resources, program.shader.interface, program.spirv,
                                                settings, [&](uint32_t frame) {
-                                                 progress.step(fmt::format("{}: frame {}", material.name, frame));
+                                                 progress.step(several ? fmt::format("{} ({}/{}) frame {}", material.name, m + 1, programs.size(), frame)
+                                                                     : fmt::format("{} frame {}", material.name, frame));
                                                });
       size_t bad = 0;
       for (float v : image.image.pixels) bad += std::isfinite(v) ? 0 : 1;
       std::vector<std::string> written;
       for (const std::string& output : options.outputs) {
         const auto path = perMaterialPath(output, material.name, several);
-        rt::RgbaImage pixels = image.image;
-        // Linear formats hold radiance as rendered; 8-bit ones get the exposure, which scales
-        // the rendered radiance (a camera's). Under what the surface does not cover goes the
-        // environment image (radiance too: scaled with it, in every format; alpha stays the
-        // coverage) or, in 8-bit formats only, the constant --background colour (not scaled).
-        const bool linear = path.extension() == ".exr" || path.extension() == ".hdr";
-        if (imageBackground || !linear) {
-          const float scale = linear ? 1.0f : std::exp2(options.exposure);  // |exposure| <= 64: finite, > 0
-          for (size_t i = 0; i < pixels.pixels.size(); i += 4) {
-            const float uncovered = 1.0f - std::clamp(pixels.pixels[i + 3], 0.0f, 1.0f);
-            for (int c = 0; c < 3; ++c) {
-              const float under = imageBackground ? scale * behind.pixels[i + c] : background[c];
-              pixels.pixels[i + c] = scale * pixels.pixels[i + c] + uncovered * under;
-            }
-          }
-        }
-        auto encoded = rt::encodeImage(path, pixels);
-        std::optional<std::string> error;
-        if (auto* why = std::get_if<1>(&encoded)) error = *why;
-        if (!error) error = outputs.stage(path, std::move(std::get<0>(encoded)));
-        if (printError(error)) return kOutputFailed;
+        if (printError(stageRender(path, image.image, finish, outputs))) return kOutputFailed;
         written.push_back(path.string());
       }
       if (bad > 0) {

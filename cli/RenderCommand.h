@@ -3,6 +3,7 @@
 /// `mxc render`: materials on a mesh (a sphere by default, MaterialX's shader ball, a glTF or
 /// OBJ file) to EXR or PNG.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@ struct RenderOptions {
   float environmentRotation = 0.0f;  ///< degrees about +y
   float emissionScale = 1.0f;
   float exposure = 0.0f;
+  std::string toneMapping = "aces";  ///< none, aces, neutral (runtime/ToneMapping.h)
   /// Linear R,G,B; empty: the environment image where there is one, else kDefaultBackground.
   std::string background;
   std::string mesh = "sphere";  ///< cli/MeshArgument.h
@@ -34,11 +36,21 @@ struct RenderOptions {
   float fovDegrees = 45.0f;  ///< vertical
   MaterialOptions materials;
   DeviceOptions device;
+  /// The long names of the options given on the command line ("--size"), so that a scene's
+  /// own settings give way only to those.
+  std::vector<std::string> explicitOptions;
 };
 
 /// The background of 8-bit outputs when the environment is not an image and none is given.
 inline constexpr const char* kDefaultBackground = "0.05,0.05,0.05";
 
+/// `mxc render`: a document's materials, or a scene file (cli/Scene.h) when `file` is one.
 int runRender(const RenderOptions& options);
+
+/// `mxc render SCENE.json` (cli/SceneRender.cpp).
+int runSceneRender(const RenderOptions& options);
+
+/// "N" or "WxH", each from 8 to 8192; false otherwise.
+bool parseRenderSize(const std::string& text, uint32_t& width, uint32_t& height);
 
 }  // namespace mxc::cli

@@ -93,13 +93,31 @@ std::variant<RgbaImage, std::string> readImage(const std::filesystem::path& path
   return c->read(path, std::get<0>(bytes), options, warnings ? *warnings : ignored);
 }
 
+bool holdsRadiance(const std::filesystem::path& path) {
+  const std::string extension = lowerExtension(path);
+  return extension == ".exr" || extension == ".hdr";
+}
+
 std::variant<std::string, std::string> encodeImage(const std::filesystem::path& path, const RgbaImage& image,
-                                                   float exposure, ToneMapping tone) {
+                                                   ToneMapping tone, const ImageAttributes& attributes) {
   using Result = std::variant<std::string, std::string>;
   std::string error;
   const ImageCodec* c = codec(error);
   if (!c) return Result(std::in_place_index<1>, fmt::format("cannot write '{}': {}", path.string(), error));
-  auto encoded = c->encode(lowerExtension(path), image, exposure, tone);
+  ImageAttributes all = attributes;
+  std::variant<std::string, std::string> encoded;
+  if (holdsRadiance(path)) {
+    encoded = c->encode(lowerExtension(path), image, all);
+  } else {
+    // Display values: the tone curve here, sRGB and quantisation in the codec.
+    RgbaImage display = image;
+    for (size_t i = 0; i + 3 < display.pixels.size(); i += 4) {
+      const glm::vec3 v = applyToneMapping(tone, {display.pixels[i], display.pixels[i + 1], display.pixels[i + 2]});
+      for (int k = 0; k < 3; ++k) display.pixels[i + size_t(k)] = v[k];
+    }
+    all.emplace_back("mxc:tonemap", toneMappingName(tone));
+    encoded = c->encode(lowerExtension(path), display, all);
+  }
   if (auto* why = std::get_if<1>(&encoded)) {
     return Result(std::in_place_index<1>, fmt::format("cannot write '{}': {}", path.string(), *why));
   }
@@ -128,8 +146,8 @@ std::optional<std::string> checkImageFormat(const std::filesystem::path& path) {
   return std::nullopt;
 }
 
-std::optional<std::string> writeImage(const std::filesystem::path& path, const RgbaImage& image, float exposure) {
-  auto encoded = encodeImage(path, image, exposure);
+std::optional<std::string> writeImage(const std::filesystem::path& path, const RgbaImage& image, ToneMapping tone) {
+  auto encoded = encodeImage(path, image, tone);
   if (auto* why = std::get_if<1>(&encoded)) return *why;
   return writeOutputFile(path, std::get<0>(encoded));
 }

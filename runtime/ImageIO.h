@@ -10,7 +10,10 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <utility>
 #include <vector>
+
+#include "runtime/ToneMapping.h"
 
 namespace mxc::rt {
 
@@ -43,17 +46,21 @@ struct ImageReadOptions {
 std::variant<RgbaImage, std::string> readImage(const std::filesystem::path& path, const ImageReadOptions& options = {},
                                                std::vector<std::string>* warnings = nullptr);
 
-/// How 8-bit formats map linear values to code values.
-enum class ToneMapping : uint8_t {
-  Filmic,   ///< scene-referred radiance: `tonemap` below, then sRGB (rendered images)
-  Display,  ///< display-referred values in [0, 1] (a plot): clamped, then sRGB
-};
+/// Whether the format of `path`'s extension holds linear radiance as rendered (`.exr`, `.hdr`),
+/// rather than tone-mapped 8-bit display values.
+bool holdsRadiance(const std::filesystem::path& path);
+
+/// Metadata written into an image file: name and string value (OpenImageIO attribute names:
+/// "ImageDescription", or "mxc:..." kept as text chunks in PNG and as attributes in EXR).
+using ImageAttributes = std::vector<std::pair<std::string, std::string>>;
 
 /// The bytes of an image file in the format of `path`'s extension. `.exr`: linear 32-bit floats
-/// with alpha (ZIP-compressed), every finite value kept as it is. Other formats: RGB scaled by `exposure` (in stops), mapped by `tone` and encoded
-/// as sRGB, 8 bits. Returns an error message instead.
+/// with alpha (ZIP-compressed), every finite value kept as it is; `.hdr`: linear RGB. Other
+/// formats: RGB through `tone` (runtime/ToneMapping.h), then sRGB, 8 bits; the curve's name
+/// is added to the metadata as "mxc:tonemap". Returns an error message instead.
 std::variant<std::string, std::string> encodeImage(const std::filesystem::path& path, const RgbaImage& image,
-                                                   float exposure = 0.0f, ToneMapping tone = ToneMapping::Filmic);
+                                                   ToneMapping tone = ToneMapping::AcesFit,
+                                                   const ImageAttributes& attributes = {});
 
 /// Text drawn into `image` with OpenImageIO's renderer and the DejaVu Sans font (Debian's
 /// fonts-dejavu-core): `x` is the left edge, or the centre when `centred`; `y` the baseline;
@@ -72,7 +79,8 @@ std::optional<std::string> checkImageFormat(const std::filesystem::path& path);
 
 /// encodeImage, then writes the file atomically (compiler/common/OutputFile.h). Returns an
 /// error message on failure.
-std::optional<std::string> writeImage(const std::filesystem::path& path, const RgbaImage& image, float exposure = 0.0f);
+std::optional<std::string> writeImage(const std::filesystem::path& path, const RgbaImage& image,
+                                      ToneMapping tone = ToneMapping::AcesFit);
 
 /// What the OpenImageIO module (runtime/ImageIOPlugin.cpp) provides. readImage, encodeImage and
 /// checkImageFormat load it on first use.
@@ -81,8 +89,10 @@ struct ImageCodec {
   /// opened by `path`, which the caller has checked is a regular file).
   std::variant<RgbaImage, std::string> (*read)(const std::filesystem::path& path, const std::string& bytes,
                                                const ImageReadOptions& options, std::vector<std::string>& warnings);
-  std::variant<std::string, std::string> (*encode)(const std::string& extension, const RgbaImage& image, float exposure,
-                                                   ToneMapping tone);
+  /// `image` holds radiance for .exr and .hdr, and display values in [0, 1] (before sRGB) for
+  /// the other formats.
+  std::variant<std::string, std::string> (*encode)(const std::string& extension, const RgbaImage& image,
+                                                   const ImageAttributes& attributes);
   /// nullopt when `extension` (".png") can be encoded, else why not.
   std::optional<std::string> (*writable)(const std::string& extension);
   /// drawText above.
@@ -99,13 +109,4 @@ inline float linearToSrgb(float v) {
   v = std::clamp(v, 0.0f, 1.0f);
   return v <= 0.0031308f ? v * 12.92f : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;  // pow of v > 0
 }
-/// The tone curve of 8-bit outputs: Narkowicz's fit of the ACES filmic curve (2015), which maps
-/// [0, inf) to [0, 1) smoothly.
-inline float tonemap(float v) {
-  // Narkowicz 2015, "ACES Filmic Tone Mapping Curve": x (a x + b) / (x (c x + d) + e). The
-  // denominator is >= e > 0 for x >= 0.
-  const float x = std::max(v, 0.0f);
-  return std::clamp(x * (2.51f * x + 0.03f) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
-}
-
 }  // namespace mxc::rt

@@ -146,8 +146,8 @@ std::optional<std::string> writable(const std::string& extension) {
   return fmt::format("mxc does not write the '{}' format (it writes {})", extension, known);
 }
 
-std::variant<std::string, std::string> encode(const std::string& extension, const RgbaImage& image, float exposure,
-                                              ToneMapping tone) {
+std::variant<std::string, std::string> encode(const std::string& extension, const RgbaImage& image,
+                                              const ImageAttributes& attributes) {
   using Result = std::variant<std::string, std::string>;
   if (auto why = writable(extension)) return Result(std::in_place_index<1>, *why);
   std::vector<unsigned char> buffer;
@@ -156,13 +156,17 @@ std::variant<std::string, std::string> encode(const std::string& extension, cons
   auto output = OIIO::ImageOutput::create(name, &memory);
   if (!output) return Result(std::in_place_index<1>, OIIO::geterror());
   const size_t count = size_t(image.width) * image.height;
+  auto withAttributes = [&](OIIO::ImageSpec spec) {
+    for (const auto& [key, value] : attributes) spec.attribute(key, value);
+    return spec;
+  };
   bool ok = false;
   if (extension == ".exr") {
     // 32-bit float: half's largest value, 65504, is below what a render can hold (a light
     // bulb's emission, a firefly), and a half file would turn it into Inf.
     OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::FLOAT);
     spec.attribute("compression", "zip");
-    ok = output->open(name, spec) && output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
+    ok = output->open(name, withAttributes(spec)) && output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
   } else if (extension == ".hdr") {
     // Radiance RGBE: linear RGB, no alpha.
     std::vector<float> rgb(count * 3);
@@ -170,19 +174,18 @@ std::variant<std::string, std::string> encode(const std::string& extension, cons
       for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = image.pixels[i * 4 + c];
     }
     OIIO::ImageSpec spec(int(image.width), int(image.height), 3, OIIO::TypeDesc::FLOAT);
-    ok = output->open(name, spec) && output->write_image(OIIO::TypeDesc::FLOAT, rgb.data());
+    ok = output->open(name, withAttributes(spec)) && output->write_image(OIIO::TypeDesc::FLOAT, rgb.data());
   } else {
-    const float scale = std::exp2(exposure);
+    // Display values in [0, 1] (tone-mapped by encodeImage): sRGB, 8 bits.
     std::vector<uint8_t> bytes(count * 3);
     for (size_t i = 0; i < count; ++i) {
       for (int c = 0; c < 3; ++c) {
-        const float linear = image.pixels[i * 4 + c] * scale;
-        const float v = linearToSrgb(tone == ToneMapping::Filmic ? tonemap(linear) : linear);  // clamps to [0, 1]
+        const float v = linearToSrgb(image.pixels[i * 4 + c]);  // clamps to [0, 1]
         bytes[i * 3 + c] = static_cast<uint8_t>(std::lround(v * 255.0f));
       }
     }
     OIIO::ImageSpec spec(int(image.width), int(image.height), 3, OIIO::TypeDesc::UINT8);
-    ok = output->open(name, spec) && output->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+    ok = output->open(name, withAttributes(spec)) && output->write_image(OIIO::TypeDesc::UINT8, bytes.data());
   }
   std::string why = ok ? "" : output->geterror();
   ok = output->close() && ok;

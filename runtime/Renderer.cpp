@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -38,26 +39,35 @@ float halton(uint32_t index, uint32_t base) {
   return r;
 }
 
+/// The Vulkan objects of one draw item: its mesh's buffers, its layout and both pipelines.
+struct ItemObjects {
+  Buffer vertices, indices;
+  uint32_t indexCount = 0;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkPipeline depthPipeline = VK_NULL_HANDLE;
+  VkPipeline shadePipeline = VK_NULL_HANDLE;
+  std::vector<VkDescriptorSet> descriptorSets;
+};
+
 /// Vulkan objects of one render, destroyed together.
 struct Frame {
   VulkanContext& context;
   Image color, depth;
-  Buffer vertices, indices;
   VkRenderPass renderPass = VK_NULL_HANDLE;
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  VkPipeline depthPipeline = VK_NULL_HANDLE;
-  VkPipeline shadePipeline = VK_NULL_HANDLE;
+  std::vector<ItemObjects> items;
   explicit Frame(VulkanContext& c) : context(c) {}
   ~Frame() {
     VkDevice d = context.device();
     vkDeviceWaitIdle(d);
-    if (shadePipeline) vkDestroyPipeline(d, shadePipeline, nullptr);
-    if (depthPipeline) vkDestroyPipeline(d, depthPipeline, nullptr);
-    if (layout) vkDestroyPipelineLayout(d, layout, nullptr);
+    for (ItemObjects& item : items) {
+      if (item.shadePipeline) vkDestroyPipeline(d, item.shadePipeline, nullptr);
+      if (item.depthPipeline) vkDestroyPipeline(d, item.depthPipeline, nullptr);
+      if (item.layout) vkDestroyPipelineLayout(d, item.layout, nullptr);
+      for (Buffer* b : {&item.vertices, &item.indices}) context.destroy(*b);
+    }
     if (framebuffer) vkDestroyFramebuffer(d, framebuffer, nullptr);
     if (renderPass) vkDestroyRenderPass(d, renderPass, nullptr);
-    for (Buffer* b : {&vertices, &indices}) context.destroy(*b);
     context.destroy(color);
     context.destroy(depth);
   }
@@ -236,57 +246,84 @@ Renderer::~Renderer() = default;
 RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resources,
                               const glsl::MaterialInterface& material, const std::vector<uint32_t>& fragmentSpirv,
                               const RenderSettings& s, const std::function<void(uint32_t)>& progress) {
-  // MxcView, written member by member through the contract's table (compiler/glsl/Contract.h).
-  glsl::BlockWriter block(glsl::viewMembers());
-  Buffer view = context_.createBuffer(block.bytes().size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  return renderScene({SceneObject{&mesh, s.objectToWorld, &resources, &material, &fragmentSpirv}}, s, progress);
+}
+
+RenderResult Renderer::renderScene(const std::vector<SceneObject>& objects, const RenderSettings& s,
+                                   const std::function<void(uint32_t)>& progress) {
+  if (s.environment == Environment::Map && !s.environmentMap) {
+    throw std::logic_error("Renderer::renderScene: Environment::Map without an environment image");
+  }
+  const EnvironmentMap& environment = s.environment == Environment::Map ? *s.environmentMap : *black_;
+  const uint32_t lights = std::min<uint32_t>(static_cast<uint32_t>(s.lights.size()), glsl::kMaxLights);
+  // Per object: its MxcView (written member by member through the contract's table,
+  // compiler/glsl/Contract.h; objects differ only in their transform) and its material's set.
+  struct ObjectState {
+    glsl::BlockWriter block{glsl::viewMembers()};
+    Buffer view;
+    std::unique_ptr<DescriptorSet> set;
+  };
+  std::vector<std::unique_ptr<ObjectState>> states;
   Buffer dummy = context_.createBuffer(16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   struct Release {
     VulkanContext& context;
-    Buffer& view;
+    std::vector<std::unique_ptr<ObjectState>>& states;
     Buffer& dummy;
     ~Release() {
       vkDeviceWaitIdle(context.device());
-      context.destroy(view);
+      for (auto& state : states) context.destroy(state->view);
       context.destroy(dummy);
     }
-  } release{context_, view, dummy};
-  DescriptorSet set(context_, MaterialResources::layout(material), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
-  resources.bind(set, tables_);
-  set.bind(glsl::kStageBinding, view);
-  // The storage bindings belong to the compute stages; they are written anyway so that every
-  // descriptor of the set is valid.
-  set.bind(glsl::kInputBinding, dummy);
-  set.bind(glsl::kOutputBinding, dummy);
-
-  const uint32_t lights = std::min<uint32_t>(static_cast<uint32_t>(s.lights.size()), glsl::kMaxLights);
-  for (uint32_t k = 0; k < lights; ++k) {
-    const Light& l = s.lights[k];
-    block.set("lightVector", glm::vec4(l.vector, l.kind == Light::Kind::Point ? 1.0f : 0.0f), k);
-    block.set("lightRadiance", glm::vec4(l.color * l.intensity, 0.0f), k);
-  }
-  if (s.environment == Environment::Map && !s.environmentMap) {
-    throw std::logic_error("Renderer::render: Environment::Map without an environment image");
-  }
-  const EnvironmentMap& environment = s.environment == Environment::Map ? *s.environmentMap : *black_;
-  block.set("environment", glm::vec4(s.environmentIntensity, s.emissionScale, glm::radians(s.environmentRotation), 0.0f));
+  } release{context_, states, dummy};
   const std::vector<VertexInput> inputs = {
       {glsl::kAttributePosition, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
       {glsl::kAttributeNormal, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
       {glsl::kAttributeTangent, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(Vertex, tangent)},
       {glsl::kAttributeUv, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)}};
   static_assert(glsl::kEnvironmentSet == 1, "the sets are bound in order: the material's, the environment's");
-  return draw(mesh, vertexSpirv_, fragmentSpirv, inputs, {&set, &environment.set()}, s,
-              [&](const FrameView& v) {
-                block.set("objectToWorld", v.objectToWorld);
-                block.set("normalToWorld", v.normalToWorld);
-                block.set("worldToClip", v.viewToClip * v.worldToView);
-                block.set("eye", glm::vec4(v.eye, 1.0f));
-                block.set("jitter", glm::vec4(v.jitter, 0.0f, 0.0f));  // added in clip space by mxc_raster.vert
-                block.set("counts", glm::ivec4(int(lights), int(environmentCode(s.environment)), int(v.frame),
-                                               int(std::max(s.samplesPerFrame, 1u))));
-                std::memcpy(view.mapped, block.bytes().data(), block.bytes().size());
-              },
-              progress);
+  std::vector<DrawItem> items;
+  for (const SceneObject& object : objects) {
+    auto state = std::make_unique<ObjectState>();
+    ObjectState& st = *state;
+    states.push_back(std::move(state));
+    st.view = context_.createBuffer(st.block.bytes().size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    st.set = std::make_unique<DescriptorSet>(context_, MaterialResources::layout(*object.material),
+                                             VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+    object.resources->bind(*st.set, tables_);
+    st.set->bind(glsl::kStageBinding, st.view);
+    // The storage bindings belong to the compute stages; they are written anyway so that every
+    // descriptor of the set is valid.
+    st.set->bind(glsl::kInputBinding, dummy);
+    st.set->bind(glsl::kOutputBinding, dummy);
+    for (uint32_t k = 0; k < lights; ++k) {
+      const Light& l = s.lights[k];
+      const float kind = l.kind == Light::Kind::Directional ? 0.0f : l.kind == Light::Kind::Point ? 1.0f : 2.0f;
+      st.block.set("lightVector", glm::vec4(l.vector, kind), k);
+      st.block.set("lightSpot", glm::vec4(l.axis, l.cosOuter), k);
+      st.block.set("lightRadiance", glm::vec4(l.color * l.intensity, l.cosInner), k);
+    }
+    st.block.set("environment",
+                 glm::vec4(s.environmentIntensity, s.emissionScale, glm::radians(s.environmentRotation), 0.0f));
+    DrawItem item;
+    item.mesh = object.mesh;
+    item.vertexSpirv = &vertexSpirv_;
+    item.fragmentSpirv = object.fragmentSpirv;
+    item.inputs = inputs;
+    item.sets = {st.set.get(), &environment.set()};
+    item.objectToWorld = object.objectToWorld;
+    item.beforeFrame = [&st, &s, lights](const FrameView& v) {
+      st.block.set("objectToWorld", v.objectToWorld);
+      st.block.set("normalToWorld", v.normalToWorld);
+      st.block.set("worldToClip", v.viewToClip * v.worldToView);
+      st.block.set("eye", glm::vec4(v.eye, 1.0f));
+      st.block.set("jitter", glm::vec4(v.jitter, 0.0f, 0.0f));  // added in clip space by mxc_raster.vert
+      st.block.set("counts", glm::ivec4(int(lights), int(environmentCode(s.environment)), int(v.frame),
+                                        int(std::max(s.samplesPerFrame, 1u))));
+      std::memcpy(st.view.mapped, st.block.bytes().data(), st.block.bytes().size());
+    };
+    items.push_back(std::move(item));
+  }
+  return drawItems(items, s, progress);
 }
 
 RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& vertexSpirv,
@@ -294,19 +331,18 @@ RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& verte
                             const std::vector<const DescriptorSet*>& sets, const RenderSettings& s,
                             const std::function<void(const FrameView&)>& beforeFrame,
                             const std::function<void(uint32_t)>& progress) {
+  DrawItem item{&mesh, &vertexSpirv, &fragmentSpirv, inputs, sets, s.objectToWorld, beforeFrame};
+  return drawItems({item}, s, progress);
+}
+
+RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const RenderSettings& s,
+                                 const std::function<void(uint32_t)>& progress) {
   VkDevice device = context_.device();
   Frame f(context_);
   f.color = context_.createImage(s.width, s.height, VK_FORMAT_R32G32B32A32_SFLOAT,
                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                      VK_IMAGE_USAGE_TRANSFER_DST_BIT);
   f.depth = context_.createImage(s.width, s.height, VK_FORMAT_D32_SFLOAT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
-  f.vertices = context_.createBuffer(mesh.vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-  std::memcpy(f.vertices.mapped, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex));
-  f.indices = context_.createBuffer(mesh.indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-  std::memcpy(f.indices.mapped, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
-
-  ShaderModule vertex(context_, vertexSpirv);
-  ShaderModule fragment(context_, fragmentSpirv);
   f.renderPass = createRenderPass(device);
   VkImageView views[2] = {f.color.view, f.depth.view};
   VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
@@ -317,20 +353,33 @@ RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& verte
   fb.height = s.height;
   fb.layers = 1;
   check(vkCreateFramebuffer(device, &fb, nullptr, &f.framebuffer), "vkCreateFramebuffer");
-  std::vector<VkDescriptorSetLayout> setLayouts;
-  std::vector<VkDescriptorSet> descriptorSets;
-  for (const DescriptorSet* set : sets) {
-    setLayouts.push_back(set->layout());
-    descriptorSets.push_back(set->set());
+  f.items.resize(items.size());
+  for (size_t i = 0; i < items.size(); ++i) {
+    const DrawItem& item = items[i];
+    ItemObjects& o = f.items[i];
+    const Mesh& mesh = *item.mesh;
+    o.vertices = context_.createBuffer(mesh.vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    std::memcpy(o.vertices.mapped, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex));
+    o.indices = context_.createBuffer(mesh.indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    std::memcpy(o.indices.mapped, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
+    o.indexCount = static_cast<uint32_t>(mesh.indices.size());
+    // The modules are needed only while the pipelines are created.
+    ShaderModule vertex(context_, *item.vertexSpirv);
+    ShaderModule fragment(context_, *item.fragmentSpirv);
+    std::vector<VkDescriptorSetLayout> setLayouts;
+    for (const DescriptorSet* set : item.sets) {
+      setLayouts.push_back(set->layout());
+      o.descriptorSets.push_back(set->set());
+    }
+    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layoutInfo.setLayoutCount = static_cast<uint32_t>(setLayouts.size());
+    layoutInfo.pSetLayouts = setLayouts.data();
+    check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &o.layout), "vkCreatePipelineLayout");
+    o.depthPipeline =
+        createPipeline(device, f.renderPass, o.layout, vertex.get(), VK_NULL_HANDLE, item.inputs, s.width, s.height);
+    o.shadePipeline =
+        createPipeline(device, f.renderPass, o.layout, vertex.get(), fragment.get(), item.inputs, s.width, s.height);
   }
-  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layoutInfo.setLayoutCount = static_cast<uint32_t>(setLayouts.size());
-  layoutInfo.pSetLayouts = setLayouts.data();
-  check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &f.layout), "vkCreatePipelineLayout");
-  f.depthPipeline =
-      createPipeline(device, f.renderPass, f.layout, vertex.get(), VK_NULL_HANDLE, inputs, s.width, s.height);
-  f.shadePipeline =
-      createPipeline(device, f.renderPass, f.layout, vertex.get(), fragment.get(), inputs, s.width, s.height);
 
   context_.submit([&](VkCommandBuffer cmd) {
     VulkanContext::transition(cmd, f.color.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
@@ -346,8 +395,6 @@ RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& verte
   });
 
   FrameView frameView;
-  frameView.objectToWorld = s.objectToWorld;
-  frameView.normalToWorld = glm::transpose(glm::inverse(s.objectToWorld));
   frameView.viewToClip = viewToClip(s.camera, s.width, s.height);
   frameView.worldToView = worldToView(s.camera);
   frameView.eye = s.camera.eye;
@@ -369,7 +416,14 @@ RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& verte
     jitter[3][1] = frameView.jitter.y;
     frameView.worldToClip = jitter * frameView.viewToClip * frameView.worldToView;
     frameView.frame = frame;
-    beforeFrame(frameView);
+    for (const DrawItem& item : items) {
+      frameView.objectToWorld = item.objectToWorld;
+      // Normals by the inverse transpose; a singular transform (a zero scale) leaves them as
+      // they are rather than dividing by its zero determinant.
+      const float det = glm::determinant(glm::mat3(item.objectToWorld));
+      frameView.normalToWorld = std::abs(det) > 1e-30f ? glm::transpose(glm::inverse(item.objectToWorld)) : glm::mat4(1.0f);
+      item.beforeFrame(frameView);
+    }
     const auto start = std::chrono::steady_clock::now();
     context_.submit([&](VkCommandBuffer cmd) {
       VkClearValue clears[2]{};
@@ -381,15 +435,18 @@ RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& verte
       begin.clearValueCount = 2;
       begin.pClearValues = clears;
       vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.layout, 0,
-                              static_cast<uint32_t>(descriptorSets.size()), descriptorSets.data(), 0, nullptr);
-      VkDeviceSize offset = 0;
-      vkCmdBindVertexBuffers(cmd, 0, 1, &f.vertices.buffer, &offset);
-      vkCmdBindIndexBuffer(cmd, f.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
-      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.depthPipeline);
-      vkCmdDrawIndexed(cmd, static_cast<uint32_t>(mesh.indices.size()), 1, 0, 0, 0);
-      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.shadePipeline);
-      vkCmdDrawIndexed(cmd, static_cast<uint32_t>(mesh.indices.size()), 1, 0, 0, 0);
+      // Every object's depth first, then every object shaded where it is the nearest (EQUAL).
+      for (bool shading : {false, true}) {
+        for (const ItemObjects& o : f.items) {
+          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, o.layout, 0,
+                                  static_cast<uint32_t>(o.descriptorSets.size()), o.descriptorSets.data(), 0, nullptr);
+          VkDeviceSize offset = 0;
+          vkCmdBindVertexBuffers(cmd, 0, 1, &o.vertices.buffer, &offset);
+          vkCmdBindIndexBuffer(cmd, o.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+          vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shading ? o.shadePipeline : o.depthPipeline);
+          vkCmdDrawIndexed(cmd, o.indexCount, 1, 0, 0, 0);
+        }
+      }
       vkCmdEndRenderPass(cmd);
     });
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -23,11 +23,16 @@
 namespace mxc::rt {
 
 struct Light {
-  enum class Kind : uint8_t { Directional, Point };
+  enum class Kind : uint8_t { Directional, Point, Spot };
   Kind kind = Kind::Directional;
-  glm::vec3 vector{0.0f, 1.0f, 0.0f};  ///< towards a directional light; a point light's position
-  glm::vec3 color{1.0f};               ///< times intensity: irradiance (directional) or W/sr (point)
+  glm::vec3 vector{0.0f, 1.0f, 0.0f};  ///< towards a directional light; a point or spot light's position
+  glm::vec3 color{1.0f};               ///< times intensity: irradiance (directional) or W/sr (point, spot)
   float intensity = 1.0f;
+  /// A spot light's cone: its axis (unit, from the light outwards); full intensity within
+  /// cosInner of it, none beyond cosOuter, a smooth fade between (cosInner > cosOuter).
+  glm::vec3 axis{0.0f, -1.0f, 0.0f};
+  float cosOuter = 0.866f;
+  float cosInner = 0.906f;
 };
 
 /// Map: RenderSettings::environmentMap, importance-sampled and combined with the closure's
@@ -84,6 +89,27 @@ struct FrameView {
 /// pixels under what a render does not cover. Black unless the environment is an image.
 RgbaImage renderBackground(const RenderSettings& settings);
 
+/// One object of a scene: a mesh under a transform, shaded by a compiled material (not owned).
+struct SceneObject {
+  const Mesh* mesh = nullptr;
+  glm::mat4 objectToWorld{1.0f};
+  const MaterialResources* resources = nullptr;
+  const glsl::MaterialInterface* material = nullptr;
+  const std::vector<uint32_t>* fragmentSpirv = nullptr;  ///< glsl::ShaderKind::Raster
+};
+
+/// One draw of a render: a mesh with a vertex and fragment shader pair and its descriptor sets
+/// (bound as sets 0, 1, ...); `beforeFrame` updates the caller's uniforms for each frame.
+struct DrawItem {
+  const Mesh* mesh = nullptr;
+  const std::vector<uint32_t>* vertexSpirv = nullptr;
+  const std::vector<uint32_t>* fragmentSpirv = nullptr;
+  std::vector<VertexInput> inputs;
+  std::vector<const DescriptorSet*> sets;
+  glm::mat4 objectToWorld{1.0f};
+  std::function<void(const FrameView&)> beforeFrame;
+};
+
 class Renderer {
  public:
   Renderer(VulkanContext& context, const AlbedoTables& tables);
@@ -97,6 +123,12 @@ class Renderer {
                       const std::vector<uint32_t>& fragmentSpirv, const RenderSettings& settings,
                       const std::function<void(uint32_t)>& progress = {});
 
+  /// Renders several objects in one image: each frame draws every object's depth, then shades
+  /// each where it is the nearest. The settings' objectToWorld is not used (each object has its
+  /// own). Where two objects have exactly the same depth, both are shaded and added.
+  RenderResult renderScene(const std::vector<SceneObject>& objects, const RenderSettings& settings,
+                           const std::function<void(uint32_t)>& progress = {});
+
   /// Renders `mesh` with any vertex and fragment shader pair (for instance another generator's,
   /// whose resource interface the caller found by reflection): the same passes, accumulation
   /// and timing as render(). `sets` are bound as sets 0, 1, ...; `beforeFrame` updates the
@@ -108,6 +140,10 @@ class Renderer {
                     const std::function<void(uint32_t)>& progress = {});
 
  private:
+  /// The passes, accumulation and timing of every render.
+  RenderResult drawItems(const std::vector<DrawItem>& items, const RenderSettings& settings,
+                         const std::function<void(uint32_t)>& progress);
+
   VulkanContext& context_;
   const AlbedoTables& tables_;
   std::vector<uint32_t> vertexSpirv_;

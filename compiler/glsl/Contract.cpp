@@ -35,7 +35,11 @@ constexpr Member kView[] = {
     {"mat4", "worldToClip", 0, ""},
     {"vec4", "eye", 0, "xyz: camera position (world)"},
     {"vec4", "jitter", 0, "xy: this frame's sub-pixel offset, in normalised device units"},
-    {"vec4", "lightVector", kMaxLights, "w = 0: xyz points towards a directional light; w = 1: a point light's position"},
+    {"vec4", "lightVector", kMaxLights,
+     "w = 0: xyz points towards a directional light; w = 1: a point light's position; w = 2: a spot light's"},
+    {"vec4", "lightSpot", kMaxLights,
+     "a spot light's cone: xyz its axis (unit, from the light outwards), w the cosine of its half-angle; "
+     "lightRadiance.w the cosine where the fade ends (> w)"},
     {"vec4", "lightRadiance", kMaxLights,
      "rgb: irradiance at normal incidence (directional) or intensity in W/sr (point)"},
     {"ivec4", "counts", 0, "x: lights, y: environment (MXC_ENV_*), z: frame index, w: samples per frame"},

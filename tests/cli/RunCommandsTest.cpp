@@ -198,7 +198,7 @@ TEST(RenderCommand, ExposureScalesTheRenderNotTheBackground) {
   ASSERT_EQ(plain.width, 32u);
   ASSERT_EQ(brighter.width, 32u);
   // The background as 8-bit outputs encode it: tone curve, then sRGB.
-  const float background = rt::linearToSrgb(rt::tonemap(0.5f));
+  const float background = rt::linearToSrgb(rt::acesFit(0.5f));
   for (const rt::RgbaImage* img : {&plain, &brighter}) EXPECT_NEAR(img->at(0, 0)[1], background, 1.0f / 255.0f);
   EXPECT_GT(brighter.at(16, 16)[1], plain.at(16, 16)[1] + 0.05f);
 }
@@ -303,6 +303,55 @@ TEST(RenderCommand, RefusesBadSizesMeshesAndCamerasWritingNothing) {
     EXPECT_NE(r.err.find(message), std::string::npos) << options << ": " << r.err;
     EXPECT_FALSE(fs::exists(png)) << options;
   }
+}
+
+TEST(RenderCommand, ToneMappingIsChosenAndNamedInTheFile) {
+  // The constant background (linear 0.5) as each curve encodes it, and the curve's name in the
+  // PNG's text chunks.
+  const std::vector<std::pair<std::string, float>> cases = {
+      {"none", 0.5f}, {"aces", rt::acesFit(0.5f)}, {"neutral", rt::pbrNeutral(glm::vec3(0.5f)).r}};
+  for (const auto& [tone, linear] : cases) {
+    const fs::path out = writeTemp("tone.png", "");
+    CommandRun r = mxc("render " + corpus(kDefault) + " -o " + out.string() +
+                       " --size 16 --spp 1 --background 0.5,0.5,0.5 --tonemap " + tone);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string bytes = readAll(out);
+    EXPECT_NE(bytes.find("mxc:tonemap"), std::string::npos) << tone;
+    EXPECT_NE(bytes.find(tone), std::string::npos) << tone;
+    auto image = rt::readImage(out);
+    fs::remove(out);
+    ASSERT_TRUE(std::holds_alternative<rt::RgbaImage>(image));
+    EXPECT_NEAR(std::get<rt::RgbaImage>(image).at(0, 0)[1], rt::linearToSrgb(linear), 1.0f / 255.0f) << tone;
+  }
+  CommandRun r = mxc("render " + corpus(kDefault) + " -o x.png --tonemap filmic");
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+}
+
+TEST(RenderCommand, ProgressBarFitsTheTerminalAndIsClearedAtTheEnd) {
+  // Under a 40-column pseudo-terminal (util-linux `script`), a render of about two seconds.
+  const fs::path out = writeTemp("progress.png", "");
+  const fs::path log = writeTemp("progress.log", "");
+  const std::string command = std::string(MXC_BINARY) + " render " + corpus(kDefault) + " -o " + out.string() +
+                              " --size 256 --spp 48";
+  const std::string shell = "script -qc 'stty cols 40; " + command + "' /dev/null > " + log.string();
+  ASSERT_EQ(std::system(shell.c_str()), 0);
+  const std::string text = readAll(log);
+  fs::remove(out);
+  fs::remove(log);
+  ASSERT_NE(text.find("ETA"), std::string::npos) << text;
+  // Each drawing of the bar starts with "\r\033[K" and stays within 39 columns; the last
+  // clear comes before the command's own output line.
+  const std::string clear = "\r\033[K";
+  std::vector<std::string> pieces;
+  for (size_t at = 0;;) {
+    const size_t next = text.find(clear, at);
+    pieces.push_back(text.substr(at, next == std::string::npos ? std::string::npos : next - at));
+    if (next == std::string::npos) break;
+    at = next + clear.size();
+  }
+  ASSERT_GE(pieces.size(), 3u) << text;
+  for (size_t i = 1; i + 1 < pieces.size(); ++i) EXPECT_LE(pieces[i].size(), 39u) << pieces[i];
+  EXPECT_EQ(pieces.back().rfind("Default: wrote", 0), 0u) << pieces.back();
 }
 
 }  // namespace

@@ -110,6 +110,12 @@ void main() {
       float d2 = max(dot(d, d), 1e-8);  // a light inside the surface point: bounded
       wi = d * inversesqrt(d2);
       irradiance /= d2;  // inverse-square falloff of a point light's intensity
+      if (light.w == 2.0) {
+        // A spot light: full inside the inner cone, none outside the outer one, a smooth fade
+        // between (cosInner > cosOuter, checked where the light is made).
+        vec4 spot = mxc_view.lightSpot[k];
+        irradiance *= smoothstep(spot.w, mxc_view.lightRadiance[k].w, dot(-wi, spot.xyz));
+      }
     }
     radiance += mxc_closure_eval(c, wo, wi) * irradiance;
   }

@@ -1,0 +1,39 @@
+#include "cli/RenderOutput.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace mxc::cli {
+
+rt::ImageAttributes renderAttributes(const std::string& input, uint32_t spp, float exposure, rt::ToneMapping tone) {
+  return {{"ImageDescription", fmt::format("mxc render of {}: {} spp, exposure {} stops; 8-bit formats: {}", input, spp,
+                                           exposure, rt::toneMappingDescription(tone))},
+          {"mxc:exposure", fmt::format("{}", exposure)}};
+}
+
+std::optional<std::string> stageRender(const std::filesystem::path& path, const rt::RgbaImage& render,
+                                       const ImageFinish& finish, OutputSet& outputs) {
+  rt::RgbaImage pixels = render;
+  // Linear formats hold radiance as rendered; 8-bit ones get the exposure, which scales the
+  // rendered radiance (a camera's). Under what the surface does not cover goes the environment
+  // image (radiance too: scaled with it, in every format; alpha stays the coverage) or, in
+  // 8-bit formats only, the constant background colour (not scaled).
+  const bool linear = rt::holdsRadiance(path);
+  if (finish.behind || !linear) {
+    const float scale = linear ? 1.0f : std::exp2(finish.exposure);  // |exposure| <= 64: finite, > 0
+    for (size_t i = 0; i + 3 < pixels.pixels.size(); i += 4) {
+      const float uncovered = 1.0f - std::clamp(pixels.pixels[i + 3], 0.0f, 1.0f);
+      for (size_t c = 0; c < 3; ++c) {
+        const float under = finish.behind ? scale * finish.behind->pixels[i + c] : finish.background[int(c)];
+        pixels.pixels[i + c] = scale * pixels.pixels[i + c] + uncovered * under;
+      }
+    }
+  }
+  auto encoded = rt::encodeImage(path, pixels, finish.tone, finish.attributes);
+  if (auto* why = std::get_if<1>(&encoded)) return *why;
+  return outputs.stage(path, std::move(std::get<0>(encoded)));
+}
+
+}  // namespace mxc::cli

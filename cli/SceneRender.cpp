@@ -1,0 +1,286 @@
+// `mxc render SCENE.json`: every object of a scene file in one image (cli/Scene.h).
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <set>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+#include "cli/ExitCode.h"
+#include "cli/Harness.h"
+#include "cli/MaterialPipeline.h"
+#include "cli/MeshArgument.h"
+#include "cli/OutputSet.h"
+#include "cli/RenderCommand.h"
+#include "cli/RenderOutput.h"
+#include "cli/Scene.h"
+#include "compiler/document/Document.h"
+#include "runtime/EnvironmentMap.h"
+#include "runtime/Renderer.h"
+
+namespace mxc::cli {
+
+namespace {
+
+/// The sphere about every object in the world: the bounding box of the objects' spheres, then
+/// the farthest of their surfaces from its centre.
+rt::MeshBounds worldBounds(const std::vector<rt::MeshBounds>& spheres) {
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const rt::MeshBounds& b : spheres) {
+    lo = glm::min(lo, b.center - b.radius);
+    hi = glm::max(hi, b.center + b.radius);
+  }
+  rt::MeshBounds all;
+  all.center = 0.5f * (lo + hi);
+  for (const rt::MeshBounds& b : spheres) all.radius = std::max(all.radius, glm::length(b.center - all.center) + b.radius);
+  return all;
+}
+
+/// An object's bounding sphere under its transform: the centre moved, the radius scaled by the
+/// transform's largest axis scale (an upper bound under any rotation and shear).
+rt::MeshBounds transformed(const rt::MeshBounds& b, const glm::mat4& m) {
+  const float scale = std::max({glm::length(glm::vec3(m[0])), glm::length(glm::vec3(m[1])), glm::length(glm::vec3(m[2]))});
+  return {glm::vec3(m * glm::vec4(b.center, 1.0f)), b.radius * scale};
+}
+
+/// "a, /b ,c" to {"a", "b", "c"}: MaterialX geometry names, the leading '/' of a path dropped.
+std::vector<std::string> geomNames(std::string_view geom) {
+  std::vector<std::string> names;
+  size_t start = 0;
+  while (start <= geom.size()) {
+    const size_t comma = std::min(geom.find(',', start), geom.size());
+    std::string name(geom.substr(start, comma - start));
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t") + 1);
+    if (!name.empty() && name[0] == '/') name.erase(0, 1);
+    if (!name.empty()) names.push_back(name);
+    start = comma + 1;
+  }
+  return names;
+}
+
+}  // namespace
+
+int runSceneRender(const RenderOptions& options) {
+  // The scene states its meshes, camera, lights and environment; the command line may only
+  // change the image's size, samples, exposure and tone curve.
+  for (const char* option : {"--mesh", "--camera-position", "--camera-target", "--camera-up", "--fov", "--light", "--env",
+                             "--env-intensity", "--env-rotation", "--background", "--material"}) {
+    if (std::find(options.explicitOptions.begin(), options.explicitOptions.end(), option) != options.explicitOptions.end()) {
+      std::fprintf(stderr, "error: %s cannot be used with a scene file: the scene states it\n", option);
+      return kUsage;
+    }
+  }
+  auto read = readScene(options.file);
+  if (auto* why = std::get_if<std::string>(&read)) {
+    std::fprintf(stderr, "%s\n", why->c_str());
+    return kInvalidDocument;
+  }
+  Scene scene = std::move(std::get<Scene>(read));
+  auto given = [&](const char* option) {
+    return std::find(options.explicitOptions.begin(), options.explicitOptions.end(), option) != options.explicitOptions.end();
+  };
+  rt::RenderSettings settings;
+  settings.width = scene.width;
+  settings.height = scene.height;
+  if (given("--size") && !parseRenderSize(options.size, settings.width, settings.height)) {
+    std::fprintf(stderr, "error: --size %s: expected N or WxH, each from 8 to 8192\n", options.size.c_str());
+    return kUsage;
+  }
+  settings.frames = given("--spp") ? static_cast<uint32_t>(options.spp) : scene.spp;
+  const float exposure = given("--exposure") ? options.exposure : scene.exposure;
+  const rt::ToneMapping tone =
+      rt::parseToneMapping(given("--tonemap") ? options.toneMapping : scene.toneMapping).value_or(rt::ToneMapping::AcesFit);
+  settings.environment = scene.environment.kind;
+  settings.environmentIntensity = scene.environment.intensity;
+  settings.environmentRotation = scene.environment.rotationDegrees;
+  settings.emissionScale = options.emissionScale;
+  settings.lights = scene.lights;
+
+  if (printError(rt::loadImageModule())) return kOutputFailed;
+  for (const std::string& output : options.outputs) {
+    if (auto why = rt::checkImageFormat(output)) {
+      std::fprintf(stderr, "error: -o %s\n", why->c_str());
+      return kUsage;
+    }
+  }
+
+  // Meshes, each file read once however many objects use it.
+  std::vector<std::filesystem::path> paths = scene.searchPaths;
+  for (const auto& p : searchPaths(options.searchPaths)) paths.push_back(p);
+  std::map<std::string, MeshChoice> meshes;
+  std::vector<rt::MeshBounds> spheres;
+  for (const SceneObjectSpec& object : scene.objects) {
+    if (!meshes.count(object.mesh)) {
+      auto chosen = chooseMesh(object.mesh, paths);
+      if (auto* why = std::get_if<std::string>(&chosen)) {
+        std::fprintf(stderr, "%s: error: object '%s': %s\n", scene.file.string().c_str(), object.name.c_str(), why->c_str());
+        return kInvalidDocument;
+      }
+      meshes.emplace(object.mesh, std::move(std::get<MeshChoice>(chosen)));
+    }
+    spheres.push_back(transformed(rt::meshBounds(meshes.at(object.mesh).mesh), object.objectToWorld));
+  }
+  const rt::MeshBounds bounds = worldBounds(spheres);
+  if (scene.camera) {
+    settings.camera = *scene.camera;
+    rt::fitClipPlanes(settings.camera, bounds);
+  } else {
+    // From the front and a little above, so that a floor is seen rather than its edge.
+    settings.camera = rt::frameBounds(bounds, glm::vec3(0.0f, 0.35f, 1.0f), 45.0f, float(settings.width) / float(settings.height));
+  }
+
+  // Documents, and each object's material: its own, else its document's look.
+  Session session;
+  std::vector<std::unique_ptr<MaterialPipeline>> pipelines;
+  for (const std::filesystem::path& document : scene.documents) {
+    auto pipeline = std::make_unique<MaterialPipeline>(session);
+    CompileRequest request;
+    request.document = document;
+    MaterialOptions materialOptions = options.materials;
+    materialOptions.material.clear();
+    if (int code = pipeline->run(std::move(request), materialOptions); code != kOk) return code;
+    pipelines.push_back(std::move(pipeline));
+  }
+  std::vector<std::string> assigned(scene.objects.size());
+  if (!scene.look.empty()) {
+    bool found = false;
+    for (auto& pipeline : pipelines) {
+      const doc::Document* document = pipeline->compiler().document();
+      if (!document) continue;
+      for (const doc::Look& look : document->looks) {
+        if (look.name != scene.look) continue;
+        found = true;
+        for (const doc::MaterialAssign& assign : look.assigns) {
+          const std::vector<std::string> names = geomNames(assign.geom);
+          for (size_t o = 0; o < scene.objects.size(); ++o) {
+            const bool all = assign.geom.empty() || std::find(names.begin(), names.end(), "*") != names.end();
+            if (all || std::find(names.begin(), names.end(), scene.objects[o].name) != names.end()) {
+              assigned[o] = std::string(assign.material);
+            }
+          }
+        }
+      }
+    }
+    if (!found) {
+      std::fprintf(stderr, "%s: error: look: no document of the scene has a look named '%s'\n", scene.file.string().c_str(),
+                   scene.look.c_str());
+      return kInvalidDocument;
+    }
+  }
+  // Material name -> (pipeline, material); each used material compiled once.
+  std::vector<std::pair<size_t, size_t>> chosen(scene.objects.size());
+  for (size_t o = 0; o < scene.objects.size(); ++o) {
+    const std::string& name = scene.objects[o].material.empty() ? assigned[o] : scene.objects[o].material;
+    if (name.empty()) {
+      std::fprintf(stderr, "%s: error: objects[%zu] ('%s'): the look '%s' assigns it no material\n", scene.file.string().c_str(),
+                   o, scene.objects[o].name.c_str(), scene.look.c_str());
+      return kInvalidDocument;
+    }
+    std::vector<std::pair<size_t, size_t>> matches;
+    for (size_t p = 0; p < pipelines.size(); ++p) {
+      const auto& materials = pipelines[p]->materials();
+      for (size_t m = 0; m < materials.size(); ++m) {
+        if (materials[m].name == name) matches.emplace_back(p, m);
+      }
+    }
+    if (matches.size() != 1) {
+      std::fprintf(stderr, "%s: error: objects[%zu] ('%s'): %s material named '%s'\n", scene.file.string().c_str(), o,
+                   scene.objects[o].name.c_str(), matches.empty() ? "no document of the scene has a" : "more than one document has a",
+                   name.c_str());
+      return kInvalidDocument;
+    }
+    chosen[o] = matches[0];
+  }
+
+  OutputSet outputs;
+  for (const std::string& output : options.outputs) {
+    if (printError(outputs.declare(output, "-o"))) return kOutputFailed;
+  }
+  if (printError(outputs.checkDistinct())) return kUsage;
+  for (const auto& pipeline : pipelines) {
+    if (printError(pipeline->checkOutputsAreNotInputs(outputs))) return kUsage;
+  }
+  if (printError(outputs.checkNotInput(scene.file, "the scene"))) return kUsage;
+  for (const auto& [name, mesh] : meshes) {
+    if (!mesh.file.empty() && printError(outputs.checkNotInput(mesh.file, "a mesh"))) return kUsage;
+  }
+  if (settings.environment == rt::Environment::Map && printError(outputs.checkNotInput(scene.environment.image, "the environment image"))) {
+    return kUsage;
+  }
+
+  Device device(options.device);
+  rt::AlbedoTables* tables = device.tables();
+  if (!tables) return kInvalidDocument;
+  std::unique_ptr<rt::EnvironmentMap> environment;
+  if (settings.environment == rt::Environment::Map) {
+    std::vector<std::string> warnings;
+    auto image = rt::EnvironmentMap::read(scene.environment.image, device.context()->maxImageDimension2D(), warnings);
+    for (const std::string& w : warnings) std::fprintf(stderr, "warning: environment.file %s\n", w.c_str());
+    if (auto* why = std::get_if<std::string>(&image)) {
+      std::fprintf(stderr, "%s: error: environment.file: %s\n", scene.file.string().c_str(), why->c_str());
+      return kInvalidDocument;
+    }
+    environment = std::make_unique<rt::EnvironmentMap>(*device.context(), std::move(std::get<rt::RgbaImage>(image)));
+    settings.environmentMap = environment.get();
+  }
+  const bool imageBehind = settings.environment == rt::Environment::Map && !scene.background;
+  const rt::RgbaImage behind = imageBehind ? rt::renderBackground(settings) : rt::RgbaImage{};
+  ImageFinish finish;
+  finish.behind = imageBehind ? &behind : nullptr;
+  finish.background = scene.background.value_or(glm::vec3(0.05f));
+  finish.exposure = exposure;
+  finish.tone = tone;
+  finish.attributes = renderAttributes(options.file, settings.frames, exposure, tone);
+
+  std::string summary;
+  int result = kOk;
+  try {
+    std::map<std::pair<size_t, size_t>, MaterialProgram> programs;
+    for (const auto& key : chosen) {
+      if (programs.count(key)) continue;
+      auto program = prepareMaterial(*pipelines[key.first], session, *device.context(),
+                                     pipelines[key.first]->materials()[key.second], glsl::ShaderKind::Raster);
+      if (!program) return kInvalidDocument;
+      programs.emplace(key, std::move(*program));
+    }
+    std::vector<rt::SceneObject> objects;
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+      const MaterialProgram& program = programs.at(chosen[o]);
+      objects.push_back({&meshes.at(scene.objects[o].mesh).mesh, scene.objects[o].objectToWorld, program.resources.get(),
+                         &program.shader.interface, &program.spirv});
+    }
+    rt::Renderer renderer(*device.context(), *tables);
+    Progress progress(settings.frames);
+    rt::RenderResult image = renderer.renderScene(objects, settings, [&](uint32_t frame) {
+      progress.step(fmt::format("{} objects, frame {}", objects.size(), frame));
+    });
+    size_t bad = 0;
+    for (float v : image.image.pixels) bad += std::isfinite(v) ? 0 : 1;
+    for (const std::string& output : options.outputs) {
+      if (printError(stageRender(output, image.image, finish, outputs))) return kOutputFailed;
+    }
+    if (bad > 0) {
+      std::fprintf(stderr, "error: %zu pixel values are NaN or infinite (written for inspection)\n", bad);
+      result = kInvalidDocument;
+    }
+    summary = fmt::format("{}: wrote {} ({}x{}, {} objects, {} materials, {} spp, {:.2f} ms per frame on {})",
+                          scene.file.filename().string(), fmt::join(options.outputs, ", "), settings.width, settings.height,
+                          objects.size(), programs.size(), settings.frames, image.msPerFrame, device.context()->deviceName());
+  } catch (const std::bad_alloc&) {
+    throw;  // "out of memory", exit 4 (cli/Main.cpp)
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return kInvalidDocument;
+  }
+  if (!device.checkValidation()) return kInvalidDocument;
+  if (printError(outputs.commit())) return kOutputFailed;
+  std::printf("%s\n", summary.c_str());
+  return result;
+}
+
+}  // namespace mxc::cli
