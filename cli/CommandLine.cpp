@@ -211,6 +211,9 @@ void registerRender(CLI::App& app, int& exitCode) {
   command->add_option("--mesh", options->mesh,
                       "sphere, plane, a name found on the search path as resources/Geometry/NAME.glb or .obj "
                       "(shaderball, teapot, cube, ...), or a .glb, .gltf or .obj file");
+  command->add_option("--look", options->look,
+                      "A look of the document: one image with its material assignments to the mesh's parts (glTF "
+                      "nodes, OBJ groups: Preview_Mesh and Calibration_Mesh of the shader ball) or to the mesh");
   command->add_option("--search-path", options->searchPaths,
                       "A folder searched for --mesh names, before those of MATERIALX_SEARCH_PATH; repeatable");
   command->add_option("--camera-position", options->cameraPosition,

@@ -190,6 +190,33 @@ int runRender(const RenderOptions& options) {
     std::fprintf(stderr, "error: %s\n", why->c_str());
     return kUsage;
   }
+  if (!options.look.empty()) {
+    // One image of the look's assignments: a scene of one object, the mesh, named after it.
+    if (!options.materials.material.empty()) {
+      std::fprintf(stderr, "error: --material and --look: the look chooses the materials\n");
+      return kUsage;
+    }
+    Scene scene;
+    scene.documents = {options.file};
+    scene.look = options.look;
+    SceneObjectSpec object;
+    object.name = std::filesystem::path(options.mesh).stem().string();
+    object.mesh = options.mesh;
+    scene.objects = {object};
+    scene.lights = settings.lights;
+    scene.environment = {settings.environment, environmentImage ? options.environment : std::string(),
+                         settings.environmentIntensity, settings.environmentRotation};
+    scene.camera = settings.camera;
+    scene.width = settings.width;
+    scene.height = settings.height;
+    scene.spp = settings.frames;
+    scene.exposure = options.exposure;
+    scene.toneMapping = options.toneMapping;
+    if (!options.background.empty()) scene.background = glm::vec3(background[0], background[1], background[2]);
+    std::map<std::string, MeshChoice> meshes;
+    meshes.emplace(options.mesh, std::get<MeshChoice>(std::move(chosen)));
+    return renderSceneData(scene, options, std::move(meshes));
+  }
 
   Session session;
   MaterialPipeline pipeline(session);

@@ -4,6 +4,7 @@
 /// OBJ file) to EXR or PNG.
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,8 @@ struct RenderOptions {
   /// Linear R,G,B; empty: the environment image where there is one, else kDefaultBackground.
   std::string background;
   std::string mesh = "sphere";  ///< cli/MeshArgument.h
+  /// A look of the document: one image of its assignments to the mesh's parts (or the mesh).
+  std::string look;
   std::vector<std::string> searchPaths;
   /// X,Y,Z; empty: framed from the mesh's bounds (runtime/Camera.h).
   std::string cameraPosition;
@@ -49,6 +52,12 @@ int runRender(const RenderOptions& options);
 
 /// `mxc render SCENE.json` (cli/SceneRender.cpp).
 int runSceneRender(const RenderOptions& options);
+
+struct Scene;
+struct MeshChoice;
+/// Renders `scene` (read from a file, or made from the command line) to the options' outputs;
+/// `meshes` holds meshes already loaded, by the scene's mesh strings.
+int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<std::string, MeshChoice> meshes);
 
 /// "N" or "WxH", each from 8 to 8192; false otherwise.
 bool parseRenderSize(const std::string& text, uint32_t& width, uint32_t& height);

@@ -38,7 +38,7 @@ struct SceneEnvironment {
 };
 
 struct Scene {
-  std::filesystem::path file;
+  std::filesystem::path file;  ///< empty for a scene made from the command line (`--look`)
   std::vector<std::filesystem::path> documents;   ///< resolved against the scene's folder
   std::vector<std::filesystem::path> searchPaths;  ///< idem
   std::string look;                                ///< a look of the documents, or empty
@@ -46,6 +46,9 @@ struct Scene {
   std::vector<rt::Light> lights;
   SceneEnvironment environment;
   std::optional<rt::Camera> camera;  ///< none: framed to fit every object
+  /// Where the framing camera looks from (from the objects towards the eye): the front and a
+  /// little above, so that a floor is seen rather than its edge.
+  glm::vec3 viewDirection{0.0f, 0.35f, 1.0f};
   uint32_t width = 512, height = 512;
   uint32_t spp = 64;
   float exposure = 0.0f;

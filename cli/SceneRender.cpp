@@ -84,17 +84,25 @@ int runSceneRender(const RenderOptions& options) {
   auto given = [&](const char* option) {
     return std::find(options.explicitOptions.begin(), options.explicitOptions.end(), option) != options.explicitOptions.end();
   };
-  rt::RenderSettings settings;
-  settings.width = scene.width;
-  settings.height = scene.height;
-  if (given("--size") && !parseRenderSize(options.size, settings.width, settings.height)) {
+  if (given("--size") && !parseRenderSize(options.size, scene.width, scene.height)) {
     std::fprintf(stderr, "error: --size %s: expected N or WxH, each from 8 to 8192\n", options.size.c_str());
     return kUsage;
   }
-  settings.frames = given("--spp") ? static_cast<uint32_t>(options.spp) : scene.spp;
-  const float exposure = given("--exposure") ? options.exposure : scene.exposure;
-  const rt::ToneMapping tone =
-      rt::parseToneMapping(given("--tonemap") ? options.toneMapping : scene.toneMapping).value_or(rt::ToneMapping::AcesFit);
+  if (given("--spp")) scene.spp = static_cast<uint32_t>(options.spp);
+  if (given("--exposure")) scene.exposure = options.exposure;
+  if (given("--tonemap")) scene.toneMapping = options.toneMapping;
+  return renderSceneData(scene, options, {});
+}
+
+int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<std::string, MeshChoice> meshes) {
+  // What messages name: the scene file, or the document of a scene made from the command line.
+  const std::string source = scene.file.empty() ? options.file : scene.file.string();
+  rt::RenderSettings settings;
+  settings.width = scene.width;
+  settings.height = scene.height;
+  settings.frames = scene.spp;
+  const float exposure = scene.exposure;
+  const rt::ToneMapping tone = rt::parseToneMapping(scene.toneMapping).value_or(rt::ToneMapping::AcesFit);
   settings.environment = scene.environment.kind;
   settings.environmentIntensity = scene.environment.intensity;
   settings.environmentRotation = scene.environment.rotationDegrees;
@@ -112,13 +120,12 @@ int runSceneRender(const RenderOptions& options) {
   // Meshes, each file read once however many objects use it.
   std::vector<std::filesystem::path> paths = scene.searchPaths;
   for (const auto& p : searchPaths(options.searchPaths)) paths.push_back(p);
-  std::map<std::string, MeshChoice> meshes;
   std::vector<rt::MeshBounds> spheres;
   for (const SceneObjectSpec& object : scene.objects) {
     if (!meshes.count(object.mesh)) {
       auto chosen = chooseMesh(object.mesh, paths);
       if (auto* why = std::get_if<std::string>(&chosen)) {
-        std::fprintf(stderr, "%s: error: object '%s': %s\n", scene.file.string().c_str(), object.name.c_str(), why->c_str());
+        std::fprintf(stderr, "%s: error: object '%s': %s\n", source.c_str(), object.name.c_str(), why->c_str());
         return kInvalidDocument;
       }
       meshes.emplace(object.mesh, std::move(std::get<MeshChoice>(chosen)));
@@ -131,7 +138,7 @@ int runSceneRender(const RenderOptions& options) {
     rt::fitClipPlanes(settings.camera, bounds);
   } else {
     // From the front and a little above, so that a floor is seen rather than its edge.
-    settings.camera = rt::frameBounds(bounds, glm::vec3(0.0f, 0.35f, 1.0f), 45.0f, float(settings.width) / float(settings.height));
+    settings.camera = rt::frameBounds(bounds, scene.viewDirection, 45.0f, float(settings.width) / float(settings.height));
   }
 
   // Documents, and each object's material: its own, else its document's look.
@@ -146,7 +153,10 @@ int runSceneRender(const RenderOptions& options) {
     if (int code = pipeline->run(std::move(request), materialOptions); code != kOk) return code;
     pipelines.push_back(std::move(pipeline));
   }
-  std::vector<std::string> assigned(scene.objects.size());
+  // The look's assignments, by geometry name (an object's, or a part's of its mesh); the last
+  // assignment of a name wins, as later elements of a document do; "*" or no geom: anything.
+  std::map<std::string, std::string> assignedTo;
+  std::string assignedToAll;
   if (!scene.look.empty()) {
     bool found = false;
     for (auto& pipeline : pipelines) {
@@ -157,28 +167,54 @@ int runSceneRender(const RenderOptions& options) {
         found = true;
         for (const doc::MaterialAssign& assign : look.assigns) {
           const std::vector<std::string> names = geomNames(assign.geom);
-          for (size_t o = 0; o < scene.objects.size(); ++o) {
-            const bool all = assign.geom.empty() || std::find(names.begin(), names.end(), "*") != names.end();
-            if (all || std::find(names.begin(), names.end(), scene.objects[o].name) != names.end()) {
-              assigned[o] = std::string(assign.material);
-            }
+          if (assign.geom.empty() || std::find(names.begin(), names.end(), "*") != names.end()) {
+            assignedToAll = std::string(assign.material);
           }
+          for (const std::string& name : names) assignedTo[name] = std::string(assign.material);
         }
       }
     }
     if (!found) {
-      std::fprintf(stderr, "%s: error: look: no document of the scene has a look named '%s'\n", scene.file.string().c_str(),
+      std::fprintf(stderr, "%s: error: look: no document of the scene has a look named '%s'\n", source.c_str(),
                    scene.look.c_str());
       return kInvalidDocument;
     }
   }
-  // Material name -> (pipeline, material); each used material compiled once.
-  std::vector<std::pair<size_t, size_t>> chosen(scene.objects.size());
+  auto lookMaterial = [&](const std::string& name) {
+    auto it = assignedTo.find(name);
+    return it != assignedTo.end() ? it->second : assignedToAll;
+  };
+  // The draws: an object with its own material is one draw; otherwise, when the look assigns
+  // parts of its mesh, one draw per part; otherwise the look's material for the object.
+  struct Draw {
+    size_t object;
+    std::string material;
+    std::string what;  ///< "objects[1] ('ball')", with " part 'Preview_Mesh'"
+    uint32_t firstIndex = 0, indexCount = 0;
+  };
+  std::vector<Draw> draws;
   for (size_t o = 0; o < scene.objects.size(); ++o) {
-    const std::string& name = scene.objects[o].material.empty() ? assigned[o] : scene.objects[o].material;
+    const SceneObjectSpec& object = scene.objects[o];
+    const std::string what = fmt::format("objects[{}] ('{}')", o, object.name);
+    const rt::Mesh& mesh = meshes.at(object.mesh).mesh;
+    const bool byParts = object.material.empty() &&
+                         std::any_of(mesh.parts.begin(), mesh.parts.end(), [&](const rt::MeshPart& p) { return assignedTo.count(p.name) > 0; });
+    if (!byParts) {
+      draws.push_back({o, object.material.empty() ? lookMaterial(object.name) : object.material, what});
+      continue;
+    }
+    for (const rt::MeshPart& part : mesh.parts) {
+      const std::string material = assignedTo.count(part.name) ? assignedTo.at(part.name) : lookMaterial(object.name);
+      draws.push_back({o, material, fmt::format("{} part '{}'", what, part.name), part.firstIndex, part.indexCount});
+    }
+  }
+  // Material name -> (pipeline, material); each used material compiled once.
+  std::vector<std::pair<size_t, size_t>> chosen(draws.size());
+  for (size_t d = 0; d < draws.size(); ++d) {
+    const std::string& name = draws[d].material;
     if (name.empty()) {
-      std::fprintf(stderr, "%s: error: objects[%zu] ('%s'): the look '%s' assigns it no material\n", scene.file.string().c_str(),
-                   o, scene.objects[o].name.c_str(), scene.look.c_str());
+      std::fprintf(stderr, "%s: error: %s: the look '%s' assigns it no material\n", source.c_str(),
+                   draws[d].what.c_str(), scene.look.c_str());
       return kInvalidDocument;
     }
     std::vector<std::pair<size_t, size_t>> matches;
@@ -189,12 +225,11 @@ int runSceneRender(const RenderOptions& options) {
       }
     }
     if (matches.size() != 1) {
-      std::fprintf(stderr, "%s: error: objects[%zu] ('%s'): %s material named '%s'\n", scene.file.string().c_str(), o,
-                   scene.objects[o].name.c_str(), matches.empty() ? "no document of the scene has a" : "more than one document has a",
-                   name.c_str());
+      std::fprintf(stderr, "%s: error: %s: %s material named '%s'\n", source.c_str(), draws[d].what.c_str(),
+                   matches.empty() ? "no document of the scene has a" : "more than one document has a", name.c_str());
       return kInvalidDocument;
     }
-    chosen[o] = matches[0];
+    chosen[d] = matches[0];
   }
 
   OutputSet outputs;
@@ -205,7 +240,7 @@ int runSceneRender(const RenderOptions& options) {
   for (const auto& pipeline : pipelines) {
     if (printError(pipeline->checkOutputsAreNotInputs(outputs))) return kUsage;
   }
-  if (printError(outputs.checkNotInput(scene.file, "the scene"))) return kUsage;
+  if (!scene.file.empty() && printError(outputs.checkNotInput(scene.file, "the scene"))) return kUsage;
   for (const auto& [name, mesh] : meshes) {
     if (!mesh.file.empty() && printError(outputs.checkNotInput(mesh.file, "a mesh"))) return kUsage;
   }
@@ -222,7 +257,7 @@ int runSceneRender(const RenderOptions& options) {
     auto image = rt::EnvironmentMap::read(scene.environment.image, device.context()->maxImageDimension2D(), warnings);
     for (const std::string& w : warnings) std::fprintf(stderr, "warning: environment.file %s\n", w.c_str());
     if (auto* why = std::get_if<std::string>(&image)) {
-      std::fprintf(stderr, "%s: error: environment.file: %s\n", scene.file.string().c_str(), why->c_str());
+      std::fprintf(stderr, "%s: error: environment.file: %s\n", source.c_str(), why->c_str());
       return kInvalidDocument;
     }
     environment = std::make_unique<rt::EnvironmentMap>(*device.context(), std::move(std::get<rt::RgbaImage>(image)));
@@ -249,15 +284,16 @@ int runSceneRender(const RenderOptions& options) {
       programs.emplace(key, std::move(*program));
     }
     std::vector<rt::SceneObject> objects;
-    for (size_t o = 0; o < scene.objects.size(); ++o) {
-      const MaterialProgram& program = programs.at(chosen[o]);
-      objects.push_back({&meshes.at(scene.objects[o].mesh).mesh, scene.objects[o].objectToWorld, program.resources.get(),
-                         &program.shader.interface, &program.spirv});
+    for (size_t d = 0; d < draws.size(); ++d) {
+      const MaterialProgram& program = programs.at(chosen[d]);
+      const SceneObjectSpec& object = scene.objects[draws[d].object];
+      objects.push_back({&meshes.at(object.mesh).mesh, object.objectToWorld, program.resources.get(), &program.shader.interface,
+                         &program.spirv, draws[d].firstIndex, draws[d].indexCount});
     }
     rt::Renderer renderer(*device.context(), *tables);
     Progress progress(settings.frames);
     rt::RenderResult image = renderer.renderScene(objects, settings, [&](uint32_t frame) {
-      progress.step(fmt::format("{} objects, frame {}", objects.size(), frame));
+      progress.step(fmt::format("{} objects, frame {}", scene.objects.size(), frame));
     });
     size_t bad = 0;
     for (float v : image.image.pixels) bad += std::isfinite(v) ? 0 : 1;
@@ -269,8 +305,8 @@ int runSceneRender(const RenderOptions& options) {
       result = kInvalidDocument;
     }
     summary = fmt::format("{}: wrote {} ({}x{}, {} objects, {} materials, {} spp, {:.2f} ms per frame on {})",
-                          scene.file.filename().string(), fmt::join(options.outputs, ", "), settings.width, settings.height,
-                          objects.size(), programs.size(), settings.frames, image.msPerFrame, device.context()->deviceName());
+                          scene.file.empty() ? scene.look : scene.file.filename().string(), fmt::join(options.outputs, ", "), settings.width, settings.height,
+                          scene.objects.size(), programs.size(), settings.frames, image.msPerFrame, device.context()->deviceName());
   } catch (const std::bad_alloc&) {
     throw;  // "out of memory", exit 4 (cli/Main.cpp)
   } catch (const std::exception& e) {

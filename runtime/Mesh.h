@@ -4,6 +4,7 @@
 /// texture coordinates: a UV sphere and a plane made here; files are read by runtime/MeshFile.h.
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -19,9 +20,20 @@ struct Vertex {
   glm::vec2 uv;
 };
 
+/// A named piece of a mesh: a range of its triangles (a glTF node, an OBJ object or group), what
+/// a MaterialX look's `geom` names (`Preview_Mesh` of the shader ball).
+struct MeshPart {
+  std::string name;
+  uint32_t firstIndex = 0;  ///< into Mesh::indices, a multiple of 3
+  uint32_t indexCount = 0;
+};
+
 struct Mesh {
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;  ///< triangles, counter-clockwise seen from the front
+  /// The pieces in file order, covering `indices` without overlap (unnamed ones get "node<N>"
+  /// or "shape<N>"); empty for the sphere and the plane.
+  std::vector<MeshPart> parts;
 };
 
 /// A unit sphere at the origin, y up, u around the y axis and v from the south pole (0) to the

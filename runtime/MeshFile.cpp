@@ -343,17 +343,24 @@ std::variant<Mesh, std::string> loadGltf(const std::filesystem::path& path, cons
     if (node.mesh >= 0) {
       if (size_t(node.mesh) >= model.meshes.size()) return fmt::format("{}: node {}: mesh {} does not exist", path.string(), index, node.mesh);
       const tinygltf::Mesh& gltfMesh = model.meshes[size_t(node.mesh)];
+      // The node is a part, named as MaterialX's viewer names geometry: the node's name, else its
+      // mesh's.
+      MeshPart part;
+      part.name = !node.name.empty() ? node.name : !gltfMesh.name.empty() ? gltfMesh.name : fmt::format("node{}", index);
+      part.firstIndex = static_cast<uint32_t>(out.indices.size());
       for (size_t p = 0; p < gltfMesh.primitives.size(); ++p) {
         auto read = readPrimitive(model, gltfMesh.primitives[p], toWorld);
         if (auto* why = std::get_if<std::string>(&read)) {
           return fmt::format("{}: mesh {} ('{}') primitive {}: {}", path.string(), node.mesh, gltfMesh.name, p, *why);
         }
-        const Mesh& part = std::get<Mesh>(read);
-        if (out.vertices.size() + part.vertices.size() > size_t{1} << 31) return fmt::format("{}: more than 2^31 vertices", path.string());
+        const Mesh& piece = std::get<Mesh>(read);
+        if (out.vertices.size() + piece.vertices.size() > size_t{1} << 31) return fmt::format("{}: more than 2^31 vertices", path.string());
         const uint32_t offset = static_cast<uint32_t>(out.vertices.size());
-        out.vertices.insert(out.vertices.end(), part.vertices.begin(), part.vertices.end());
-        for (uint32_t i : part.indices) out.indices.push_back(offset + i);
+        out.vertices.insert(out.vertices.end(), piece.vertices.begin(), piece.vertices.end());
+        for (uint32_t i : piece.indices) out.indices.push_back(offset + i);
       }
+      part.indexCount = static_cast<uint32_t>(out.indices.size()) - part.firstIndex;
+      if (part.indexCount > 0) out.parts.push_back(std::move(part));
     }
     for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.emplace_back(*c, toWorld);
   }
@@ -383,6 +390,9 @@ std::variant<Mesh, std::string> loadObjText(const std::filesystem::path& path, c
   std::vector<int> positionOf;  // per vertex, for smooth normals
   bool missingNormals = false;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    MeshPart part;
+    part.name = shape.name.empty() ? fmt::format("shape{}", mesh.parts.size()) : shape.name;
+    part.firstIndex = static_cast<uint32_t>(mesh.indices.size());
     size_t corner = 0;
     for (unsigned char faceSize : shape.mesh.num_face_vertices) {
       if (faceSize != 3) return fmt::format("{}: shape '{}' has a face of {} corners after triangulation", path.string(), shape.name, int(faceSize));
@@ -414,6 +424,8 @@ std::variant<Mesh, std::string> loadObjText(const std::filesystem::path& path, c
         mesh.indices.push_back(found->second);
       }
     }
+    part.indexCount = static_cast<uint32_t>(mesh.indices.size()) - part.firstIndex;
+    if (part.indexCount > 0) mesh.parts.push_back(std::move(part));
   }
   if (mesh.indices.empty()) return fmt::format("{}: the mesh has no faces (f lines)", path.string());
   if (missingNormals) {

@@ -9,10 +9,12 @@
 ///   transform with a negative determinant reverses the winding (3.7.1) and the bitangent's
 ///   handedness. Triangle lists, strips and fans; points and lines are skipped. Normals, the
 ///   first texture coordinate set and tangents come from the file; missing normals are flat
-///   (3.7.2.1), missing tangents MikkTSpace-compatible (runtime/Tangents.h). Images are not
-///   read: a material's textures come from its document.
+///   (3.7.2.1), missing tangents MikkTSpace-compatible (runtime/Tangents.h). Each node with a
+///   mesh is a part (Mesh::parts) named by the node, else its mesh. Images are not read: a
+///   material's textures come from its document.
 /// - OBJ: v, vt, vn and polygonal faces (triangulated as fans); missing normals are smooth
-///   (area-weighted over the faces sharing a position), tangents MikkTSpace-compatible.
+///   (area-weighted over the faces sharing a position), tangents MikkTSpace-compatible. Each
+///   object or group (tinyobjloader's shapes) is a part.
 ///
 /// Files are read through readInputFile (bounded size, no FIFOs or devices), buffers a .gltf
 /// names included. Every index and accessor range is checked; a mesh with no triangle, or with

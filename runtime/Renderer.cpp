@@ -42,6 +42,7 @@ float halton(uint32_t index, uint32_t base) {
 /// The Vulkan objects of one draw item: its mesh's buffers, its layout and both pipelines.
 struct ItemObjects {
   Buffer vertices, indices;
+  uint32_t firstIndex = 0;
   uint32_t indexCount = 0;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkPipeline depthPipeline = VK_NULL_HANDLE;
@@ -311,6 +312,8 @@ RenderResult Renderer::renderScene(const std::vector<SceneObject>& objects, cons
     item.inputs = inputs;
     item.sets = {st.set.get(), &environment.set()};
     item.objectToWorld = object.objectToWorld;
+    item.firstIndex = object.firstIndex;
+    item.indexCount = object.indexCount;
     item.beforeFrame = [&st, &s, lights](const FrameView& v) {
       st.block.set("objectToWorld", v.objectToWorld);
       st.block.set("normalToWorld", v.normalToWorld);
@@ -362,7 +365,10 @@ RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const Rende
     std::memcpy(o.vertices.mapped, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex));
     o.indices = context_.createBuffer(mesh.indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     std::memcpy(o.indices.mapped, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
-    o.indexCount = static_cast<uint32_t>(mesh.indices.size());
+    // The item's range of the mesh's triangles, clamped to the mesh.
+    o.firstIndex = std::min(item.firstIndex, static_cast<uint32_t>(mesh.indices.size()));
+    const uint32_t available = static_cast<uint32_t>(mesh.indices.size()) - o.firstIndex;
+    o.indexCount = item.indexCount == 0 ? available : std::min(item.indexCount, available);
     // The modules are needed only while the pipelines are created.
     ShaderModule vertex(context_, *item.vertexSpirv);
     ShaderModule fragment(context_, *item.fragmentSpirv);
@@ -444,7 +450,7 @@ RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const Rende
           vkCmdBindVertexBuffers(cmd, 0, 1, &o.vertices.buffer, &offset);
           vkCmdBindIndexBuffer(cmd, o.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
           vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shading ? o.shadePipeline : o.depthPipeline);
-          vkCmdDrawIndexed(cmd, o.indexCount, 1, 0, 0, 0);
+          vkCmdDrawIndexed(cmd, o.indexCount, 1, o.firstIndex, 0, 0);
         }
       }
       vkCmdEndRenderPass(cmd);

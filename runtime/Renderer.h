@@ -96,6 +96,9 @@ struct SceneObject {
   const MaterialResources* resources = nullptr;
   const glsl::MaterialInterface* material = nullptr;
   const std::vector<uint32_t>* fragmentSpirv = nullptr;  ///< glsl::ShaderKind::Raster
+  /// The triangles drawn: indexCount indices from firstIndex (0: all of the mesh's).
+  uint32_t firstIndex = 0;
+  uint32_t indexCount = 0;
 };
 
 /// One draw of a render: a mesh with a vertex and fragment shader pair and its descriptor sets
@@ -108,6 +111,8 @@ struct DrawItem {
   std::vector<const DescriptorSet*> sets;
   glm::mat4 objectToWorld{1.0f};
   std::function<void(const FrameView&)> beforeFrame;
+  uint32_t firstIndex = 0;  ///< as SceneObject's
+  uint32_t indexCount = 0;
 };
 
 class Renderer {

@@ -6,7 +6,7 @@
 // fast tier's; and the time per BSDF evaluation (f cos and pdf of one direction pair) in the
 // compute harness, against a white Lambertian's in the same run.
 //
-//   build/tests/bench/shader_bench [--size N] [--frames N] [--repeat N]
+//   build/tests/bench/shader_bench [--size N] [--frames N] [--repeat N] [--pairs N]
 
 #include <algorithm>
 #include <chrono>
@@ -107,7 +107,9 @@ size_t optimizedCount(const Compiled& c) {
 int main(int argc, char** argv) {
   uint32_t size = 512, frames = 16;
   int repeat = 5;
+  uint32_t pairCount = 1u << 20;
   for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--pairs")) pairCount = static_cast<uint32_t>(std::max(1, std::atoi(argv[i + 1])));
     if (!std::strcmp(argv[i], "--size")) size = static_cast<uint32_t>(std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--frames")) frames = static_cast<uint32_t>(std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--repeat")) repeat = std::max(1, std::atoi(argv[i + 1]));
@@ -148,7 +150,7 @@ int main(int argc, char** argv) {
 
   // Direction pairs over the sphere (a fixed sequence), the same for every material.
   std::vector<mxc::rt::DirectionPair> pairs;
-  for (uint32_t k = 0; k < (1u << 20); ++k) {
+  for (uint32_t k = 0; k < pairCount; ++k) {
     auto direction = [](float u, float v) {  // uniform on the sphere
       const float z = 1.0f - 2.0f * u, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 6.2831853f * v;
       return glm::vec3(r * std::cos(phi), r * std::sin(phi), z);

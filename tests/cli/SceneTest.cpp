@@ -224,5 +224,28 @@ TEST(SceneRender, ASpotLightLightsOnlyItsCone) {
   fs::remove(scene);
 }
 
+TEST(SceneRender, ADocumentsLookDressesTheShaderBallsParts) {
+  // standard_surface_look_wood_tiled.mtlx assigns Tiled_Wood to Preview_Mesh and
+  // Greysphere_Calibration to Calibration_Mesh, the shader ball's two nodes, as MaterialX's
+  // viewer shows it.
+  const fs::path tree = sharedDir() / "conformance/materialx-tree";
+  if (!fs::exists(tree / "resources/Geometry/shaderball.glb")) GTEST_SKIP() << "no shader ball under " << tree;
+  const std::string document = corpus("materialx/examples/StandardSurface/standard_surface_look_wood_tiled.mtlx");
+  const fs::path out = writeTemp("look.exr", "");
+  CommandRun r = mxc("render " + document + " -o " + out.string() + " --mesh shaderball --search-path " + tree.string() +
+                     " --look Wood_Look --size 48 --spp 1");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("Wood_Look: wrote"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("2 materials"), std::string::npos) << r.out;
+  auto image = rt::readImage(out);
+  fs::remove(out);
+  ASSERT_TRUE(std::holds_alternative<rt::RgbaImage>(image));
+  EXPECT_EQ(std::get<rt::RgbaImage>(image).at(24, 24)[3], 1.0f);
+  r = mxc("render " + document + " -o " + out.string() + " --mesh shaderball --search-path " + tree.string() + " --look Nope");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find(document + ": error: look: no document of the scene has a look named 'Nope'"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 }  // namespace
 }  // namespace mxc::test

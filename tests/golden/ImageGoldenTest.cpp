@@ -1,6 +1,7 @@
-// Golden images: rendered spheres of chosen corpus materials (both shading models, textured and
-// procedural ones included), committed under generated/images/ as EXR and compared with an
-// explicit per-pixel tolerance. A failing comparison writes the image and a difference image
+// Golden images: chosen corpus materials (both shading models, textured and procedural ones
+// included) rendered on a sphere under the analytic sky and a key light, and on MaterialX's
+// shader ball under the studio HDR image, committed under generated/images/ (shader balls in
+// generated/images/shaderball/) as EXR and compared with an explicit per-pixel tolerance. A failing comparison writes the image and a difference image
 // to the build folder (test-output/). `scripts/update-goldens` rewrites them.
 
 #include <gtest/gtest.h>
@@ -10,7 +11,9 @@
 
 #include <fmt/format.h>
 
+#include "runtime/EnvironmentMap.h"
 #include "runtime/ImageIO.h"
+#include "runtime/MeshFile.h"
 #include "support/MaterialSupport.h"
 
 namespace mxc::test {
@@ -71,17 +74,11 @@ std::string compare(const rt::RgbaImage& actual, const rt::RgbaImage& expected, 
   return fmt::format("{:.3f}% of channels outside tolerance, mean difference {:.5f}", 100.0 * share, mean);
 }
 
-class ImageGolden : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(ImageGolden, MatchesCommittedImage) {
-  const fs::path document = sharedDir() / GetParam();
-  Context context;
-  std::vector<ir::Material> materials = lowerFile(context, document);
-  ASSERT_EQ(materials.size(), 1u);
-  rt::RgbaImage actual = render(materials[0], goldenSettings(), document.parent_path());
+/// Compares `actual` with the golden `golden` (an .exr; a .png beside it for people), or
+/// rewrites it under MXC_UPDATE_GOLDENS=1 when it no longer matches.
+void checkGolden(const rt::RgbaImage& actual, const fs::path& golden) {
   ASSERT_FALSE(actual.pixels.empty());
-  const std::string name = fs::path(GetParam()).stem().string();
-  const fs::path golden = sourceDir() / "generated/images" / (name + ".exr");
+  const std::string name = golden.stem().string();
   const char* update = std::getenv("MXC_UPDATE_GOLDENS");
   const bool updating = update && std::string(update) == "1";
   auto read = rt::readImage(golden);
@@ -111,6 +108,57 @@ TEST_P(ImageGolden, MatchesCommittedImage) {
                   << " (scripts/update-goldens rewrites the golden)";
   }
 }
+
+class ImageGolden : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ImageGolden, MatchesCommittedImage) {
+  const fs::path document = sharedDir() / GetParam();
+  Context context;
+  std::vector<ir::Material> materials = lowerFile(context, document);
+  ASSERT_EQ(materials.size(), 1u);
+  const rt::RgbaImage actual = render(materials[0], goldenSettings(), document.parent_path());
+  checkGolden(actual, sourceDir() / "generated/images" / (fs::path(GetParam()).stem().string() + ".exr"));
+}
+
+/// The shader ball under studio.exr, framed as `mxc render --mesh shaderball` frames it.
+class ShaderBallGolden : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ShaderBallGolden, MatchesCommittedImage) {
+  const fs::path ballFile = sharedDir() / "conformance/materialx-tree/resources/Geometry/shaderball.glb";
+  const fs::path studio = sharedDir() / "corpus/environments/studio.exr";
+  if (!fs::exists(ballFile) || !fs::exists(studio)) GTEST_SKIP() << "no shader ball or studio.exr under " << sharedDir();
+  static const rt::Mesh ball = [&] {
+    auto loaded = rt::loadMesh(ballFile);
+    return std::holds_alternative<rt::Mesh>(loaded) ? std::get<rt::Mesh>(loaded) : rt::Mesh{};
+  }();
+  ASSERT_FALSE(ball.indices.empty());
+  static const std::unique_ptr<rt::EnvironmentMap> environment = [&] {
+    std::vector<std::string> warnings;
+    auto image = rt::EnvironmentMap::read(studio, 16384, warnings);
+    return std::holds_alternative<rt::RgbaImage>(image)
+               ? std::make_unique<rt::EnvironmentMap>(Device::get().context, std::move(std::get<rt::RgbaImage>(image)))
+               : nullptr;
+  }();
+  ASSERT_TRUE(environment);
+  rt::RenderSettings s;
+  s.width = s.height = 128;
+  s.frames = 48;
+  s.environment = rt::Environment::Map;
+  s.environmentMap = environment.get();
+  s.environmentRotation = 90.0f;
+  s.camera = rt::frameBounds(rt::meshBounds(ball), glm::vec3(0.0f, 0.0f, 1.0f), 45.0f, 1.0f);
+  const fs::path document = sharedDir() / GetParam();
+  Context context;
+  std::vector<ir::Material> materials = lowerFile(context, document);
+  ASSERT_EQ(materials.size(), 1u);
+  const rt::RgbaImage actual = render(materials[0], s, document.parent_path(), Accuracy::Balanced, &ball);
+  checkGolden(actual, sourceDir() / "generated/images/shaderball" / (fs::path(GetParam()).stem().string() + ".exr"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, ShaderBallGolden, ::testing::ValuesIn(kGoldenMaterials),
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           return fs::path(param.param).stem().string();
+                         });
 
 INSTANTIATE_TEST_SUITE_P(Corpus, ImageGolden, ::testing::ValuesIn(kGoldenMaterials),
                          [](const ::testing::TestParamInfo<std::string>& param) {

@@ -223,6 +223,26 @@ TEST(GltfMesh, ReadsTheShaderBall) {
   const rt::MeshBounds bounds = rt::meshBounds(mesh);
   EXPECT_GT(bounds.radius, 1.0f);
   EXPECT_LT(bounds.radius, 2.0f);
+  // Its nodes are the parts MaterialX's looks assign (standard_surface_look_wood_tiled.mtlx),
+  // in order, covering every triangle once.
+  ASSERT_EQ(mesh.parts.size(), 2u);
+  EXPECT_EQ(mesh.parts[0].name, "Preview_Mesh");
+  EXPECT_EQ(mesh.parts[1].name, "Calibration_Mesh");
+  EXPECT_EQ(mesh.parts[0].firstIndex, 0u);
+  EXPECT_EQ(mesh.parts[1].firstIndex, mesh.parts[0].indexCount);
+  EXPECT_EQ(mesh.parts[0].indexCount + mesh.parts[1].indexCount, mesh.indices.size());
+}
+
+TEST(ObjMesh, ObjectsAndGroupsAreParts) {
+  const fs::path path = writeTemp("parts.obj", "o first\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
+                                               "o second\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\nf 4 5 7 6\n");
+  const Mesh mesh = load(path);
+  ASSERT_EQ(mesh.parts.size(), 2u);
+  EXPECT_EQ(mesh.parts[0].name, "first");
+  EXPECT_EQ(mesh.parts[0].indexCount, 3u);
+  EXPECT_EQ(mesh.parts[1].name, "second");
+  EXPECT_EQ(mesh.parts[1].firstIndex, 3u);
+  EXPECT_EQ(mesh.parts[1].indexCount, 6u);
 }
 
 }  // namespace

@@ -156,14 +156,16 @@ inline std::string bsdfDocument(const std::string& bsdf, const std::string& name
 namespace mxc::test {
 
 /// Renders a material on the default sphere with the shared device.
+/// The material on `mesh` (the unit sphere when null).
 inline rt::RgbaImage render(const ir::Material& material, const rt::RenderSettings& settings,
-                            const std::filesystem::path& folder = {}, Accuracy accuracy = Accuracy::Balanced) {
+                            const std::filesystem::path& folder = {}, Accuracy accuracy = Accuracy::Balanced,
+                            const rt::Mesh* mesh = nullptr) {
   Prepared p = prepare(material, glsl::ShaderKind::Raster, folder, accuracy);
   if (!p.ok()) return {};
   static std::unique_ptr<rt::Renderer> renderer;  // its vertex shader is compiled once
   if (!renderer) renderer = std::make_unique<rt::Renderer>(Device::get().context, Device::get().tables);
   static const rt::Mesh sphere = rt::makeSphere();
-  return renderer->render(sphere, *p.resources, p.shader.interface, p.words, settings).image;
+  return renderer->render(mesh ? *mesh : sphere, *p.resources, p.shader.interface, p.words, settings).image;
 }
 
 }  // namespace mxc::test
