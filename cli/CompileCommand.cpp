@@ -2,13 +2,17 @@
 
 #include <chrono>
 #include <cstdio>
+#include <algorithm>
 #include <memory>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "cli/OutputSet.h"
 #include "cli/ExitCode.h"
 #include "cli/MaterialPipeline.h"
+#include "cli/Scene.h"
+#include "compiler/document/Document.h"
 #include "compiler/glsl/ShaderBuilder.h"
 #include "compiler/spirv/SpirvCompiler.h"
 
@@ -23,32 +27,35 @@ glsl::ShaderKind kindOf(const std::string& stage) {
   return glsl::ShaderKind::Raster;
 }
 
-}  // namespace
 
-int runCompile(const CompileOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  Session session;
-  MaterialPipeline pipeline(session);
-  CompileRequest request;
-  request.document = options.file;
-  request.stage = kindOf(options.stage);
-  request.optimize = options.optimize;
-  if (int code = pipeline.run(std::move(request), options.materials); code != kOk) return code;
-  Compiler& compiler = pipeline.compiler();
-  const bool several = pipeline.materials().size() > 1;
+/// One material to compile, in the pipeline of its document.
+struct Unit {
+  MaterialPipeline* pipeline;
+  const ir::Material* material;
+};
+
+/// Compiles `units` to the options' outputs, all or nothing.
+int compileUnits(const CompileOptions& options, Session& session, const std::vector<Unit>& units,
+                 const std::vector<MaterialPipeline*>& pipelines, std::chrono::steady_clock::time_point start) {
+  const bool several = units.size() > 1;
   // Every output is declared and checked before anything is compiled or written.
   OutputSet outputs;
-  for (const ir::Material& material : pipeline.materials()) {
+  for (const Unit& unit : units) {
     for (const auto& [path, option] : {std::pair{options.output, "-o"}, std::pair{options.glsl, "--glsl"}}) {
       if (path.empty()) continue;
-      if (printError(outputs.declare(perMaterialPath(path, material.name, several), option))) return kOutputFailed;
+      if (printError(outputs.declare(perMaterialPath(path, unit.material->name, several), option))) return kOutputFailed;
     }
   }
-  if (printError(outputs.checkDistinct()) || printError(pipeline.checkOutputsAreNotInputs(outputs))) return kUsage;
+  if (printError(outputs.checkDistinct())) return kUsage;
+  for (MaterialPipeline* pipeline : pipelines) {
+    if (printError(pipeline->checkOutputsAreNotInputs(outputs))) return kUsage;
+  }
   // A module on standard output would be mixed with the summary lines.
   const bool quiet = options.quiet || options.output == "-" || options.glsl == "-";
   int result = kOk;
-  for (const ir::Material& material : pipeline.materials()) {
+  for (const Unit& unit : units) {
+    const ir::Material& material = *unit.material;
+    Compiler& compiler = unit.pipeline->compiler();
     glsl::MaterialShader shader = compiler.shader(material);
     std::optional<std::vector<uint32_t>> words = compiler.spirv(shader);
     session.printDiagnostics();
@@ -88,9 +95,91 @@ int runCompile(const CompileOptions& options) {
   }
   if (!quiet) {
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::printf("compiled %zu material(s) in %.1f ms\n", pipeline.materials().size(), ms);
+    std::printf("compiled %zu material(s) in %.1f ms\n", units.size(), ms);
   }
   return result;
+}
+
+
+/// `mxc compile SCENE.json`: every material the scene's objects name or its look assigns, each
+/// once, with its document's libraries and options.
+int compileScene(const CompileOptions& options, std::chrono::steady_clock::time_point start) {
+  if (!options.materials.material.empty()) {
+    std::fprintf(stderr, "error: --material cannot be used with a scene file: the scene names its materials\n");
+    return kUsage;
+  }
+  auto read = readScene(options.file);
+  if (auto* why = std::get_if<std::string>(&read)) {
+    std::fprintf(stderr, "%s\n", why->c_str());
+    return kInvalidDocument;
+  }
+  const Scene& scene = std::get<Scene>(read);
+  Session session;
+  std::vector<std::unique_ptr<MaterialPipeline>> owned;
+  std::vector<MaterialPipeline*> pipelines;
+  for (const std::filesystem::path& document : scene.documents) {
+    owned.push_back(std::make_unique<MaterialPipeline>(session));
+    CompileRequest request;
+    request.document = document;
+    request.stage = kindOf(options.stage);
+    request.optimize = options.optimize;
+    if (int code = owned.back()->run(std::move(request), options.materials); code != kOk) return code;
+    pipelines.push_back(owned.back().get());
+  }
+  // The names: the objects' own, then every assignment of the look, in order, once each.
+  std::vector<std::string> names;
+  auto use = [&](const std::string& name) {
+    if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  };
+  for (const SceneObjectSpec& object : scene.objects) use(object.material);
+  bool lookFound = scene.look.empty();
+  for (MaterialPipeline* pipeline : pipelines) {
+    const doc::Document* document = pipeline->compiler().document();
+    if (!document || scene.look.empty()) continue;
+    for (const doc::Look& look : document->looks) {
+      if (look.name != scene.look) continue;
+      lookFound = true;
+      for (const doc::MaterialAssign& assign : look.assigns) use(std::string(assign.material));
+    }
+  }
+  if (!lookFound) {
+    std::fprintf(stderr, "%s: error: look: no document of the scene has a look named '%s'\n", options.file.c_str(),
+                 scene.look.c_str());
+    return kInvalidDocument;
+  }
+  std::vector<Unit> units;
+  for (const std::string& name : names) {
+    std::vector<Unit> matches;
+    for (MaterialPipeline* pipeline : pipelines) {
+      for (const ir::Material& material : pipeline->materials()) {
+        if (material.name == name) matches.push_back({pipeline, &material});
+      }
+    }
+    if (matches.size() != 1) {
+      std::fprintf(stderr, "%s: error: %s material named '%s'\n", options.file.c_str(),
+                   matches.empty() ? "no document of the scene has a" : "more than one document has a", name.c_str());
+      return kInvalidDocument;
+    }
+    units.push_back(matches[0]);
+  }
+  return compileUnits(options, session, units, pipelines, start);
+}
+
+}  // namespace
+
+int runCompile(const CompileOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (isSceneFile(options.file)) return compileScene(options, start);
+  Session session;
+  MaterialPipeline pipeline(session);
+  CompileRequest request;
+  request.document = options.file;
+  request.stage = kindOf(options.stage);
+  request.optimize = options.optimize;
+  if (int code = pipeline.run(std::move(request), options.materials); code != kOk) return code;
+  std::vector<Unit> units;
+  for (const ir::Material& material : pipeline.materials()) units.push_back({&pipeline, &material});
+  return compileUnits(options, session, units, {&pipeline}, start);
 }
 
 }  // namespace mxc::cli

@@ -247,5 +247,21 @@ TEST(SceneRender, ADocumentsLookDressesTheShaderBallsParts) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST(SceneCompile, CompilesEveryMaterialTheSceneUsesOnce) {
+  const fs::path folder = fs::temp_directory_path() / ("mxc_scene_compile_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  CommandRun r = mxc("compile " + (sourceDir() / "examples/scenes/still_life.json").string() + " -o " + (folder / "m.spv").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* name : {"CoatedCopper", "GlazedCeramic", "NoisePlastic"}) {
+    EXPECT_TRUE(fs::exists(folder / (std::string("m_") + name + ".spv"))) << name;
+  }
+  EXPECT_NE(r.out.find("compiled 3 material(s)"), std::string::npos) << r.out;
+  // The scene names its materials.
+  r = mxc("compile " + (sourceDir() / "examples/scenes/still_life.json").string() + " --material NoisePlastic");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("--material cannot be used with a scene file"), std::string::npos) << r.err;
+  fs::remove_all(folder);
+}
+
 }  // namespace
 }  // namespace mxc::test
