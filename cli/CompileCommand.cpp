@@ -123,7 +123,9 @@ int compileScene(const CompileOptions& options, std::chrono::steady_clock::time_
     request.document = document;
     request.stage = kindOf(options.stage);
     request.optimize = options.optimize;
-    if (int code = owned.back()->run(std::move(request), options.materials); code != kOk) return code;
+    MaterialOptions materialOptions = options.materials;
+    if (scene.accuracy) materialOptions.accuracy = *scene.accuracy;
+    if (int code = owned.back()->run(std::move(request), materialOptions); code != kOk) return code;
     pipelines.push_back(owned.back().get());
   }
   // The names: the objects' own, then every assignment of the look, in order, once each.

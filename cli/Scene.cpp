@@ -254,7 +254,12 @@ bool readScene(Checker& c, const json& root, const std::filesystem::path& folder
 
   if (root.contains("render")) {
     const json& r = root["render"];
-    if (!c.object(r, "render", {"size", "spp", "exposure", "tonemap", "background"})) return false;
+    if (!c.object(r, "render", {"size", "spp", "exposure", "tonemap", "background", "accuracy"})) return false;
+    if (r.contains("accuracy")) {
+      std::string tier;
+      if (!c.choice(r["accuracy"], "render.accuracy", {"fast", "balanced", "reference"}, tier)) return false;
+      scene.accuracy = parseAccuracy(tier);
+    }
     if (r.contains("size")) {
       const json& size = r["size"];
       if (size.is_array()) {

@@ -16,6 +16,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "compiler/common/Accuracy.h"
 #include "runtime/Camera.h"
 #include "runtime/Renderer.h"
 
@@ -53,6 +54,9 @@ struct Scene {
   uint32_t spp = 64;
   float exposure = 0.0f;
   std::string toneMapping = "aces";
+  /// The accuracy tier of every material's shader, when the scene states one (else the
+  /// command's --accuracy).
+  std::optional<Accuracy> accuracy;
   std::optional<glm::vec3> background;
 };
 

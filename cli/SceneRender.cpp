@@ -150,6 +150,7 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
     request.document = document;
     MaterialOptions materialOptions = options.materials;
     materialOptions.material.clear();
+    if (scene.accuracy) materialOptions.accuracy = *scene.accuracy;
     if (int code = pipeline->run(std::move(request), materialOptions); code != kOk) return code;
     pipelines.push_back(std::move(pipeline));
   }

@@ -40,7 +40,8 @@ TEST(Scene, ReadsEveryField) {
     "lights": [{"type": "spot", "position": [0, 3, 0], "direction": [0, -2, 0], "cone_angle": 20, "cone_softness": 5, "intensity": 4}],
     "environment": {"type": "image", "file": "env.exr", "intensity": 2, "rotation": 45},
     "camera": {"position": [0, 1, 5], "target": [0, 1, 0], "up": [0, 1, 0], "fov": 30},
-    "render": {"size": [320, 200], "spp": 8, "exposure": -1, "tonemap": "neutral", "background": [0.1, 0.2, 0.3]}})");
+    "render": {"size": [320, 200], "spp": 8, "exposure": -1, "tonemap": "neutral", "background": [0.1, 0.2, 0.3],
+               "accuracy": "fast"}})");
   EXPECT_EQ(error, "");
   const fs::path path = writeTemp("full2.json", R"({"mxc_scene": 1, "documents": ["a.mtlx"], "objects": [{"name": "o", "material": "M",
     "translate": [1, 2, 3], "scale": 2}], "lights": [{"type": "spot", "position": [0, 3, 0], "direction": [0, -2, 0], "cone_angle": 20}],
@@ -125,6 +126,7 @@ TEST(Scene, MalformedFieldsAreRefusedNamingTheField) {
       {head + objects + R"(, "render": {"size": [4, 4]}})", "render.size[0]: expected a whole number from 8 to 8192"},
       {head + objects + R"(, "render": {"spp": 1.5}})", "render.spp: expected a whole number"},
       {head + objects + R"(, "render": {"tonemap": "filmic"}})", "render.tonemap: expected one of aces, neutral, none"},
+      {head + objects + R"(, "render": {"accuracy": "exact"}})", "render.accuracy: expected one of fast, balanced, reference"},
       {"[1, 2]", "(top level): expected an object"},
   };
   for (const auto& [text, message] : cases) {
@@ -256,6 +258,22 @@ TEST(SceneCompile, CompilesEveryMaterialTheSceneUsesOnce) {
     EXPECT_TRUE(fs::exists(folder / (std::string("m_") + name + ".spv"))) << name;
   }
   EXPECT_NE(r.out.find("compiled 3 material(s)"), std::string::npos) << r.out;
+  // The scene's accuracy tier reaches the shader: the fast tier's module differs from the
+  // balanced one's.
+  auto compiled = [&](const std::string& render, const std::string& name) {
+    const fs::path scene = writeTemp(name + ".json", R"({"mxc_scene": 1, "documents": [")" +
+                                                         (sourceDir() / "examples/open_pbr_coated_copper.mtlx").string() +
+                                                         R"("], "objects": [{"name": "a", "material": "CoatedCopper"}])" + render + "}");
+    CommandRun run = mxc("compile " + scene.string() + " -q -o " + (folder / (name + ".spv")).string());
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    fs::remove(scene);
+    std::ifstream in(folder / (name + ".spv"), std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string fast = compiled(R"(, "render": {"accuracy": "fast"})", "fast");
+  const std::string balanced = compiled("", "balanced");
+  EXPECT_FALSE(fast.empty());
+  EXPECT_NE(fast, balanced);
   // The scene names its materials.
   r = mxc("compile " + (sourceDir() / "examples/scenes/still_life.json").string() + " --material NoisePlastic");
   EXPECT_EQ(r.exitCode, 2);
