@@ -164,6 +164,11 @@ int compileScene(const CompileOptions& options, std::chrono::steady_clock::time_
     }
     units.push_back(matches[0]);
   }
+  if (units.empty()) {
+    std::fprintf(stderr, "%s: error: the scene uses no material (its objects name none and its look assigns none)\n",
+                 options.file.c_str());
+    return kInvalidDocument;
+  }
   return compileUnits(options, session, units, pipelines, start);
 }
 

@@ -45,9 +45,13 @@ class Checker {
 
   bool number(const json& value, const std::string& where, float low, float high, float& out) {
     if (!value.is_number()) return fail(where, fmt::format("expected a number from {} to {}", low, high));
+    // Compared as the float it becomes: 0.1 in the file is the bound 0.1f, not a double below it.
     const double v = value.get<double>();
-    if (!std::isfinite(v) || v < low || v > high) return fail(where, fmt::format("expected a number from {} to {}", low, high));
-    out = static_cast<float>(v);
+    const float f = static_cast<float>(v);
+    if (!std::isfinite(v) || !std::isfinite(f) || f < low || f > high) {
+      return fail(where, fmt::format("expected a number from {} to {}", low, high));
+    }
+    out = f;
     return true;
   }
 
@@ -127,7 +131,10 @@ bool readLight(Checker& c, const json& value, const std::string& where, rt::Ligh
       // The cone's half-angle is `outer`; the light fades over the last `softness` degrees. The
       // inner cosine stays strictly above the outer one (a step would otherwise divide by 0).
       light.cosOuter = std::cos(glm::radians(outer));
-      light.cosInner = std::max(std::cos(glm::radians(std::max(outer - softness, 0.0f))), light.cosOuter + 1e-4f);
+      // The gap stays inside (cosOuter, 1] even for a cone of 0.1 degrees (1 - cosOuter =
+      // 1.5e-6, some 25 float steps), so the light reaches full intensity on its axis.
+      const float gap = std::min(1e-4f, 0.5f * (1.0f - light.cosOuter));
+      light.cosInner = std::min(std::max(std::cos(glm::radians(std::max(outer - softness, 0.0f))), light.cosOuter + gap), 1.0f);
     }
   }
   if (value.contains("color") && !c.vector3(value["color"], where + ".color", 0.0f, kHuge, light.color)) return false;
@@ -152,11 +159,12 @@ bool readObject(Checker& c, const json& value, const std::string& where, SceneOb
       float uniform = 1.0f;
       if (!c.number(s, where + ".scale", 1e-12f, kHuge, uniform)) return false;
       scale = glm::vec3(uniform);
-    } else if (!c.vector3(s, where + ".scale", -kHuge, kHuge, scale)) {
+    } else if (!c.vector3(s, where + ".scale", 1e-12f, kHuge, scale)) {
+      // Positive only: a zero scale flattens the object into nothing a camera can shade, and a
+      // mirroring one would turn its faces inside out (the renderer's fronts are
+      // counter-clockwise; a mesh file's own mirrored nodes are handled by its reader).
       return false;
     }
-    // A zero scale flattens the object into nothing a camera can shade.
-    if (std::abs(scale.x * scale.y * scale.z) < 1e-30f) return c.fail(where + ".scale", "must not be zero along any axis");
   }
   glm::mat4 m = glm::translate(glm::mat4(1.0f), translate);
   m = glm::rotate(m, glm::radians(rotate.z), glm::vec3(0, 0, 1));

@@ -69,7 +69,7 @@ int runSceneRender(const RenderOptions& options) {
   // The scene states its meshes, camera, lights and environment; the command line may only
   // change the image's size, samples, exposure and tone curve.
   for (const char* option : {"--mesh", "--camera-position", "--camera-target", "--camera-up", "--fov", "--light", "--env",
-                             "--env-intensity", "--env-rotation", "--background", "--material"}) {
+                             "--env-intensity", "--env-rotation", "--background", "--material", "--look"}) {
     if (std::find(options.explicitOptions.begin(), options.explicitOptions.end(), option) != options.explicitOptions.end()) {
       std::fprintf(stderr, "error: %s cannot be used with a scene file: the scene states it\n", option);
       return kUsage;

@@ -123,8 +123,9 @@ std::optional<std::string> readFloats(const tinygltf::Model& model, int index, i
   if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !a.normalized) {
     return fmt::format("accessor {} holds integers that are not normalized", index);
   }
-  out.assign(a.count * size_t(components), 0.0f);
-  if (a.bufferView < 0) return std::nullopt;  // no buffer view: all zeros (glTF 2.0 spec, 3.6.2.1)
+  // Without a buffer view an accessor is all zeros (or sparse, refused above): no geometry, and
+  // its count is bounded by nothing, so it is refused before anything is allocated.
+  if (a.bufferView < 0) return fmt::format("accessor {} has no buffer view", index);
   if (size_t(a.bufferView) >= model.bufferViews.size()) return fmt::format("accessor {}: no buffer view {}", index, a.bufferView);
   const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
   if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size()) return fmt::format("buffer view {}: no buffer {}", a.bufferView, view.buffer);
@@ -132,6 +133,7 @@ std::optional<std::string> readFloats(const tinygltf::Model& model, int index, i
   const size_t elementBytes = size_t(componentBytes) * size_t(components);
   const size_t stride = view.byteStride ? view.byteStride : elementBytes;
   if (!fitsInView(data.size(), view, a, elementBytes, stride)) return fmt::format("accessor {} reaches past the end of its buffer", index);
+  out.assign(a.count * size_t(components), 0.0f);  // a.count elements fit in the buffer: bounded
   const unsigned char* base = data.data() + view.byteOffset + a.byteOffset;
   for (size_t e = 0; e < a.count; ++e) {
     const unsigned char* element = base + e * stride;
@@ -163,7 +165,6 @@ std::optional<std::string> readIndices(const tinygltf::Model& model, int index, 
       a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
     return fmt::format("index accessor {} is not of an unsigned integer type", index);
   }
-  out.assign(a.count, 0);
   if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size()) return fmt::format("index accessor {} has no buffer view", index);
   const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
   if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size()) return fmt::format("buffer view {}: no buffer {}", a.bufferView, view.buffer);
@@ -172,6 +173,7 @@ std::optional<std::string> readIndices(const tinygltf::Model& model, int index, 
   if (!fitsInView(data.size(), view, a, size_t(bytes), stride)) {
     return fmt::format("index accessor {} reaches past the end of its buffer", index);
   }
+  out.assign(a.count, 0);  // a.count indices fit in the buffer: bounded
   const unsigned char* base = data.data() + view.byteOffset + a.byteOffset;
   for (size_t e = 0; e < a.count; ++e) {
     const unsigned char* p = base + e * stride;

@@ -59,6 +59,15 @@ TEST(Scene, ReadsEveryField) {
   EXPECT_EQ(scene.lights[0].axis, glm::vec3(0, -1, 0));  // normalised
   EXPECT_NEAR(scene.lights[0].cosOuter, std::cos(glm::radians(20.0f)), 1e-6f);
   EXPECT_NEAR(scene.lights[0].cosInner, std::cos(glm::radians(15.0f)), 1e-6f);  // softness 5 by default
+  // A cone of 0.1 degrees still reaches full intensity on its axis: cosOuter < cosInner <= 1.
+  const fs::path narrow = writeTemp("narrow.json", R"({"mxc_scene": 1, "documents": ["a.mtlx"], "objects": [{"name": "o", "material": "M"}],
+    "lights": [{"type": "spot", "position": [0, 3, 0], "direction": [0, -1, 0], "cone_angle": 0.1}]})");
+  auto narrowScene = cli::readScene(narrow);
+  fs::remove(narrow);
+  ASSERT_TRUE(std::holds_alternative<cli::Scene>(narrowScene));
+  const rt::Light& spot = std::get<cli::Scene>(narrowScene).lights[0];
+  EXPECT_LT(spot.cosOuter, spot.cosInner);
+  EXPECT_LE(spot.cosInner, 1.0f);
 }
 
 TEST(Scene, TheSchemaAndTheReaderKnowTheSameFields) {
@@ -108,7 +117,8 @@ TEST(Scene, MalformedFieldsAreRefusedNamingTheField) {
       {head + R"("objects": [{"material": "M"}]})", "objects[0]: an object needs a name"},
       {head + R"("objects": [{"name": "a", "material": "M"}, {"name": "a", "material": "M"}]})", "objects[1].name: 'a' names another object"},
       {head + R"("objects": [{"name": "a"}]})", "objects[0]: an object needs a material"},
-      {head + R"("objects": [{"name": "a", "material": "M", "scale": [1, 0, 1]}]})", "objects[0].scale: must not be zero"},
+      {head + R"("objects": [{"name": "a", "material": "M", "scale": [1, 0, 1]}]})", "objects[0].scale[1]: expected a number from"},
+      {head + R"("objects": [{"name": "a", "material": "M", "scale": [-1, 1, 1]}]})", "objects[0].scale[0]: expected a number from"},
       {head + R"("objects": [{"name": "a", "material": "M", "translate": [1, 2]}]})", "objects[0].translate: expected an array of three numbers"},
       {head + R"("objects": [{"name": "a", "material": "M", "colour": 1}]})", "objects[0].colour: unknown field"},
       {head + objects + R"(, "lights": [{"type": "area"}]})", "lights[0].type: expected one of directional, point, spot"},

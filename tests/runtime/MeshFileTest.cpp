@@ -203,6 +203,12 @@ TEST(GltfMesh, RefusesMalformedFilesNamingThem) {
   // A node that is its own child: a cycle.
   why = loadError(triangleGltf("cycle.gltf", R"(, "children": [0])"));
   EXPECT_NE(why.find("cycle.gltf"), std::string::npos) << why;
+  // A POSITION accessor of 2^31 elements and no buffer view: refused before any allocation.
+  const std::string huge = R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+    "accessors": [{"componentType": 5126, "count": 2147483648, "type": "VEC3"}]})";
+  why = loadError(writeTemp("huge.gltf", huge));
+  EXPECT_NE(why.find("has no buffer view"), std::string::npos) << why;
   // Not JSON at all.
   why = loadError(writeTemp("garbage.gltf", "{ nope"));
   EXPECT_NE(why.find("garbage.gltf"), std::string::npos) << why;
