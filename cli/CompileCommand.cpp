@@ -12,6 +12,7 @@
 #include "cli/ExitCode.h"
 #include "cli/MaterialPipeline.h"
 #include "cli/Scene.h"
+#include "cli/SceneDocuments.h"
 #include "compiler/document/Document.h"
 #include "compiler/glsl/ShaderBuilder.h"
 #include "compiler/spirv/SpirvCompiler.h"
@@ -115,61 +116,36 @@ int compileScene(const CompileOptions& options, std::chrono::steady_clock::time_
   }
   const Scene& scene = std::get<Scene>(read);
   Session session;
-  std::vector<std::unique_ptr<MaterialPipeline>> owned;
-  std::vector<MaterialPipeline*> pipelines;
-  for (const std::filesystem::path& document : scene.documents) {
-    owned.push_back(std::make_unique<MaterialPipeline>(session));
-    CompileRequest request;
-    request.document = document;
-    request.stage = kindOf(options.stage);
-    request.optimize = options.optimize;
-    MaterialOptions materialOptions = options.materials;
-    if (scene.accuracy) materialOptions.accuracy = *scene.accuracy;
-    if (int code = owned.back()->run(std::move(request), materialOptions); code != kOk) return code;
-    pipelines.push_back(owned.back().get());
-  }
+  SceneDocuments documents(session);
+  if (int code = documents.load(scene, options.materials, kindOf(options.stage), options.optimize); code != kOk) return code;
   // The names: the objects' own, then every assignment of the look, in order, once each.
   std::vector<std::string> names;
   auto use = [&](const std::string& name) {
     if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   };
   for (const SceneObjectSpec& object : scene.objects) use(object.material);
-  bool lookFound = scene.look.empty();
-  for (MaterialPipeline* pipeline : pipelines) {
-    const doc::Document* document = pipeline->compiler().document();
-    if (!document || scene.look.empty()) continue;
-    for (const doc::Look& look : document->looks) {
-      if (look.name != scene.look) continue;
-      lookFound = true;
-      for (const doc::MaterialAssign& assign : look.assigns) use(std::string(assign.material));
-    }
-  }
-  if (!lookFound) {
+  if (!scene.look.empty() &&
+      !documents.forEachAssign(scene.look, [&](const doc::MaterialAssign& assign) { use(std::string(assign.material)); })) {
     std::fprintf(stderr, "%s: error: look: no document of the scene has a look named '%s'\n", options.file.c_str(),
                  scene.look.c_str());
     return kInvalidDocument;
   }
   std::vector<Unit> units;
   for (const std::string& name : names) {
-    std::vector<Unit> matches;
-    for (MaterialPipeline* pipeline : pipelines) {
-      for (const ir::Material& material : pipeline->materials()) {
-        if (material.name == name) matches.push_back({pipeline, &material});
-      }
-    }
-    if (matches.size() != 1) {
-      std::fprintf(stderr, "%s: error: %s material named '%s'\n", options.file.c_str(),
-                   matches.empty() ? "no document of the scene has a" : "more than one document has a", name.c_str());
+    auto found = documents.find(name);
+    if (auto* why = std::get_if<std::string>(&found)) {
+      std::fprintf(stderr, "%s: error: %s\n", options.file.c_str(), why->c_str());
       return kInvalidDocument;
     }
-    units.push_back(matches[0]);
+    const auto& hit = std::get<SceneDocuments::Found>(found);
+    units.push_back({hit.pipeline, hit.material});
   }
   if (units.empty()) {
     std::fprintf(stderr, "%s: error: the scene uses no material (its objects name none and its look assigns none)\n",
                  options.file.c_str());
     return kInvalidDocument;
   }
-  return compileUnits(options, session, units, pipelines, start);
+  return compileUnits(options, session, units, documents.pipelines(), start);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "cli/RenderCommand.h"
 #include "cli/RenderOutput.h"
 #include "cli/Scene.h"
+#include "cli/SceneDocuments.h"
 #include "compiler/document/Document.h"
 #include "runtime/EnvironmentMap.h"
 #include "runtime/Renderer.h"
@@ -66,11 +67,14 @@ std::vector<std::string> geomNames(std::string_view geom) {
 }  // namespace
 
 int runSceneRender(const RenderOptions& options) {
+  auto given = [&](const char* option) {
+    return std::find(options.explicitOptions.begin(), options.explicitOptions.end(), option) != options.explicitOptions.end();
+  };
   // The scene states its meshes, camera, lights and environment; the command line may only
   // change the image's size, samples, exposure and tone curve.
   for (const char* option : {"--mesh", "--camera-position", "--camera-target", "--camera-up", "--fov", "--light", "--env",
                              "--env-intensity", "--env-rotation", "--background", "--material", "--look"}) {
-    if (std::find(options.explicitOptions.begin(), options.explicitOptions.end(), option) != options.explicitOptions.end()) {
+    if (given(option)) {
       std::fprintf(stderr, "error: %s cannot be used with a scene file: the scene states it\n", option);
       return kUsage;
     }
@@ -81,9 +85,6 @@ int runSceneRender(const RenderOptions& options) {
     return kInvalidDocument;
   }
   Scene scene = std::move(std::get<Scene>(read));
-  auto given = [&](const char* option) {
-    return std::find(options.explicitOptions.begin(), options.explicitOptions.end(), option) != options.explicitOptions.end();
-  };
   if (given("--size") && !parseRenderSize(options.size, scene.width, scene.height)) {
     std::fprintf(stderr, "error: --size %s: expected N or WxH, each from 8 to 8192\n", options.size.c_str());
     return kUsage;
@@ -143,43 +144,22 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
 
   // Documents, and each object's material: its own, else its document's look.
   Session session;
-  std::vector<std::unique_ptr<MaterialPipeline>> pipelines;
-  for (const std::filesystem::path& document : scene.documents) {
-    auto pipeline = std::make_unique<MaterialPipeline>(session);
-    CompileRequest request;
-    request.document = document;
-    MaterialOptions materialOptions = options.materials;
-    materialOptions.material.clear();
-    if (scene.accuracy) materialOptions.accuracy = *scene.accuracy;
-    if (int code = pipeline->run(std::move(request), materialOptions); code != kOk) return code;
-    pipelines.push_back(std::move(pipeline));
-  }
+  SceneDocuments documents(session);
+  if (int code = documents.load(scene, options.materials, glsl::ShaderKind::Raster, false); code != kOk) return code;
   // The look's assignments, by geometry name (an object's, or a part's of its mesh); the last
   // assignment of a name wins, as later elements of a document do; "*" or no geom: anything.
   std::map<std::string, std::string> assignedTo;
   std::string assignedToAll;
-  if (!scene.look.empty()) {
-    bool found = false;
-    for (auto& pipeline : pipelines) {
-      const doc::Document* document = pipeline->compiler().document();
-      if (!document) continue;
-      for (const doc::Look& look : document->looks) {
-        if (look.name != scene.look) continue;
-        found = true;
-        for (const doc::MaterialAssign& assign : look.assigns) {
-          const std::vector<std::string> names = geomNames(assign.geom);
-          if (assign.geom.empty() || std::find(names.begin(), names.end(), "*") != names.end()) {
-            assignedToAll = std::string(assign.material);
-          }
-          for (const std::string& name : names) assignedTo[name] = std::string(assign.material);
+  if (!scene.look.empty() && !documents.forEachAssign(scene.look, [&](const doc::MaterialAssign& assign) {
+        const std::vector<std::string> names = geomNames(assign.geom);
+        if (assign.geom.empty() || std::find(names.begin(), names.end(), "*") != names.end()) {
+          assignedToAll = std::string(assign.material);
         }
-      }
-    }
-    if (!found) {
-      std::fprintf(stderr, "%s: error: look: no document of the scene has a look named '%s'\n", source.c_str(),
-                   scene.look.c_str());
-      return kInvalidDocument;
-    }
+        for (const std::string& name : names) assignedTo[name] = std::string(assign.material);
+      })) {
+    std::fprintf(stderr, "%s: error: look: no document of the scene has a look named '%s'\n", source.c_str(),
+                 scene.look.c_str());
+    return kInvalidDocument;
   }
   auto lookMaterial = [&](const std::string& name) {
     auto it = assignedTo.find(name);
@@ -209,28 +189,20 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
       draws.push_back({o, material, fmt::format("{} part '{}'", what, part.name), part.firstIndex, part.indexCount});
     }
   }
-  // Material name -> (pipeline, material); each used material compiled once.
-  std::vector<std::pair<size_t, size_t>> chosen(draws.size());
+  // Each draw's material; each used material compiled once (programs below, by material).
+  std::vector<SceneDocuments::Found> chosen(draws.size());
   for (size_t d = 0; d < draws.size(); ++d) {
-    const std::string& name = draws[d].material;
-    if (name.empty()) {
-      std::fprintf(stderr, "%s: error: %s: the look '%s' assigns it no material\n", source.c_str(),
-                   draws[d].what.c_str(), scene.look.c_str());
+    if (draws[d].material.empty()) {
+      std::fprintf(stderr, "%s: error: %s: the look '%s' assigns it no material\n", source.c_str(), draws[d].what.c_str(),
+                   scene.look.c_str());
       return kInvalidDocument;
     }
-    std::vector<std::pair<size_t, size_t>> matches;
-    for (size_t p = 0; p < pipelines.size(); ++p) {
-      const auto& materials = pipelines[p]->materials();
-      for (size_t m = 0; m < materials.size(); ++m) {
-        if (materials[m].name == name) matches.emplace_back(p, m);
-      }
-    }
-    if (matches.size() != 1) {
-      std::fprintf(stderr, "%s: error: %s: %s material named '%s'\n", source.c_str(), draws[d].what.c_str(),
-                   matches.empty() ? "no document of the scene has a" : "more than one document has a", name.c_str());
+    auto found = documents.find(draws[d].material);
+    if (auto* why = std::get_if<std::string>(&found)) {
+      std::fprintf(stderr, "%s: error: %s: %s\n", source.c_str(), draws[d].what.c_str(), why->c_str());
       return kInvalidDocument;
     }
-    chosen[d] = matches[0];
+    chosen[d] = std::get<SceneDocuments::Found>(found);
   }
 
   OutputSet outputs;
@@ -238,7 +210,7 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
     if (printError(outputs.declare(output, "-o"))) return kOutputFailed;
   }
   if (printError(outputs.checkDistinct())) return kUsage;
-  for (const auto& pipeline : pipelines) {
+  for (MaterialPipeline* pipeline : documents.pipelines()) {
     if (printError(pipeline->checkOutputsAreNotInputs(outputs))) return kUsage;
   }
   if (!scene.file.empty() && printError(outputs.checkNotInput(scene.file, "the scene"))) return kUsage;
@@ -276,17 +248,16 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
   std::string summary;
   int result = kOk;
   try {
-    std::map<std::pair<size_t, size_t>, MaterialProgram> programs;
-    for (const auto& key : chosen) {
-      if (programs.count(key)) continue;
-      auto program = prepareMaterial(*pipelines[key.first], session, *device.context(),
-                                     pipelines[key.first]->materials()[key.second], glsl::ShaderKind::Raster);
+    std::map<const ir::Material*, MaterialProgram> programs;
+    for (const SceneDocuments::Found& found : chosen) {
+      if (programs.count(found.material)) continue;
+      auto program = prepareMaterial(*found.pipeline, session, *device.context(), *found.material, glsl::ShaderKind::Raster);
       if (!program) return kInvalidDocument;
-      programs.emplace(key, std::move(*program));
+      programs.emplace(found.material, std::move(*program));
     }
     std::vector<rt::SceneObject> objects;
     for (size_t d = 0; d < draws.size(); ++d) {
-      const MaterialProgram& program = programs.at(chosen[d]);
+      const MaterialProgram& program = programs.at(chosen[d].material);
       const SceneObjectSpec& object = scene.objects[draws[d].object];
       objects.push_back({&meshes.at(object.mesh).mesh, object.objectToWorld, program.resources.get(), &program.shader.interface,
                          &program.spirv, draws[d].firstIndex, draws[d].indexCount});

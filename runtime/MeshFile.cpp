@@ -98,14 +98,34 @@ bool gltfSkipImage(tinygltf::Image*, const int, std::string*, std::string*, int,
   return true;
 }
 
-/// Whether the accessor's last element ends inside its view and the view inside its buffer
-/// (written so that no sum can overflow).
-bool fitsInView(size_t bufferBytes, const tinygltf::BufferView& view, const tinygltf::Accessor& a, size_t elementBytes,
-                size_t stride) {
-  if (a.count == 0) return true;
-  if (view.byteOffset > bufferBytes || view.byteLength > bufferBytes - view.byteOffset) return false;
-  if (a.byteOffset > view.byteLength || elementBytes > view.byteLength - a.byteOffset) return false;
-  return (a.count - 1) <= (view.byteLength - a.byteOffset - elementBytes) / stride;  // stride >= 1
+/// Where an accessor's elements lie in its buffer: the first, and the distance between two.
+struct Elements {
+  const unsigned char* first = nullptr;
+  size_t stride = 0;
+};
+
+/// Locates the elements of accessor `index` (`a`), each `elementBytes` long, after checking
+/// that it has a buffer view, that the view has a buffer, and that the last element ends inside
+/// the view and the view inside its buffer (written so that no sum can overflow). Without a
+/// buffer view an accessor is all zeros (or sparse, refused by the callers): no geometry, and
+/// its count is bounded by nothing, so it is refused before anything is allocated. `what`
+/// names the accessor in messages ("accessor", "index accessor").
+std::variant<Elements, std::string> locate(const tinygltf::Model& model, int index, const tinygltf::Accessor& a,
+                                           size_t elementBytes, const char* what) {
+  if (a.bufferView < 0) return fmt::format("{} {} has no buffer view", what, index);
+  if (size_t(a.bufferView) >= model.bufferViews.size()) return fmt::format("{} {}: no buffer view {}", what, index, a.bufferView);
+  const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
+  if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size()) return fmt::format("buffer view {}: no buffer {}", a.bufferView, view.buffer);
+  const std::vector<unsigned char>& data = model.buffers[size_t(view.buffer)].data;
+  const size_t stride = view.byteStride ? view.byteStride : elementBytes;  // >= 1: elementBytes >= 1
+  bool fits = true;
+  if (a.count > 0) {
+    fits = view.byteOffset <= data.size() && view.byteLength <= data.size() - view.byteOffset &&
+           a.byteOffset <= view.byteLength && elementBytes <= view.byteLength - a.byteOffset &&
+           (a.count - 1) <= (view.byteLength - a.byteOffset - elementBytes) / stride;
+  }
+  if (!fits) return fmt::format("{} {} reaches past the end of its buffer", what, index);
+  return Elements{data.data() + view.byteOffset + a.byteOffset, stride};
 }
 
 /// Reads accessor `index` as `components` floats per element into `out` (FLOAT, or the
@@ -123,18 +143,10 @@ std::optional<std::string> readFloats(const tinygltf::Model& model, int index, i
   if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !a.normalized) {
     return fmt::format("accessor {} holds integers that are not normalized", index);
   }
-  // Without a buffer view an accessor is all zeros (or sparse, refused above): no geometry, and
-  // its count is bounded by nothing, so it is refused before anything is allocated.
-  if (a.bufferView < 0) return fmt::format("accessor {} has no buffer view", index);
-  if (size_t(a.bufferView) >= model.bufferViews.size()) return fmt::format("accessor {}: no buffer view {}", index, a.bufferView);
-  const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
-  if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size()) return fmt::format("buffer view {}: no buffer {}", a.bufferView, view.buffer);
-  const std::vector<unsigned char>& data = model.buffers[size_t(view.buffer)].data;
-  const size_t elementBytes = size_t(componentBytes) * size_t(components);
-  const size_t stride = view.byteStride ? view.byteStride : elementBytes;
-  if (!fitsInView(data.size(), view, a, elementBytes, stride)) return fmt::format("accessor {} reaches past the end of its buffer", index);
+  auto located = locate(model, index, a, size_t(componentBytes) * size_t(components), "accessor");
+  if (auto* why = std::get_if<std::string>(&located)) return *why;
+  const auto [base, stride] = std::get<Elements>(located);
   out.assign(a.count * size_t(components), 0.0f);  // a.count elements fit in the buffer: bounded
-  const unsigned char* base = data.data() + view.byteOffset + a.byteOffset;
   for (size_t e = 0; e < a.count; ++e) {
     const unsigned char* element = base + e * stride;
     for (int c = 0; c < components; ++c) {
@@ -165,16 +177,10 @@ std::optional<std::string> readIndices(const tinygltf::Model& model, int index, 
       a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
     return fmt::format("index accessor {} is not of an unsigned integer type", index);
   }
-  if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size()) return fmt::format("index accessor {} has no buffer view", index);
-  const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
-  if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size()) return fmt::format("buffer view {}: no buffer {}", a.bufferView, view.buffer);
-  const std::vector<unsigned char>& data = model.buffers[size_t(view.buffer)].data;
-  const size_t stride = view.byteStride ? view.byteStride : size_t(bytes);
-  if (!fitsInView(data.size(), view, a, size_t(bytes), stride)) {
-    return fmt::format("index accessor {} reaches past the end of its buffer", index);
-  }
+  auto located = locate(model, index, a, size_t(bytes), "index accessor");
+  if (auto* why = std::get_if<std::string>(&located)) return *why;
+  const auto [base, stride] = std::get<Elements>(located);
   out.assign(a.count, 0);  // a.count indices fit in the buffer: bounded
-  const unsigned char* base = data.data() + view.byteOffset + a.byteOffset;
   for (size_t e = 0; e < a.count; ++e) {
     const unsigned char* p = base + e * stride;
     if (bytes == 1) {

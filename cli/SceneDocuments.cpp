@@ -1,0 +1,56 @@
+#include "cli/SceneDocuments.h"
+
+#include <fmt/format.h>
+
+#include "cli/ExitCode.h"
+
+namespace mxc::cli {
+
+int SceneDocuments::load(const Scene& scene, MaterialOptions options, glsl::ShaderKind stage, bool optimize) {
+  options.material.clear();
+  if (scene.accuracy) options.accuracy = *scene.accuracy;
+  for (const std::filesystem::path& document : scene.documents) {
+    pipelines_.push_back(std::make_unique<MaterialPipeline>(session_));
+    CompileRequest request;
+    request.document = document;
+    request.stage = stage;
+    request.optimize = optimize;
+    if (int code = pipelines_.back()->run(std::move(request), options); code != kOk) return code;
+  }
+  return kOk;
+}
+
+std::vector<MaterialPipeline*> SceneDocuments::pipelines() const {
+  std::vector<MaterialPipeline*> out;
+  for (const auto& pipeline : pipelines_) out.push_back(pipeline.get());
+  return out;
+}
+
+std::variant<SceneDocuments::Found, std::string> SceneDocuments::find(const std::string& name) const {
+  std::vector<Found> matches;
+  for (const auto& pipeline : pipelines_) {
+    for (const ir::Material& material : pipeline->materials()) {
+      if (material.name == name) matches.push_back({pipeline.get(), &material});
+    }
+  }
+  if (matches.size() == 1) return matches[0];
+  return fmt::format("{} material named '{}'",
+                     matches.empty() ? "no document of the scene has a" : "more than one document has a", name);
+}
+
+bool SceneDocuments::forEachAssign(const std::string& look,
+                                   const std::function<void(const doc::MaterialAssign&)>& visit) const {
+  bool found = false;
+  for (const auto& pipeline : pipelines_) {
+    const doc::Document* document = pipeline->compiler().document();
+    if (!document) continue;
+    for (const doc::Look& candidate : document->looks) {
+      if (candidate.name != look) continue;
+      found = true;
+      for (const doc::MaterialAssign& assign : candidate.assigns) visit(assign);
+    }
+  }
+  return found;
+}
+
+}  // namespace mxc::cli
