@@ -181,6 +181,7 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   if (exprs.usesProcedural()) w.file("library/mxc_procedural.glsl");
   w.file("library/mxc_lobes.glsl");
   w.file(options.accuracy == Accuracy::Reference ? "library/mxc_walk.glsl" : "library/mxc_closure.glsl");
+  w.file("library/mxc_closure_sample.glsl");
 
   w.line("// ---- the material's parameters ----");
   w.line(fmt::format("layout(set = 0, binding = {}, std140) uniform MxcParameters {{", static_cast<uint32_t>(kParameterBinding)));

@@ -42,7 +42,7 @@ TEST(CompileCommand, WritesValidSpirvAndGlsl) {
 // Every --stage gives its own shader: the compute stages differ by their main only.
 TEST(CompileCommand, EachStageHasItsMain) {
   for (const auto& [stage, kind, marker] :
-       {std::tuple{"comp", "eval", "mxc_closure_eval(c, wo, wi), mxc_closure_pdf"},
+       {std::tuple{"comp", "eval", "mxc_out[i] = vec4(f, pdf)"},
         std::tuple{"furnace", "furnace", "vec3 transmitted ="},
         std::tuple{"sample", "sample", "float kind = smp.valid"}}) {
     const fs::path glsl = writeTemp(std::string("out_") + stage + ".comp", "");

@@ -25,6 +25,9 @@ struct MxcSample {
   vec3 weight;   // f |cos| / pdf (for a delta lobe: its discrete weight / probability)
   float pdf;
   bool delta;
+  // Only wi is set: weight and pdf are f cos / pdf and the pdf that mxc_closure_eval_pdf
+  // gives at wi (a stage evaluating other directions too calls it once for all of them).
+  bool evaluate;
   bool valid;
 };
 
@@ -58,35 +61,34 @@ void mxc_closure_prepare(inout MxcClosure c, vec3 wo) {
   }
 }
 
-vec3 mxc_closure_eval(MxcClosure c, vec3 wo, vec3 wi) {
+// f cos and, when `wantPdf`, the pdf of sampling wi (mxc_closure_sample_direction; else 0)
+// together: one loop over the lobes, so that a stage evaluating directions for either needs one
+// inlined copy of the lobes. Callers pass a `wantPdf` that is the same for every invocation.
+vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, out float pdf) {
   vec3 f = vec3(0.0);
+  float p = 0.0;
   for (int k = 0; k < c.count; ++k) {
     MxcLobe l = c.lobes[k];
     mat3 frame = mxc_frame(l.N, l.T);
     vec3 o = mxc_to_local(frame, wo);
     vec3 i = mxc_to_local(frame, wi);
     f += l.weight * c.ms[k] * mxc_absorption(l.tau, l.tauEta, abs(i.z)) * mxc_lobe_eval(l, o, i);
+    if (wantPdf) p += c.choice[k] * mxc_lobe_pdf(l, o, i);
   }
+  pdf = c.choiceTotal > 0.0 ? p / c.choiceTotal : 0.0;
   return f;
-}
-
-float mxc_closure_pdf(MxcClosure c, vec3 wo, vec3 wi) {
-  float pdf = 0.0;
-  for (int k = 0; k < c.count; ++k) {
-    MxcLobe l = c.lobes[k];
-    mat3 frame = mxc_frame(l.N, l.T);
-    pdf += c.choice[k] * mxc_lobe_pdf(l, mxc_to_local(frame, wo), mxc_to_local(frame, wi));
-  }
-  return c.choiceTotal > 0.0 ? pdf / c.choiceTotal : 0.0;
 }
 
 // One-sample multiple importance sampling over the lobes (Veach 1997, s. 9.2.4): a lobe is
 // chosen, sampled, and the sample weighted by the whole mixture's f and pdf; a delta lobe's
-// sample is weighted by that lobe alone (no other lobe reaches its direction).
-MxcSample mxc_closure_sample(MxcClosure c, vec3 wo, vec3 u) {
+// sample is weighted by that lobe alone (no other lobe reaches its direction). Only the delta
+// lobe's weight is set here: the others' is the mixture's, left to mxc_closure_eval_pdf
+// (`evaluate`; mxc_closure_sample does both).
+MxcSample mxc_closure_sample_direction(MxcClosure c, vec3 wo, vec3 u) {
   MxcSample s;
   s.valid = false;
   s.delta = false;
+  s.evaluate = false;
   s.pdf = 0.0;
   s.weight = vec3(0.0);
   s.wi = wo;
@@ -120,9 +122,8 @@ MxcSample mxc_closure_sample(MxcClosure c, vec3 wo, vec3 u) {
     s.valid = s.pdf > 0.0;
     return s;
   }
-  s.pdf = mxc_closure_pdf(c, wo, s.wi);
-  if (!(s.pdf > 0.0)) return s;
-  s.weight = mxc_closure_eval(c, wo, s.wi) / s.pdf;
+  // The whole mixture's f and pdf at wi: mxc_closure_eval_pdf, by the caller.
+  s.evaluate = true;
   s.valid = true;
   return s;
 }

@@ -71,6 +71,7 @@ struct MxcSample {
   vec3 weight;
   float pdf;
   bool delta;
+  bool evaluate;  // always false: a walk's sample carries its own weight (mxc_closure.glsl)
   bool valid;
 };
 
@@ -684,10 +685,18 @@ float mxc_closure_pdf(MxcClosure c, vec3 wo, vec3 wi) {
   return 0.5 * abs(dot(wi, c.lobes[0].N)) * MXC_INV_PI;
 }
 
-MxcSample mxc_closure_sample(MxcClosure c, vec3 wo, vec3 u) {
+// The walk's sample is weighted by the walk itself: an estimate of f cos / pdf that no
+// evaluation at wi reproduces, so `evaluate` stays false.
+vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, out float pdf) {
+  pdf = wantPdf ? mxc_closure_pdf(c, wo, wi) : 0.0;
+  return mxc_closure_eval(c, wo, wi);
+}
+
+MxcSample mxc_closure_sample_direction(MxcClosure c, vec3 wo, vec3 u) {
   MxcSample s;
   s.valid = false;
   s.delta = false;
+  s.evaluate = false;
   s.pdf = 0.0;
   s.weight = vec3(0.0);
   s.wi = wo;

@@ -11,5 +11,7 @@ void main() {
   mxc_closure_seed(mxc_pcg(i + mxc_pcg(mxc_batch.counts.z)));
   MxcClosure c;
   mxc_material_closure(g, wo, c);
-  mxc_out[i] = vec4(mxc_closure_eval(c, wo, wi), mxc_closure_pdf(c, wo, wi));
+  float pdf;
+  vec3 f = mxc_closure_eval_pdf(c, wo, wi, true, pdf);
+  mxc_out[i] = vec4(f, pdf);
 }

@@ -99,75 +99,108 @@ void main() {
   mxc_material_closure(g, wo, c);
   vec3 radiance = c.emission * mxc_view.environment.y;
 
-  for (int k = 0; k < min(mxc_view.counts.x, MXC_MAX_LIGHTS); ++k) {
-    vec4 light = mxc_view.lightVector[k];
-    vec3 irradiance = mxc_view.lightRadiance[k].rgb;
-    vec3 wi;
-    if (light.w == 0.0) {
-      wi = mxc_safe_normalize(light.xyz, N);
-    } else {
-      vec3 d = light.xyz - vPosition;
-      float d2 = max(dot(d, d), 1e-8);  // a light inside the surface point: bounded
-      wi = d * inversesqrt(d2);
-      irradiance /= d2;  // inverse-square falloff of a point light's intensity
-      if (light.w == 2.0) {
-        // A spot light: full inside the inner cone, none outside the outer one, a smooth fade
-        // between (cosInner > cosOuter, checked where the light is made).
-        vec4 spot = mxc_view.lightSpot[k];
-        irradiance *= smoothstep(spot.w, mxc_view.lightRadiance[k].w, dot(-wi, spot.xyz));
-      }
+  // Every direction the point is lit from goes through one call of mxc_closure_eval_pdf: the
+  // device compiler inlines every call, and the closure's evaluation is most of the shader
+  // (with one call site instead of three, lavapipe builds the pipeline about twice as fast).
+  // Lavapipe runs pixels in SIMD lanes and executes both sides of every branch, masked; so the
+  // work is batched: batch b draws environment sample b (the closure's direction and, for an
+  // image, the image's), batch 0 also takes the lights, and one inner loop evaluates the
+  // batch's directions. Each strategy's code then runs once per batch, as it would unbatched.
+  int lights = min(mxc_view.counts.x, MXC_MAX_LIGHTS);
+  bool image = mxc_view.counts.y == MXC_ENV_MAP;
+  int n = mxc_view.counts.y != MXC_ENV_NONE ? max(mxc_view.counts.w, 1) : 0;
+  uint seed = mxc_pcg(uint(gl_FragCoord.x) + mxc_pcg(uint(gl_FragCoord.y) + mxc_pcg(uint(mxc_view.counts.z))));
+  // The closure sample's three numbers (lobe choice, then direction) and the image sample's
+  // cell follow a 4D Halton sequence (bases 2, 3, 5, 7; Halton 1964) over the pixel's samples,
+  // frame by frame, shifted by a random offset per pixel (Cranley & Patterson 1976): each
+  // number stays uniform, so nothing is biased, but over N samples a lobe taken with
+  // probability p is taken about pN times rather than a binomial count, and directions cover
+  // the lobe evenly. With independent numbers a smooth coat or glass, whose reflection is
+  // taken a few percent of the time, shows a bright light's reflection as speckle.
+  uint pixel = mxc_pcg(uint(gl_FragCoord.x) ^ mxc_pcg(uint(gl_FragCoord.y) + 0x9e3779b9u));
+  vec4 shift = vec4(mxc_uniform(pixel), mxc_uniform(pixel), mxc_uniform(pixel), mxc_uniform(pixel));
+  vec3 sum = vec3(0.0);  // the environment samples' estimates
+  for (int b = 0; b < max(n, lights > 0 ? 1 : 0); ++b) {
+    int batchLights = b == 0 ? lights : 0;
+    int batchSamples = b < n ? (image ? 2 : 1) : 0;
+    uint index = uint(mxc_view.counts.z) * uint(max(n, 1)) + uint(b);
+    vec4 choice = fract(vec4(mxc_radical_inverse(index, 2u), mxc_radical_inverse(index, 3u),
+                             mxc_radical_inverse(index, 5u), mxc_radical_inverse(index, 7u)) + shift);
+    // The closure's sample. Above the surface an image's samples reach the same directions: the
+    // two are weighted against each other. Below it (transmission) and for delta lobes only the
+    // closure reaches the direction, with weight 1.
+    MxcSample smp = mxc_closure_sample_direction(c, wo, vec3(choice.z, choice.w, choice.x));
+    bool above = dot(smp.wi, N) > 0.0;
+    vec3 seen = smp.valid ? mxc_environment(above ? smp.wi : mxc_exit_direction(-wo, smp.wi)) : vec3(0.0);
+    if (batchSamples > 0 && smp.valid && !smp.evaluate) {  // weighted by the closure (a delta lobe, a walk)
+      float w = image && above && !smp.delta
+                    ? mxc_power_heuristic(smp.pdf, mxc_env_pdf(mxc_env_to_map(smp.wi, mxc_view.environment.z)))
+                    : 1.0;
+      sum += w * smp.weight * seen;
     }
-    radiance += mxc_closure_eval(c, wo, wi) * irradiance;
-  }
-
-  if (mxc_view.counts.y != MXC_ENV_NONE) {
-    int n = max(mxc_view.counts.w, 1);
-    uint seed = mxc_pcg(uint(gl_FragCoord.x) + mxc_pcg(uint(gl_FragCoord.y) + mxc_pcg(uint(mxc_view.counts.z))));
-    // The closure sample's three numbers (lobe choice, then direction) and the image sample's
-    // cell follow a 4D Halton sequence (bases 2, 3, 5, 7; Halton 1964) over the pixel's samples,
-    // frame by frame, shifted by a random offset per pixel (Cranley & Patterson 1976): each
-    // number stays uniform, so nothing is biased, but over N samples a lobe taken with
-    // probability p is taken about pN times rather than a binomial count, and directions cover
-    // the lobe evenly. With independent numbers a smooth coat or glass, whose reflection is
-    // taken a few percent of the time, shows a bright light's reflection as speckle.
-    uint pixel = mxc_pcg(uint(gl_FragCoord.x) ^ mxc_pcg(uint(gl_FragCoord.y) + 0x9e3779b9u));
-    vec4 shift = vec4(mxc_uniform(pixel), mxc_uniform(pixel), mxc_uniform(pixel), mxc_uniform(pixel));
-    bool image = mxc_view.counts.y == MXC_ENV_MAP;
-    vec3 sum = vec3(0.0);
-    for (int s = 0; s < n; ++s) {
-      uint index = uint(mxc_view.counts.z) * uint(n) + uint(s);
-      vec4 choice = fract(vec4(mxc_radical_inverse(index, 2u), mxc_radical_inverse(index, 3u),
-                               mxc_radical_inverse(index, 5u), mxc_radical_inverse(index, 7u)) + shift);
-      // The closure's sample. Above the surface an image's samples reach the same directions:
-      // the two are weighted against each other. Below it (transmission) and for delta lobes
-      // only the closure reaches the direction, with weight 1.
-      vec3 u = vec3(choice.z, choice.w, choice.x);
-      MxcSample smp = mxc_closure_sample(c, wo, u);
-      if (smp.valid) {
-        bool above = dot(smp.wi, N) > 0.0;
-        vec3 seen = above ? smp.wi : mxc_exit_direction(-wo, smp.wi);
-        float w = 1.0;
-        if (image && above && !smp.delta) {
-          w = mxc_power_heuristic(smp.pdf, mxc_env_pdf(mxc_env_to_map(smp.wi, mxc_view.environment.z)));
-        }
-        sum += w * smp.weight * mxc_environment(seen);
-      }
-      if (!image) continue;
-      // The image's sample, where the image is bright; only above the surface (see above).
+    // The image's sample, where the image is bright; only above the surface (see above).
+    vec3 m = vec3(0.0);    // its direction in the map
+    float lightPdf = 0.0;  // the density it was drawn with
+    vec3 imageWi = N;
+    vec3 imageSeen = vec3(0.0);
+    if (batchSamples == 2) {
       vec4 v = vec4(choice.y, mxc_uniform(seed), mxc_uniform(seed), mxc_uniform(seed));
-      // The estimate divides by the density the direction was drawn with; the weight reads the
-      // density as the closure's samples read it (mxc_env_pdf), so that the two weights sum to 1
-      // at every direction, even one on a cell's edge that rounding puts in either cell.
-      float lightPdf;
-      vec3 m = mxc_env_sample(v, lightPdf);
-      vec3 wi = mxc_env_to_world(m, mxc_view.environment.z);
-      if (lightPdf > 0.0 && dot(wi, N) > 0.0) {
-        float w = mxc_power_heuristic(mxc_env_pdf(m), mxc_closure_pdf(c, wo, wi));
-        sum += w * mxc_closure_eval(c, wo, wi) * mxc_environment(wi) / lightPdf;  // lightPdf > 0
+      m = mxc_env_sample(v, lightPdf);
+      imageWi = mxc_env_to_world(m, mxc_view.environment.z);
+      if (lightPdf > 0.0 && dot(imageWi, N) > 0.0) imageSeen = mxc_environment(imageWi);
+    }
+    for (int j = 0; j < batchLights + batchSamples; ++j) {
+      vec3 wi = N;
+      vec3 incoming = vec3(0.0);  // a light's irradiance, or the radiance arriving along wi
+      bool use = true;            // wi contributes
+      // 0: light j, 1: the closure's sample, 2: the image's sample.
+      int strategy = j < batchLights ? 0 : j == batchLights ? 1 : 2;
+      if (strategy == 0) {
+        vec4 light = mxc_view.lightVector[j];
+        incoming = mxc_view.lightRadiance[j].rgb;
+        if (light.w == 0.0) {
+          wi = mxc_safe_normalize(light.xyz, N);
+        } else {
+          vec3 d = light.xyz - vPosition;
+          float d2 = max(dot(d, d), 1e-8);  // a light inside the surface point: bounded
+          wi = d * inversesqrt(d2);
+          incoming /= d2;  // inverse-square falloff of a point light's intensity
+          if (light.w == 2.0) {
+            // A spot light: full inside the inner cone, none outside the outer one, a smooth
+            // fade between (cosInner > cosOuter, checked where the light is made).
+            vec4 spot = mxc_view.lightSpot[j];
+            incoming *= smoothstep(spot.w, mxc_view.lightRadiance[j].w, dot(-wi, spot.xyz));
+          }
+        }
+      } else if (strategy == 1) {
+        wi = smp.wi;
+        incoming = seen;
+        use = smp.valid && smp.evaluate;
+      } else {
+        wi = imageWi;
+        incoming = imageSeen;
+        use = lightPdf > 0.0 && dot(imageWi, N) > 0.0;
+      }
+      float pdf;
+      vec3 f = mxc_closure_eval_pdf(c, wo, wi, strategy != 0, pdf);  // a light needs no pdf
+      if (strategy == 0) {
+        radiance += f * incoming;
+      } else if (strategy == 1) {
+        if (use && pdf > 0.0) {
+          float w = image && above ? mxc_power_heuristic(pdf, mxc_env_pdf(mxc_env_to_map(wi, mxc_view.environment.z))) : 1.0;
+          sum += w * f / pdf * incoming;  // pdf > 0
+        }
+      } else if (use) {
+        // The estimate divides by the density the direction was drawn with; the weight reads
+        // the density as the closure's samples read it (mxc_env_pdf), so that the two weights
+        // sum to 1 at every direction, even one on a cell's edge that rounding puts in either.
+        float w = mxc_power_heuristic(mxc_env_pdf(m), pdf);
+        sum += w * f * incoming / lightPdf;  // lightPdf > 0 where used
       }
     }
-    radiance += sum / float(n);  // n >= 1
   }
+  radiance += sum / float(max(n, 1));  // n >= 1 wherever sum is not zero
+
   // What passes straight through (opacity < 1) shows the background, which the harness
   // composites under the accumulated image with (1 - alpha).
   float coverage = 1.0 - clamp(mxc_luminance(c.transparency), 0.0, 1.0);

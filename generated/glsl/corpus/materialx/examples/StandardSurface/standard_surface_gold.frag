@@ -16,6 +16,7 @@
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;

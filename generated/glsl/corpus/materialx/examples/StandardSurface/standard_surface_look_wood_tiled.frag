@@ -18,6 +18,7 @@
 #include "library/mxc_procedural.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
@@ -127,6 +128,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_procedural.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;

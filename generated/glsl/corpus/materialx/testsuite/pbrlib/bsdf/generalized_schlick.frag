@@ -16,6 +16,7 @@
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
@@ -72,6 +73,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
@@ -128,6 +130,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
@@ -184,6 +187,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
@@ -259,6 +263,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
@@ -315,6 +320,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
@@ -371,6 +377,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
@@ -427,6 +434,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
@@ -502,6 +510,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;

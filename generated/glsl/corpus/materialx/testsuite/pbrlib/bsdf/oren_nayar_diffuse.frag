@@ -16,6 +16,7 @@
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
@@ -71,6 +72,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
@@ -126,6 +128,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
@@ -181,6 +184,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
@@ -236,6 +240,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
 #include "library/mxc_closure.glsl"
+#include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
 layout(set = 0, binding = 2, std140) uniform MxcParameters {
   layout(offset = 0) uint missing_textures;
