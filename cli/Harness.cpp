@@ -39,6 +39,14 @@ rt::AlbedoTables* Device::tables() {
   return tables_.get();
 }
 
+rt::TextureCache* Device::textures() {
+  if (textures_) return textures_.get();
+  rt::VulkanContext* c = context();
+  if (!c) return nullptr;
+  textures_ = std::make_unique<rt::TextureCache>(*c);
+  return textures_.get();
+}
+
 bool Device::checkValidation() {
   if (!context_) return true;
   for (const std::string& m : context_->validationMessages()) std::fprintf(stderr, "validation: %s\n", m.c_str());
@@ -46,7 +54,8 @@ bool Device::checkValidation() {
 }
 
 std::optional<MaterialProgram> prepareMaterial(MaterialPipeline& pipeline, Session& session, rt::VulkanContext& context,
-                                               const ir::Material& material, glsl::ShaderKind kind) {
+                                               const ir::Material& material, glsl::ShaderKind kind,
+                                               rt::TextureCache* textures) {
   MaterialProgram program;
   program.shader = pipeline.compiler().shader(material, kind);
   auto words = pipeline.compiler().spirv(program.shader);
@@ -56,7 +65,7 @@ std::optional<MaterialProgram> prepareMaterial(MaterialPipeline& pipeline, Sessi
   Diagnostics& diagnostics = session.workspace.diagnostics;
   const size_t errors = diagnostics.errorCount();
   program.resources =
-      std::make_unique<rt::MaterialResources>(context, program.shader.interface, pipeline.documentFolder(), diagnostics);
+      std::make_unique<rt::MaterialResources>(context, program.shader.interface, pipeline.documentFolder(), diagnostics, textures);
   session.printDiagnostics();
   if (diagnostics.errorCount() > errors) return std::nullopt;
   return program;

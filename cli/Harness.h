@@ -16,6 +16,7 @@
 #include "compiler/glsl/ShaderBuilder.h"
 #include "runtime/AlbedoTables.h"
 #include "runtime/MaterialResources.h"
+#include "runtime/TextureCache.h"
 #include "runtime/VulkanContext.h"
 
 namespace mxc::cli {
@@ -35,6 +36,9 @@ class Device {
   /// Null (with the error printed) when no device can be created.
   rt::VulkanContext* context();
   rt::AlbedoTables* tables();
+  /// The textures read so far, shared by the materials of a run; null (with the error printed)
+  /// when there is no device.
+  rt::TextureCache* textures();
   /// Prints validation messages; true when there were none.
   bool checkValidation();
 
@@ -42,6 +46,7 @@ class Device {
   DeviceOptions options_;
   std::unique_ptr<rt::VulkanContext> context_;
   std::unique_ptr<rt::AlbedoTables> tables_;
+  std::unique_ptr<rt::TextureCache> textures_;  // after context_: destroyed before it
 };
 
 /// A material ready to run: its shader of one kind, the SPIR-V, and its resources on the device.
@@ -53,9 +58,10 @@ struct MaterialProgram {
 
 /// Builds and compiles the material's shader of `kind` and loads its textures (relative paths
 /// from the document's folder; warnings printed). Nullopt when it does not compile or a texture path is not a
-/// regular file (diagnostics printed).
+/// regular file (diagnostics printed). Textures come from `textures` when given.
 std::optional<MaterialProgram> prepareMaterial(MaterialPipeline& pipeline, Session& session, rt::VulkanContext& context,
-                                               const ir::Material& material, glsl::ShaderKind kind);
+                                               const ir::Material& material, glsl::ShaderKind kind,
+                                               rt::TextureCache* textures = nullptr);
 
 /// A progress bar with the share done and an estimate of the time left, on stderr, rewritten
 /// in place: only when stderr is a terminal and the work has taken more than a second, at most

@@ -268,7 +268,7 @@ int runRender(const RenderOptions& options) {
     // that fails stops the command before minutes of rendering, not after.
     std::vector<MaterialProgram> programs;
     for (const ir::Material& material : pipeline.materials()) {
-      auto program = prepareMaterial(pipeline, session, *device.context(), material, glsl::ShaderKind::Raster);
+      auto program = prepareMaterial(pipeline, session, *device.context(), material, glsl::ShaderKind::Raster, device.textures());
       if (!program) return kInvalidDocument;
       programs.push_back(std::move(*program));
     }

@@ -251,7 +251,8 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
     std::map<const ir::Material*, MaterialProgram> programs;
     for (const SceneDocuments::Found& found : chosen) {
       if (programs.count(found.material)) continue;
-      auto program = prepareMaterial(*found.pipeline, session, *device.context(), *found.material, glsl::ShaderKind::Raster);
+      auto program = prepareMaterial(*found.pipeline, session, *device.context(), *found.material, glsl::ShaderKind::Raster,
+                                    device.textures());
       if (!program) return kInvalidDocument;
       programs.emplace(found.material, std::move(*program));
     }

@@ -22,6 +22,9 @@ struct RgbaImage {
   uint32_t width = 0;
   uint32_t height = 0;
   std::vector<float> pixels;
+  /// Read from a file of 8 bits per channel (readImage): 8 bits, sRGB-encoded where the read
+  /// decoded sRGB, hold its values, so a texture of it needs a quarter of the memory of floats.
+  bool eightBit = false;
   float* at(uint32_t x, uint32_t y) { return &pixels[(size_t{y} * width + x) * 4]; }
   const float* at(uint32_t x, uint32_t y) const { return &pixels[(size_t{y} * width + x) * 4]; }
 };

@@ -81,6 +81,7 @@ std::variant<RgbaImage, std::string> read(const std::filesystem::path& path, con
   uint64_t k = 1;
   while (!fits(k)) ++k;
   RgbaImage image;
+  image.eightBit = spec.format.size() == 1;  // UINT8 or INT8 channels
   image.width = static_cast<uint32_t>((width + k - 1) / k);
   image.height = static_cast<uint32_t>((height + k - 1) / k);
   image.pixels.assign(size_t{image.width} * image.height * 4, 0.0f);

@@ -4,6 +4,7 @@
 /// textures (read through OpenImageIO), bound at the bindings of compiler/glsl/Bindings.h.
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "compiler/glsl/ShaderBuilder.h"
 #include "runtime/AlbedoTables.h"
 #include "runtime/Descriptors.h"
+#include "runtime/TextureCache.h"
 
 namespace mxc::rt {
 
@@ -19,9 +21,10 @@ class MaterialResources {
   /// Reads the material's textures, relative paths from `folder`, reported at the image node's
   /// `file` input: a missing or unreadable file is a warning and the shader uses the node's
   /// default instead; a path that is not a regular file (a FIFO, a device, a directory) is an
-  /// error. Images beyond the device's size limit are downsampled (a warning).
+  /// error. Images beyond the device's size limit are downsampled (a warning). Textures come
+  /// from `textures` when given (shared with the other materials using it).
   MaterialResources(VulkanContext& context, const glsl::MaterialInterface& material, const std::filesystem::path& folder,
-                    Diagnostics& diagnostics);
+                    Diagnostics& diagnostics, TextureCache* textures = nullptr);
   ~MaterialResources();
   MaterialResources(const MaterialResources&) = delete;
   MaterialResources& operator=(const MaterialResources&) = delete;
@@ -39,7 +42,7 @@ class MaterialResources {
   VulkanContext& context_;
   glsl::MaterialInterface material_;
   Buffer parameters_;
-  std::vector<Image> textures_;
+  std::vector<std::shared_ptr<const Texture>> textures_;
 };
 
 }  // namespace mxc::rt

@@ -265,10 +265,20 @@ void VulkanContext::destroy(Image& img) {
   img = Image{};
 }
 
-void VulkanContext::upload(Image& img, const float* rgba) {
-  const VkDeviceSize bytes = VkDeviceSize{img.width} * img.height * 4 * sizeof(float);
+void VulkanContext::upload(Image& img, const float* rgba) { upload(img, rgba, 4 * sizeof(float)); }
+
+bool VulkanContext::canSampleLinear(VkFormat format) const {
+  VkFormatProperties properties{};
+  vkGetPhysicalDeviceFormatProperties(physical_, format, &properties);
+  const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT |
+                                      VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+  return (properties.optimalTilingFeatures & needed) == needed;
+}
+
+void VulkanContext::upload(Image& img, const void* texels, size_t bytesPerTexel) {
+  const VkDeviceSize bytes = VkDeviceSize{img.width} * img.height * bytesPerTexel;
   Buffer staging = createBuffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-  std::memcpy(staging.mapped, rgba, bytes);
+  std::memcpy(staging.mapped, texels, bytes);
   submit([&](VkCommandBuffer cmd) {
     transition(cmd, img.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
                VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);

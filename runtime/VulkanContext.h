@@ -83,6 +83,10 @@ class VulkanContext {
   /// Fills an RGBA32F image created with TRANSFER_DST and SAMPLED usage from `rgba`
   /// (width * height * 4 floats, top row first) and leaves it ready for sampling.
   void upload(Image& image, const float* rgba);
+  /// Any format: `texels` holds width x height texels of `bytesPerTexel` bytes each.
+  void upload(Image& image, const void* texels, size_t bytesPerTexel);
+  /// Whether images of `format` can be sampled with linear filtering.
+  bool canSampleLinear(VkFormat format) const;
   /// Reads back an RGBA32F image created with TRANSFER_SRC usage, currently in `layout`.
   std::vector<float> download(const Image& image, VkImageLayout layout);
 

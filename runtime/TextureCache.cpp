@@ -1,0 +1,65 @@
+#include "runtime/TextureCache.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace mxc::rt {
+
+Texture::Texture(VulkanContext& context, Image image, std::vector<std::string> warnings, std::string error)
+    : context_(context), image_(image), warnings_(std::move(warnings)), error_(std::move(error)) {}
+
+Texture::~Texture() { context_.destroy(image_); }
+
+std::vector<uint8_t> eightBitTexels(const RgbaImage& pixels, bool srgb) {
+  // Back to the file's 8-bit code values: decoding and re-encoding sRGB round-trips each of
+  // the 256 values (tests/runtime/TextureCacheTest.cpp). Alpha is never sRGB-encoded.
+  std::vector<uint8_t> texels(pixels.pixels.size());
+  for (size_t i = 0; i < texels.size(); ++i) {
+    float v = std::clamp(pixels.pixels[i], 0.0f, 1.0f);
+    if (srgb && i % 4 != 3) v = linearToSrgb(v);
+    texels[i] = static_cast<uint8_t>(std::lround(v * 255.0f));
+  }
+  return texels;
+}
+
+Image uploadTexture(VulkanContext& context, const RgbaImage& pixels, bool srgb) {
+  const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  const VkFormat eightBit = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
+  if (pixels.eightBit && context.canSampleLinear(eightBit)) {
+    const std::vector<uint8_t> texels = eightBitTexels(pixels, srgb);
+    Image image = context.createImage(pixels.width, pixels.height, eightBit, usage);
+    context.upload(image, texels.data(), 4);
+    return image;
+  }
+  Image image = context.createImage(pixels.width, pixels.height, VK_FORMAT_R32G32B32A32_SFLOAT, usage);
+  context.upload(image, pixels.pixels.data());
+  return image;
+}
+
+std::shared_ptr<const Texture> TextureCache::get(const std::filesystem::path& path, bool srgbDecode) {
+  const std::pair<std::string, bool> key{path.lexically_normal().string(), srgbDecode};
+  if (auto live = textures_[key].lock()) return live;
+  ++reads_;
+  ImageReadOptions options;
+  options.maxDimension = context_.maxImageDimension2D();
+  options.srgbDecode = srgbDecode;
+  std::vector<std::string> warnings;
+  auto read = readImage(path, options, &warnings);
+  std::string error;
+  RgbaImage pixels;
+  if (auto* why = std::get_if<std::string>(&read)) {
+    error = *why;
+    pixels = RgbaImage{1, 1, {0.0f, 0.0f, 0.0f, 1.0f}};
+  } else {
+    pixels = std::move(std::get<RgbaImage>(read));
+  }
+  // The image is uploaded in the file's encoding: the sampler decodes sRGB (where the read did)
+  // before filtering, as the read's linear values were filtered.
+  auto texture = std::make_shared<const Texture>(context_, uploadTexture(context_, pixels, srgbDecode && pixels.eightBit),
+                                                 std::move(warnings), std::move(error));
+  textures_[key] = texture;
+  return texture;
+}
+
+}  // namespace mxc::rt
