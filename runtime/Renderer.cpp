@@ -1,6 +1,9 @@
 #include "runtime/Renderer.h"
 
+#include <atomic>
 #include <chrono>
+#include <exception>
+#include <thread>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -357,6 +360,8 @@ RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const Rende
   fb.layers = 1;
   check(vkCreateFramebuffer(device, &fb, nullptr, &f.framebuffer), "vkCreateFramebuffer");
   f.items.resize(items.size());
+  // The modules are needed only while the pipelines are created.
+  std::vector<std::unique_ptr<ShaderModule>> modules;
   for (size_t i = 0; i < items.size(); ++i) {
     const DrawItem& item = items[i];
     ItemObjects& o = f.items[i];
@@ -369,9 +374,8 @@ RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const Rende
     o.firstIndex = std::min(item.firstIndex, static_cast<uint32_t>(mesh.indices.size()));
     const uint32_t available = static_cast<uint32_t>(mesh.indices.size()) - o.firstIndex;
     o.indexCount = item.indexCount == 0 ? available : std::min(item.indexCount, available);
-    // The modules are needed only while the pipelines are created.
-    ShaderModule vertex(context_, *item.vertexSpirv);
-    ShaderModule fragment(context_, *item.fragmentSpirv);
+    modules.push_back(std::make_unique<ShaderModule>(context_, *item.vertexSpirv));
+    modules.push_back(std::make_unique<ShaderModule>(context_, *item.fragmentSpirv));
     std::vector<VkDescriptorSetLayout> setLayouts;
     for (const DescriptorSet* set : item.sets) {
       setLayouts.push_back(set->layout());
@@ -381,11 +385,35 @@ RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const Rende
     layoutInfo.setLayoutCount = static_cast<uint32_t>(setLayouts.size());
     layoutInfo.pSetLayouts = setLayouts.data();
     check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &o.layout), "vkCreatePipelineLayout");
-    o.depthPipeline =
-        createPipeline(device, f.renderPass, o.layout, vertex.get(), VK_NULL_HANDLE, item.inputs, s.width, s.height);
-    o.shadePipeline =
-        createPipeline(device, f.renderPass, o.layout, vertex.get(), fragment.get(), item.inputs, s.width, s.height);
   }
+  // The pipelines, several at a time: lavapipe compiles a material's shader on the calling
+  // thread (LLVM, up to seconds for a large material), and vkCreateGraphicsPipelines may be
+  // called from several threads at once (Vulkan 1.3, s. 3.6 "Threading Behavior": only a
+  // pipeline cache, none here, needs external synchronisation). Each thread takes the next
+  // item; the first failure is rethrown once all have stopped.
+  std::atomic<size_t> next{0};
+  std::vector<std::exception_ptr> failures(items.size());
+  auto createPipelines = [&] {
+    for (size_t i = next++; i < items.size(); i = next++) {
+      try {
+        ItemObjects& o = f.items[i];
+        VkShaderModule vertex = modules[2 * i]->get(), fragment = modules[2 * i + 1]->get();
+        o.depthPipeline = createPipeline(device, f.renderPass, o.layout, vertex, VK_NULL_HANDLE, items[i].inputs, s.width, s.height);
+        o.shadePipeline = createPipeline(device, f.renderPass, o.layout, vertex, fragment, items[i].inputs, s.width, s.height);
+      } catch (...) {
+        failures[i] = std::current_exception();
+      }
+    }
+  };
+  const size_t threads = std::min<size_t>(items.size(), std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> workers;
+  for (size_t t = 1; t < threads; ++t) workers.emplace_back(createPipelines);
+  createPipelines();
+  for (std::thread& worker : workers) worker.join();
+  for (const std::exception_ptr& failure : failures) {
+    if (failure) std::rethrow_exception(failure);
+  }
+  modules.clear();
 
   context_.submit([&](VkCommandBuffer cmd) {
     VulkanContext::transition(cmd, f.color.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,

@@ -1,5 +1,7 @@
 #include "runtime/VulkanContext.h"
 
+#include <mutex>
+
 #include <algorithm>
 #include <cstring>
 
@@ -17,6 +19,10 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT 
                                          VkDebugUtilsMessageTypeFlagsEXT, const VkDebugUtilsMessengerCallbackDataEXT* data,
                                          void* user) {
   if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) {
+    // Called on whichever thread made the Vulkan call (the renderer creates pipelines on
+    // several); the list is read only once those calls have returned.
+    static std::mutex mutex;
+    std::lock_guard<std::mutex> lock(mutex);
     static_cast<std::vector<std::string>*>(user)->push_back(data->pMessage ? data->pMessage : "(no message)");
   }
   return VK_FALSE;
