@@ -126,8 +126,8 @@ VkRenderPass createRenderPass(VkDevice device) {
 /// The depth pre-pass (no fragment shader, no colour writes) or the shading pass (EQUAL depth,
 /// additive blending).
 VkPipeline createPipeline(VkDevice device, VkRenderPass pass, VkPipelineLayout layout, VkShaderModule vertex,
-                          VkShaderModule fragment, const std::vector<VertexInput>& inputs, uint32_t width,
-                          uint32_t height) {
+                          VkShaderModule fragment, const VkSpecializationInfo* specialization,
+                          const std::vector<VertexInput>& inputs, uint32_t width, uint32_t height) {
   const bool shading = fragment != VK_NULL_HANDLE;
   VkPipelineShaderStageCreateInfo stages[2]{};
   stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
@@ -138,6 +138,7 @@ VkPipeline createPipeline(VkDevice device, VkRenderPass pass, VkPipelineLayout l
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
   stages[1].module = fragment;
   stages[1].pName = "main";
+  stages[1].pSpecializationInfo = specialization;
   VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
   std::vector<VkVertexInputAttributeDescription> attributes;
   for (const VertexInput& in : inputs) attributes.push_back({in.location, 0, in.format, in.offset});
@@ -391,6 +392,11 @@ RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const Rende
   // called from several threads at once (Vulkan 1.3, s. 3.6 "Threading Behavior": only a
   // pipeline cache, none here, needs external synchronisation). Each thread takes the next
   // item; the first failure is rethrown once all have stopped.
+  // The environment is fixed per pipeline (compiler/glsl/Contract.h): a shader without the
+  // constant (another generator's) is not affected by the entry (Vulkan 1.3, s. 10.9).
+  const int32_t environment = static_cast<int32_t>(environmentCode(s.environment));
+  const VkSpecializationMapEntry entry{glsl::kEnvironmentConstantId, 0, sizeof(int32_t)};
+  const VkSpecializationInfo specialization{1, &entry, sizeof(int32_t), &environment};
   std::atomic<size_t> next{0};
   std::vector<std::exception_ptr> failures(items.size());
   auto createPipelines = [&] {
@@ -398,8 +404,10 @@ RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const Rende
       try {
         ItemObjects& o = f.items[i];
         VkShaderModule vertex = modules[2 * i]->get(), fragment = modules[2 * i + 1]->get();
-        o.depthPipeline = createPipeline(device, f.renderPass, o.layout, vertex, VK_NULL_HANDLE, items[i].inputs, s.width, s.height);
-        o.shadePipeline = createPipeline(device, f.renderPass, o.layout, vertex, fragment, items[i].inputs, s.width, s.height);
+        o.depthPipeline = createPipeline(device, f.renderPass, o.layout, vertex, VK_NULL_HANDLE, nullptr, items[i].inputs,
+                                         s.width, s.height);
+        o.shadePipeline = createPipeline(device, f.renderPass, o.layout, vertex, fragment, &specialization, items[i].inputs,
+                                         s.width, s.height);
       } catch (...) {
         failures[i] = std::current_exception();
       }

@@ -88,6 +88,11 @@ std::string viewHeader() {
   out += fmt::format("const int MXC_ENV_SKY = {};\n", int(EnvironmentCode::Sky));
   out += fmt::format("const int MXC_ENV_MAP = {};  // an equirectangular image (stages/mxc_environment.glsl)\n",
                      int(EnvironmentCode::Map));
+  out += fmt::format(
+      "// The environment (MXC_ENV_*), fixed when the pipeline is created: the other environments'\n"
+      "// code is not compiled. MxcView.counts.y holds the same code.\n"
+      "layout(constant_id = {}) const int MXC_ENVIRONMENT = MXC_ENV_MAP;\n",
+      kEnvironmentConstantId);
   out += fmt::format("layout(set = 0, binding = {}, std140) uniform MxcView {{\n", uint32_t(kStageBinding));
   out += declarations(viewMembers()) + "} mxc_view;\n";
   return out;

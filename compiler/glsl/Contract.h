@@ -34,6 +34,10 @@ constexpr uint32_t kTablesOutputBinding = 0;
 
 /// The environment of the raster renderer, MxcView.counts.y.
 enum class EnvironmentCode : int32_t { None = 0, White = 1, Sky = 2, Map = 3 };
+/// The specialization constant (MXC_ENVIRONMENT) through which the renderer fixes the
+/// environment's code when it creates a pipeline: the code of the other environments is not
+/// compiled (lavapipe runs both sides of every branch, so it would otherwise run, masked).
+constexpr uint32_t kEnvironmentConstantId = 0;
 
 /// The raster renderer's environment image (stages/mxc_environment.glsl) is its own descriptor
 /// set, so that a material's set 0 does not change with the scene: the radiance (an RGBA32F

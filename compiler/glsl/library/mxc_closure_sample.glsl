@@ -4,10 +4,15 @@
 // stage calls the two halves itself, with one evaluation for every direction it lights from.
 MxcSample mxc_closure_sample(MxcClosure c, vec3 wo, vec3 u) {
   MxcSample s = mxc_closure_sample_direction(c, wo, u);
+#ifdef MXC_SAMPLES_WEIGHTED
+  // No evaluation compiled: lavapipe would run it, masked, for every sample.
+  return s;
+#else
   if (!s.valid || !s.evaluate) return s;
   vec3 f = mxc_closure_eval_pdf(c, wo, s.wi, true, s.pdf);
   s.evaluate = false;
   s.valid = s.pdf > 0.0;
   s.weight = s.valid ? f / s.pdf : vec3(0.0);  // pdf > 0 where valid
   return s;
+#endif
 }

@@ -66,6 +66,9 @@ struct MxcClosure {
   vec3 transparency;  // weight of light passing straight through (opacity < 1)
 };
 
+// Every sample of the walk carries its own weight: nothing evaluates it again
+// (mxc_closure_sample.glsl, stages/mxc_raster.frag).
+#define MXC_SAMPLES_WEIGHTED
 struct MxcSample {
   vec3 wi;
   vec3 weight;

@@ -32,9 +32,9 @@ vec3 mxc_sky(vec3 d) {
 
 // Radiance arriving from world direction d.
 vec3 mxc_environment(vec3 d) {
-  if (mxc_view.counts.y == MXC_ENV_WHITE) return vec3(mxc_view.environment.x);
-  if (mxc_view.counts.y == MXC_ENV_SKY) return mxc_view.environment.x * mxc_sky(d);
-  if (mxc_view.counts.y == MXC_ENV_MAP) {
+  if (MXC_ENVIRONMENT == MXC_ENV_WHITE) return vec3(mxc_view.environment.x);
+  if (MXC_ENVIRONMENT == MXC_ENV_SKY) return mxc_view.environment.x * mxc_sky(d);
+  if (MXC_ENVIRONMENT == MXC_ENV_MAP) {
     return mxc_view.environment.x * mxc_env_lookup(mxc_env_to_map(d, mxc_view.environment.z));
   }
   return vec3(0.0);
@@ -107,8 +107,8 @@ void main() {
   // image, the image's), batch 0 also takes the lights, and one inner loop evaluates the
   // batch's directions. Each strategy's code then runs once per batch, as it would unbatched.
   int lights = min(mxc_view.counts.x, MXC_MAX_LIGHTS);
-  bool image = mxc_view.counts.y == MXC_ENV_MAP;
-  int n = mxc_view.counts.y != MXC_ENV_NONE ? max(mxc_view.counts.w, 1) : 0;
+  bool image = MXC_ENVIRONMENT == MXC_ENV_MAP;
+  int n = MXC_ENVIRONMENT != MXC_ENV_NONE ? max(mxc_view.counts.w, 1) : 0;
   uint seed = mxc_pcg(uint(gl_FragCoord.x) + mxc_pcg(uint(gl_FragCoord.y) + mxc_pcg(uint(mxc_view.counts.z))));
   // The closure sample's three numbers (lobe choice, then direction) and the image sample's
   // cell follow a 4D Halton sequence (bases 2, 3, 5, 7; Halton 1964) over the pixel's samples,
@@ -120,9 +120,15 @@ void main() {
   uint pixel = mxc_pcg(uint(gl_FragCoord.x) ^ mxc_pcg(uint(gl_FragCoord.y) + 0x9e3779b9u));
   vec4 shift = vec4(mxc_uniform(pixel), mxc_uniform(pixel), mxc_uniform(pixel), mxc_uniform(pixel));
   vec3 sum = vec3(0.0);  // the environment samples' estimates
+#ifdef MXC_SAMPLES_WEIGHTED
+  const int evaluatedClosureSamples = 0;  // the closure weighs its samples (a walk)
+#else
+  const int evaluatedClosureSamples = 1;
+#endif
   for (int b = 0; b < max(n, lights > 0 ? 1 : 0); ++b) {
     int batchLights = b == 0 ? lights : 0;
-    int batchSamples = b < n ? (image ? 2 : 1) : 0;
+    // The directions of environment sample b that the inner loop evaluates.
+    int batchSamples = b < n ? evaluatedClosureSamples + (image ? 1 : 0) : 0;
     uint index = uint(mxc_view.counts.z) * uint(max(n, 1)) + uint(b);
     vec4 choice = fract(vec4(mxc_radical_inverse(index, 2u), mxc_radical_inverse(index, 3u),
                              mxc_radical_inverse(index, 5u), mxc_radical_inverse(index, 7u)) + shift);
@@ -132,7 +138,7 @@ void main() {
     MxcSample smp = mxc_closure_sample_direction(c, wo, vec3(choice.z, choice.w, choice.x));
     bool above = dot(smp.wi, N) > 0.0;
     vec3 seen = smp.valid ? mxc_environment(above ? smp.wi : mxc_exit_direction(-wo, smp.wi)) : vec3(0.0);
-    if (batchSamples > 0 && smp.valid && !smp.evaluate) {  // weighted by the closure (a delta lobe, a walk)
+    if (b < n && smp.valid && !smp.evaluate) {  // weighted by the closure (a delta lobe, a walk)
       float w = image && above && !smp.delta
                     ? mxc_power_heuristic(smp.pdf, mxc_env_pdf(mxc_env_to_map(smp.wi, mxc_view.environment.z)))
                     : 1.0;
@@ -143,7 +149,7 @@ void main() {
     float lightPdf = 0.0;  // the density it was drawn with
     vec3 imageWi = N;
     vec3 imageSeen = vec3(0.0);
-    if (batchSamples == 2) {
+    if (image && b < n) {
       vec4 v = vec4(choice.y, mxc_uniform(seed), mxc_uniform(seed), mxc_uniform(seed));
       m = mxc_env_sample(v, lightPdf);
       imageWi = mxc_env_to_world(m, mxc_view.environment.z);
@@ -154,7 +160,7 @@ void main() {
       vec3 incoming = vec3(0.0);  // a light's irradiance, or the radiance arriving along wi
       bool use = true;            // wi contributes
       // 0: light j, 1: the closure's sample, 2: the image's sample.
-      int strategy = j < batchLights ? 0 : j == batchLights ? 1 : 2;
+      int strategy = j < batchLights ? 0 : j == batchLights + evaluatedClosureSamples - 1 ? 1 : 2;
       if (strategy == 0) {
         vec4 light = mxc_view.lightVector[j];
         incoming = mxc_view.lightRadiance[j].rgb;
