@@ -101,7 +101,7 @@ void main() {
 
   // Every direction the point is lit from goes through one call of mxc_closure_eval_pdf: the
   // device compiler inlines every call, and the closure's evaluation is most of the shader
-  // (with one call site instead of three, lavapipe builds the pipeline about twice as fast).
+  // (with one call site instead of three, lavapipe builds the pipeline about 1.5x as fast).
   // Lavapipe runs pixels in SIMD lanes and executes both sides of every branch, masked; so the
   // work is batched: batch b draws environment sample b (the closure's direction and, for an
   // image, the image's), batch 0 also takes the lights, and one inner loop evaluates the
