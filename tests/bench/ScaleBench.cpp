@@ -11,10 +11,6 @@
 // --no-glslang stops after GLSL (glslang's own constant lookup is quadratic in the number of
 // distinct literals, which dominates beyond 100k nodes).
 
-#include <fcntl.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -28,6 +24,7 @@
 
 #include "compiler/common/LargeStack.h"
 #include "compiler/driver/Compiler.h"
+#include "ChildProcess.h"
 
 namespace {
 
@@ -159,18 +156,8 @@ double includeChainMs(int files) {
 
 /// Peak resident memory (MiB) of `mxc compile FILE -q`, from the kernel's accounting.
 double peakMiB(const fs::path& file) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int devnull = ::open("/dev/null", O_WRONLY);
-    ::dup2(devnull, 1);
-    execl(MXC_BINARY, "mxc", "compile", "-q", file.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  int status = 0;
-  rusage usage{};
-  wait4(pid, &status, 0, &usage);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return -1.0;
-  return double(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+  const mxc::bench::ChildRun run = mxc::bench::runChild(MXC_BINARY, {"compile", "-q", file.string()}, true);
+  return run.ok ? run.peakMiB : -1.0;
 }
 
 }  // namespace

@@ -15,13 +15,8 @@
 //
 // --mxc measures another build of mxc (an older commit's, for a before-and-after).
 
-#include <fcntl.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -29,6 +24,10 @@
 #include <fstream>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
+
+#include "ChildProcess.h"
 
 namespace {
 
@@ -43,31 +42,14 @@ struct Run {
 
 /// One mxc process with `args`; its output is discarded. Exits the benchmark when it fails.
 Run runMxc(const std::vector<std::string>& args) {
-  std::vector<char*> argv{const_cast<char*>("mxc")};
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int devnull = ::open("/dev/null", O_WRONLY);
-    ::dup2(devnull, 1);
-    ::dup2(devnull, 2);
-    execv(mxcBinary, argv.data());
-    _exit(127);
-  }
-  int status = 0;
-  rusage usage{};
-  wait4(pid, &status, 0, &usage);
-  Run run;
-  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  run.mib = double(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+  const mxc::bench::ChildRun run = mxc::bench::runChild(mxcBinary, args);
+  if (!run.ok) {
     std::string line = "mxc";
     for (const std::string& a : args) line += " " + a;
     std::fprintf(stderr, "startup_bench: failed: %s\n", line.c_str());
     std::exit(1);
   }
-  return run;
+  return {run.seconds, run.peakMiB};
 }
 
 /// The median run of `repeat` (by time; memory of the same run's median, separately).
