@@ -37,8 +37,7 @@ MaterialResources::MaterialResources(VulkanContext& context, const glsl::Materia
     }
     if (!texture || !texture->error().empty()) {
       missing |= 1u << (k % 32);
-      if (!texture) texture = std::make_shared<const Texture>(context, uploadTexture(context, RgbaImage{1, 1, {0.0f, 0.0f, 0.0f, 1.0f}}, false),
-                                                              std::vector<std::string>{}, std::string{});
+      if (!texture) texture = cache.placeholder();
     }
     textures_.push_back(std::move(texture));
   }

@@ -37,6 +37,20 @@ Image uploadTexture(VulkanContext& context, const RgbaImage& pixels, bool srgb) 
   return image;
 }
 
+namespace {
+
+RgbaImage blackTexel() { return RgbaImage{1, 1, {0.0f, 0.0f, 0.0f, 1.0f}}; }
+
+}  // namespace
+
+std::shared_ptr<const Texture> TextureCache::placeholder() {
+  if (!placeholder_) {
+    placeholder_ = std::make_shared<const Texture>(context_, uploadTexture(context_, blackTexel(), false),
+                                                   std::vector<std::string>{}, std::string{});
+  }
+  return placeholder_;
+}
+
 std::shared_ptr<const Texture> TextureCache::get(const std::filesystem::path& path, bool srgbDecode) {
   const std::pair<std::string, bool> key{path.lexically_normal().string(), srgbDecode};
   if (auto live = textures_[key].lock()) return live;
@@ -50,13 +64,13 @@ std::shared_ptr<const Texture> TextureCache::get(const std::filesystem::path& pa
   RgbaImage pixels;
   if (auto* why = std::get_if<std::string>(&read)) {
     error = *why;
-    pixels = RgbaImage{1, 1, {0.0f, 0.0f, 0.0f, 1.0f}};
+    pixels = blackTexel();
   } else {
     pixels = std::move(std::get<RgbaImage>(read));
   }
   // The image is uploaded in the file's encoding: the sampler decodes sRGB (where the read did)
   // before filtering, as the read's linear values were filtered.
-  auto texture = std::make_shared<const Texture>(context_, uploadTexture(context_, pixels, srgbDecode && pixels.eightBit),
+  auto texture = std::make_shared<const Texture>(context_, uploadTexture(context_, pixels, srgbDecode),
                                                  std::move(warnings), std::move(error));
   textures_[key] = texture;
   return texture;

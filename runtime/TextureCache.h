@@ -50,11 +50,16 @@ class TextureCache {
   /// sRGB to linear when `srgbDecode`, read now unless a live texture has it already.
   std::shared_ptr<const Texture> get(const std::filesystem::path& path, bool srgbDecode);
 
+  /// One black texel, what an image node without a readable file samples (the shader then
+  /// uses the node's default: MaterialResources' missing_textures); made once per cache.
+  std::shared_ptr<const Texture> placeholder();
+
   /// How many files were read (not found in the cache).
   size_t reads() const { return reads_; }
 
  private:
   VulkanContext& context_;
+  std::shared_ptr<const Texture> placeholder_;
   std::map<std::pair<std::string, bool>, std::weak_ptr<const Texture>> textures_;
   size_t reads_ = 0;
 };
