@@ -387,16 +387,16 @@ RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const Rende
     layoutInfo.pSetLayouts = setLayouts.data();
     check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &o.layout), "vkCreatePipelineLayout");
   }
-  // The pipelines, several at a time: lavapipe compiles a material's shader on the calling
-  // thread (LLVM, up to seconds for a large material), and vkCreateGraphicsPipelines may be
-  // called from several threads at once (Vulkan 1.3, s. 3.6 "Threading Behavior": only a
-  // pipeline cache, none here, needs external synchronisation). Each thread takes the next
-  // item; the first failure is rethrown once all have stopped.
   // The environment is fixed per pipeline (compiler/glsl/Contract.h): a shader without the
   // constant (another generator's) is not affected by the entry (Vulkan 1.3, s. 10.9).
   const int32_t environment = static_cast<int32_t>(environmentCode(s.environment));
   const VkSpecializationMapEntry entry{glsl::kEnvironmentConstantId, 0, sizeof(int32_t)};
   const VkSpecializationInfo specialization{1, &entry, sizeof(int32_t), &environment};
+  // The pipelines, several at a time: lavapipe compiles a material's shader on the calling
+  // thread (LLVM, up to seconds for a large material), and vkCreateGraphicsPipelines may be
+  // called from several threads at once (Vulkan 1.3, s. 3.6 "Threading Behavior": only a
+  // pipeline cache, none here, needs external synchronisation). Each thread takes the next
+  // item; the first failure is rethrown once all have stopped.
   std::atomic<size_t> next{0};
   std::vector<std::exception_ptr> failures(items.size());
   auto createPipelines = [&] {
