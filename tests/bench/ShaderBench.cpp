@@ -6,7 +6,9 @@
 // fast tier's; and the time per BSDF evaluation (f cos and pdf of one direction pair) in the
 // compute harness, against a white Lambertian's in the same run.
 //
-//   build/tests/bench/shader_bench [--size N] [--frames N] [--repeat N] [--pairs N]
+//   build/tests/bench/shader_bench [--size N] [--frames N] [--repeat N] [--pairs N] [--materials N]
+//
+// --materials N measures the first N of the four materials only (the smoke test runs one).
 
 #include <algorithm>
 #include <chrono>
@@ -108,11 +110,13 @@ int main(int argc, char** argv) {
   uint32_t size = 512, frames = 16;
   int repeat = 5;
   uint32_t pairCount = 1u << 20;
+  size_t materialCount = 4;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--pairs")) pairCount = static_cast<uint32_t>(std::max(1, std::atoi(argv[i + 1])));
     if (!std::strcmp(argv[i], "--size")) size = static_cast<uint32_t>(std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--frames")) frames = static_cast<uint32_t>(std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--repeat")) repeat = std::max(1, std::atoi(argv[i + 1]));
+    if (!std::strcmp(argv[i], "--materials")) materialCount = static_cast<size_t>(std::max(1, std::atoi(argv[i + 1])));
   }
   const fs::path shared = MXC_SHARED_DIR;
   const fs::path defaultFile = shared / "corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx";
@@ -188,6 +192,7 @@ int main(int argc, char** argv) {
   std::printf("%-28s %10s %10s %10s %11zu %10zu %9.2f %7.2f %7s %8s %9s %7s\n", "flat colour", "-", "-", "-",
               mxc::spirv::instructionCount(flat.words), optimizedCount(flat), flatMs, 1.0, "-", "-", "-", "-");
   for (const Case& c : cases) {
+    if (materialCount-- == 0) break;
     double fastMs = 0.0, fastNs = 0.0;
     for (mxc::Accuracy accuracy : mxc::kAccuracies) {
       std::vector<double> front, spirv, total;

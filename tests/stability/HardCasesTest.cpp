@@ -186,7 +186,10 @@ TEST_P(HardCases, StayFiniteAndBounded) {
   ASSERT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
   ASSERT_EQ(materials.size(), 1u);
 
-  const std::vector<rt::DirectionPair> pairs = directionPairs(4096);
+  // The reference tier's estimate is one walk per pair: fewer pairs keep its run short. Walks
+  // from below a smooth thin wall can be trapped by total internal reflection at both of its
+  // faces, a lossless waveguide that only the walk's budget of events ends (mxc_walk.glsl).
+  const std::vector<rt::DirectionPair> pairs = directionPairs(accuracy == Accuracy::Reference ? 1024 : 4096);
   std::vector<glm::vec4> values = evaluate(materials[0], pairs, accuracy);
   ASSERT_EQ(values.size(), pairs.size());
   size_t bad = 0;
