@@ -383,6 +383,9 @@ def main() -> int:
 
     bench = build / "tests" / "bench" / "compare_bench"
     mxc = build / "mxc"
+    # Not part of the default build (tests/bench/CMakeLists.txt): built here when missing or old.
+    if (build / "build.ninja").exists():
+        subprocess.run(["cmake", "--build", str(build), "--target", "compare_bench", "mxc"], check=True)
     for tool in (bench, mxc):
         if not tool.exists():
             print(f"materialx_compare: {tool} is missing: build first (scripts/setup)", file=sys.stderr)

@@ -15,9 +15,12 @@ constexpr size_t kMaxNodes = 4096;
 int distributeOverMix(Material& m, const PassContext&) {
   std::vector<Index> nodes = reachableNodes(m);
   if (nodes.size() > kMaxNodes) {
+    // A string object, not a literal, is copied in: GCC 12 inlines the copy of a long literal
+    // into a std::string and then warns of bounds it does not exceed (-Warray-bounds).
+    static const std::string kTooLarge = "the scattering tree is too large to distribute into slab stacks; it stays factored";
     bool noted = false;
-    for (const Note& note : m.notes) noted = noted || note.message.rfind("the scattering tree is too large", 0) == 0;
-    if (!noted) m.notes.push_back({"the scattering tree is too large to distribute into slab stacks; it stays factored", m.origin});
+    for (const Note& note : m.notes) noted = noted || note.message == kTooLarge;
+    if (!noted) m.notes.push_back(Note{kTooLarge, m.origin});
     return 0;
   }
   std::vector<Index> replacement(m.nodes.size(), kNone);
