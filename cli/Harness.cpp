@@ -4,6 +4,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <thread>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -56,19 +59,62 @@ bool Device::checkValidation() {
 std::optional<MaterialProgram> prepareMaterial(MaterialPipeline& pipeline, Session& session, rt::VulkanContext& context,
                                                const ir::Material& material, glsl::ShaderKind kind,
                                                rt::TextureCache* textures) {
-  MaterialProgram program;
-  program.shader = pipeline.compiler().shader(material, kind);
-  auto words = pipeline.compiler().spirv(program.shader);
-  session.printDiagnostics();
-  if (!words) return std::nullopt;
-  program.spirv = std::move(*words);
+  auto programs = prepareMaterials({{&pipeline, &material}}, session, context, kind, textures);
+  if (!programs) return std::nullopt;
+  return std::move(programs->front());
+}
+
+std::optional<std::vector<MaterialProgram>> prepareMaterials(const std::vector<MaterialToPrepare>& materials,
+                                                             Session& session, rt::VulkanContext& context,
+                                                             glsl::ShaderKind kind, rt::TextureCache* textures) {
+  // Each compilation reports into diagnostics of its own (the workspace's are not shared across
+  // threads); they join the workspace's in the materials' order.
+  struct Compiled {
+    MaterialProgram program;
+    Diagnostics diagnostics;
+    bool ok = false;
+  };
+  std::vector<Compiled> compiled(materials.size());
+  std::atomic<size_t> next{0};
+  std::vector<std::exception_ptr> failures(materials.size());  // rethrown here, in order
+  auto work = [&] {
+    for (size_t i = next++; i < materials.size(); i = next++) {
+      try {
+        const MaterialToPrepare& m = materials[i];
+        Compiled& c = compiled[i];
+        c.program.shader = m.pipeline->compiler().shader(*m.material, kind);
+        auto words = compileShader(c.program.shader, m.pipeline->compiler().request(), c.diagnostics);
+        c.ok = words.has_value();
+        if (words) c.program.spirv = std::move(*words);
+      } catch (...) {
+        failures[i] = std::current_exception();
+      }
+    }
+  };
+  const size_t threads = std::min<size_t>(materials.size(), std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> helpers;
+  for (size_t t = 1; t < threads; ++t) helpers.emplace_back(work);
+  work();
+  for (std::thread& t : helpers) t.join();
+  for (const std::exception_ptr& failure : failures) {
+    if (failure) std::rethrow_exception(failure);
+  }
+
   Diagnostics& diagnostics = session.workspace.diagnostics;
-  const size_t errors = diagnostics.errorCount();
-  program.resources =
-      std::make_unique<rt::MaterialResources>(context, program.shader.interface, pipeline.documentFolder(), diagnostics, textures);
-  session.printDiagnostics();
-  if (diagnostics.errorCount() > errors) return std::nullopt;
-  return program;
+  std::vector<MaterialProgram> programs;
+  for (size_t i = 0; i < materials.size(); ++i) {
+    Compiled& c = compiled[i];
+    for (const Diagnostic& d : c.diagnostics.all()) diagnostics.add(d);
+    session.printDiagnostics();
+    if (!c.ok) return std::nullopt;
+    const size_t errors = diagnostics.errorCount();
+    c.program.resources = std::make_unique<rt::MaterialResources>(context, c.program.shader.interface,
+                                                                  materials[i].pipeline->documentFolder(), diagnostics, textures);
+    session.printDiagnostics();
+    if (diagnostics.errorCount() > errors) return std::nullopt;
+    programs.push_back(std::move(c.program));
+  }
+  return programs;
 }
 
 Progress::Progress(size_t total)

@@ -63,6 +63,20 @@ std::optional<MaterialProgram> prepareMaterial(MaterialPipeline& pipeline, Sessi
                                                const ir::Material& material, glsl::ShaderKind kind,
                                                rt::TextureCache* textures = nullptr);
 
+/// One material of a document to prepare (prepareMaterials).
+struct MaterialToPrepare {
+  MaterialPipeline* pipeline;
+  const ir::Material* material;
+};
+
+/// prepareMaterial for several materials, in order. Their shaders are built and compiled on up
+/// to one thread per core (glslang is most of a material's compile time); then each one's
+/// resources are made on this thread, in order (they upload through the device's one queue).
+/// Nullopt when any fails (diagnostics printed, in the materials' order).
+std::optional<std::vector<MaterialProgram>> prepareMaterials(const std::vector<MaterialToPrepare>& materials,
+                                                             Session& session, rt::VulkanContext& context,
+                                                             glsl::ShaderKind kind, rt::TextureCache* textures = nullptr);
+
 /// A progress bar with the share done and an estimate of the time left, on stderr, rewritten
 /// in place: only when stderr is a terminal and the work has taken more than a second, at most
 /// ten times a second, cut to the terminal's width (a line that wraps cannot be rewritten), and

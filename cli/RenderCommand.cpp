@@ -171,15 +171,6 @@ int runRender(const RenderOptions& options) {
     std::fprintf(stderr, "error: --background %s: expected R,G,B\n", backgroundText.c_str());
     return kUsage;
   }
-  // Everything that can be refused is refused before the render: the image module, the
-  // formats, then the outputs.
-  if (printError(rt::loadImageModule())) return kOutputFailed;
-  for (const std::string& output : options.outputs) {
-    if (auto why = rt::checkImageFormat(output)) {
-      std::fprintf(stderr, "error: -o %s\n", why->c_str());
-      return kUsage;
-    }
-  }
   auto chosen = chooseMesh(options.mesh, searchPaths(options.searchPaths));
   if (auto* why = std::get_if<std::string>(&chosen)) {
     std::fprintf(stderr, "error: --mesh %s\n", why->c_str());
@@ -240,23 +231,16 @@ int runRender(const RenderOptions& options) {
   Device device(options.device);
   rt::AlbedoTables* tables = device.tables();
   if (!tables) return kInvalidDocument;
+  // The image module (OpenImageIO, 0.2-0.4 s to load) loads while the shaders and pipelines
+  // compile. It starts after the device: the dynamic loader loads one library at a time, and the
+  // Vulkan driver would wait behind the module's 260. The environment image, which needs the
+  // module, is read after the shaders; the outputs are checked before the first frame.
+  rt::ImageModulePreload preload;
   std::unique_ptr<rt::EnvironmentMap> environment;
-  if (environmentImage) {
-    std::vector<std::string> warnings;
-    auto read = rt::EnvironmentMap::read(options.environment, device.context()->maxImageDimension2D(), warnings);
-    for (const std::string& w : warnings) std::fprintf(stderr, "warning: --env %s\n", w.c_str());
-    if (auto* why = std::get_if<std::string>(&read)) {
-      std::fprintf(stderr, "error: --env %s\n", why->c_str());
-      return kInvalidDocument;
-    }
-    environment = std::make_unique<rt::EnvironmentMap>(*device.context(), std::move(std::get<rt::RgbaImage>(read)));
-    settings.environmentMap = environment.get();
-  }
-  const rt::RgbaImage behind = imageBackground ? rt::renderBackground(settings) : rt::RgbaImage{};
   const rt::ToneMapping toneMapping = rt::parseToneMapping(options.toneMapping).value_or(rt::ToneMapping::AcesFit);
   // What a reader of the file needs to know how its values were made.
+  rt::RgbaImage behind;
   ImageFinish finish;
-  finish.behind = imageBackground ? &behind : nullptr;
   finish.background = glm::vec3(background[0], background[1], background[2]);
   finish.exposure = options.exposure;
   finish.tone = toneMapping;
@@ -266,12 +250,30 @@ int runRender(const RenderOptions& options) {
   try {
     // Every material is compiled (and its textures read) before the first frame: a material
     // that fails stops the command before minutes of rendering, not after.
-    std::vector<MaterialProgram> programs;
-    for (const ir::Material& material : pipeline.materials()) {
-      auto program = prepareMaterial(pipeline, session, *device.context(), material, glsl::ShaderKind::Raster, device.textures());
-      if (!program) return kInvalidDocument;
-      programs.push_back(std::move(*program));
+    std::vector<MaterialToPrepare> toPrepare;
+    for (const ir::Material& material : pipeline.materials()) toPrepare.push_back({&pipeline, &material});
+    auto prepared = prepareMaterials(toPrepare, session, *device.context(), glsl::ShaderKind::Raster, device.textures());
+    if (!prepared) return kInvalidDocument;
+    const std::vector<MaterialProgram>& programs = *prepared;
+    if (environmentImage) {
+      std::vector<std::string> warnings;
+      auto read = rt::EnvironmentMap::read(options.environment, device.context()->maxImageDimension2D(), warnings);
+      for (const std::string& w : warnings) std::fprintf(stderr, "warning: --env %s\n", w.c_str());
+      if (auto* why = std::get_if<std::string>(&read)) {
+        std::fprintf(stderr, "error: --env %s\n", why->c_str());
+        return kInvalidDocument;
+      }
+      environment = std::make_unique<rt::EnvironmentMap>(*device.context(), std::move(std::get<rt::RgbaImage>(read)));
+      settings.environmentMap = environment.get();
     }
+    if (imageBackground) behind = rt::renderBackground(settings);
+    finish.behind = imageBackground ? &behind : nullptr;
+    bool checked = false;
+    auto checkOutputs = [&] {
+      if (checked) return;
+      checked = true;
+      if (int code = checkOutputFormats(options.outputs); code != kOk) throw OutputsRefused{code};
+    };
     rt::Renderer renderer(*device.context(), *tables);
     // One bar over every frame of every material: its estimate covers the whole command.
     Progress progress(size_t{settings.frames} * programs.size());
@@ -282,7 +284,7 @@ int runRender(const RenderOptions& options) {
                                                settings, [&](uint32_t frame) {
                                                  progress.step(several ? fmt::format("{} ({}/{}) frame {}", material.name, m + 1, programs.size(), frame)
                                                                      : fmt::format("{} frame {}", material.name, frame));
-                                               });
+                                               }, checkOutputs);
       size_t bad = 0;
       for (float v : image.image.pixels) bad += std::isfinite(v) ? 0 : 1;
       std::vector<std::string> written;
@@ -300,6 +302,8 @@ int runRender(const RenderOptions& options) {
                                   fmt::join(written, ", "), settings.width, settings.height, settings.frames,
                                   image.msPerFrame, device.context()->deviceName()));
     }
+  } catch (const OutputsRefused& refused) {
+    return refused.code;
   } catch (const std::bad_alloc&) {
     throw;  // "out of memory", exit 4 (cli/Main.cpp)
   } catch (const std::exception& e) {

@@ -5,7 +5,23 @@
 
 #include <fmt/format.h>
 
+#include "cli/ExitCode.h"
+
 namespace mxc::cli {
+
+int checkOutputFormats(const std::vector<std::string>& outputs) {
+  if (auto why = rt::loadImageModule()) {
+    std::fprintf(stderr, "error: %s\n", why->c_str());
+    return kOutputFailed;
+  }
+  for (const std::string& output : outputs) {
+    if (auto why = rt::checkImageFormat(output)) {
+      std::fprintf(stderr, "error: -o %s\n", why->c_str());
+      return kUsage;
+    }
+  }
+  return kOk;
+}
 
 rt::ImageAttributes renderAttributes(const std::string& input, uint32_t spp, float exposure, rt::ToneMapping tone) {
   return {{"ImageDescription", fmt::format("mxc render of {}: {} spp, exposure {} stops; 8-bit formats: {}", input, spp,

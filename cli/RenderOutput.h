@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -28,6 +29,18 @@ struct ImageFinish {
 /// What a reader of an image needs to know of how its values were made: "ImageDescription" and
 /// "mxc:exposure" (encodeImage adds "mxc:tonemap" to 8-bit formats).
 rt::ImageAttributes renderAttributes(const std::string& input, uint32_t spp, float exposure, rt::ToneMapping tone);
+
+/// Loads the image module (waiting for an rt::ImageModulePreload) and checks that every output's
+/// format can be written, before the render: kOk, or the exit code after printing why not
+/// (kOutputFailed without the module, kUsage for a format).
+int checkOutputFormats(const std::vector<std::string>& outputs);
+
+/// What a render's last check before its frames throws when checkOutputFormats refuses (the
+/// renderer's `beforeFrames`, which runs once the pipelines are compiled, while the image module
+/// loads): the command's exit code.
+struct OutputsRefused {
+  int code;
+};
 
 /// Finishes `render` for the format of `path` and stages it in `outputs` (written by its
 /// commit). Returns why it cannot be encoded or staged instead.

@@ -110,13 +110,6 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
   settings.emissionScale = options.emissionScale;
   settings.lights = scene.lights;
 
-  if (printError(rt::loadImageModule())) return kOutputFailed;
-  for (const std::string& output : options.outputs) {
-    if (auto why = rt::checkImageFormat(output)) {
-      std::fprintf(stderr, "error: -o %s\n", why->c_str());
-      return kUsage;
-    }
-  }
 
   // Meshes, each file read once however many objects use it.
   std::vector<std::filesystem::path> paths = scene.searchPaths;
@@ -224,22 +217,13 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
   Device device(options.device);
   rt::AlbedoTables* tables = device.tables();
   if (!tables) return kInvalidDocument;
+  // The image module loads while the shaders and pipelines compile, after the device (as in
+  // runRender, cli/RenderCommand.cpp); the formats are checked before the first frame.
+  rt::ImageModulePreload preload;
   std::unique_ptr<rt::EnvironmentMap> environment;
-  if (settings.environment == rt::Environment::Map) {
-    std::vector<std::string> warnings;
-    auto image = rt::EnvironmentMap::read(scene.environment.image, device.context()->maxImageDimension2D(), warnings);
-    for (const std::string& w : warnings) std::fprintf(stderr, "warning: environment.file %s\n", w.c_str());
-    if (auto* why = std::get_if<std::string>(&image)) {
-      std::fprintf(stderr, "%s: error: environment.file: %s\n", source.c_str(), why->c_str());
-      return kInvalidDocument;
-    }
-    environment = std::make_unique<rt::EnvironmentMap>(*device.context(), std::move(std::get<rt::RgbaImage>(image)));
-    settings.environmentMap = environment.get();
-  }
   const bool imageBehind = settings.environment == rt::Environment::Map && !scene.background;
-  const rt::RgbaImage behind = imageBehind ? rt::renderBackground(settings) : rt::RgbaImage{};
+  rt::RgbaImage behind;
   ImageFinish finish;
-  finish.behind = imageBehind ? &behind : nullptr;
   finish.background = scene.background.value_or(glm::vec3(0.05f));
   finish.exposure = exposure;
   finish.tone = tone;
@@ -248,14 +232,28 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
   std::string summary;
   int result = kOk;
   try {
-    std::map<const ir::Material*, MaterialProgram> programs;
+    std::vector<MaterialToPrepare> toPrepare;
+    std::set<const ir::Material*> seen;
     for (const SceneDocuments::Found& found : chosen) {
-      if (programs.count(found.material)) continue;
-      auto program = prepareMaterial(*found.pipeline, session, *device.context(), *found.material, glsl::ShaderKind::Raster,
-                                    device.textures());
-      if (!program) return kInvalidDocument;
-      programs.emplace(found.material, std::move(*program));
+      if (seen.insert(found.material).second) toPrepare.push_back({found.pipeline, found.material});
     }
+    auto prepared = prepareMaterials(toPrepare, session, *device.context(), glsl::ShaderKind::Raster, device.textures());
+    if (!prepared) return kInvalidDocument;
+    std::map<const ir::Material*, MaterialProgram> programs;
+    for (size_t i = 0; i < toPrepare.size(); ++i) programs.emplace(toPrepare[i].material, std::move((*prepared)[i]));
+    if (settings.environment == rt::Environment::Map) {
+      std::vector<std::string> warnings;
+      auto image = rt::EnvironmentMap::read(scene.environment.image, device.context()->maxImageDimension2D(), warnings);
+      for (const std::string& w : warnings) std::fprintf(stderr, "warning: environment.file %s\n", w.c_str());
+      if (auto* why = std::get_if<std::string>(&image)) {
+        std::fprintf(stderr, "%s: error: environment.file: %s\n", source.c_str(), why->c_str());
+        return kInvalidDocument;
+      }
+      environment = std::make_unique<rt::EnvironmentMap>(*device.context(), std::move(std::get<rt::RgbaImage>(image)));
+      settings.environmentMap = environment.get();
+    }
+    if (imageBehind) behind = rt::renderBackground(settings);
+    finish.behind = imageBehind ? &behind : nullptr;
     std::vector<rt::SceneObject> objects;
     for (size_t d = 0; d < draws.size(); ++d) {
       const MaterialProgram& program = programs.at(chosen[d].material);
@@ -265,9 +263,12 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
     }
     rt::Renderer renderer(*device.context(), *tables);
     Progress progress(settings.frames);
-    rt::RenderResult image = renderer.renderScene(objects, settings, [&](uint32_t frame) {
-      progress.step(fmt::format("{} objects, frame {}", scene.objects.size(), frame));
-    });
+    rt::RenderResult image = renderer.renderScene(
+        objects, settings,
+        [&](uint32_t frame) { progress.step(fmt::format("{} objects, frame {}", scene.objects.size(), frame)); },
+        [&] {
+          if (int code = checkOutputFormats(options.outputs); code != kOk) throw OutputsRefused{code};
+        });
     size_t bad = 0;
     for (float v : image.image.pixels) bad += std::isfinite(v) ? 0 : 1;
     for (const std::string& output : options.outputs) {
@@ -280,6 +281,8 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
     summary = fmt::format("{}: wrote {} ({}x{}, {} objects, {} materials, {} spp, {:.2f} ms per frame on {})",
                           scene.file.empty() ? scene.look : scene.file.filename().string(), fmt::join(options.outputs, ", "), settings.width, settings.height,
                           scene.objects.size(), programs.size(), settings.frames, image.msPerFrame, device.context()->deviceName());
+  } catch (const OutputsRefused& refused) {
+    return refused.code;
   } catch (const std::bad_alloc&) {
     throw;  // "out of memory", exit 4 (cli/Main.cpp)
   } catch (const std::exception& e) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <system_error>
 #include <vector>
 
 #include <dlfcn.h>
@@ -136,6 +137,18 @@ std::optional<std::string> loadImageModule() {
   std::string error;
   if (!codec(error)) return error;
   return std::nullopt;
+}
+
+ImageModulePreload::ImageModulePreload() {
+  // A thread that cannot be started leaves the load to the first call that needs the module.
+  try {
+    thread_ = std::thread([] { loadImageModule(); });
+  } catch (const std::system_error&) {
+  }
+}
+
+ImageModulePreload::~ImageModulePreload() {
+  if (thread_.joinable()) thread_.join();
 }
 
 std::optional<std::string> checkImageFormat(const std::filesystem::path& path) {

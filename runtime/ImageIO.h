@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <thread>
 #include <variant>
 #include <utility>
 #include <vector>
@@ -25,6 +26,10 @@ struct RgbaImage {
   /// Read from a file of 8 bits per channel (readImage): 8 bits, sRGB-encoded where the read
   /// decoded sRGB, hold its values, so a texture of it needs a quarter of the memory of floats.
   bool eightBit = false;
+  /// Instead of `pixels` (then empty), when the read was asked for them (ImageReadOptions::
+  /// eightBitTexels): the file's own 8-bit code values as RGBA, still sRGB-encoded where the read
+  /// was to decode sRGB (the texture's format decodes them).
+  std::vector<uint8_t> texels{};
   float* at(uint32_t x, uint32_t y) { return &pixels[(size_t{y} * width + x) * 4]; }
   const float* at(uint32_t x, uint32_t y) const { return &pixels[(size_t{y} * width + x) * 4]; }
 };
@@ -38,6 +43,9 @@ struct ImageReadOptions {
   /// Decode sRGB-encoded values to linear (MaterialX "srgb_texture") before any downsampling,
   /// so that texels are averaged as light, not as code values.
   bool srgbDecode = false;
+  /// An 8-bit file read at its size keeps its code values (RgbaImage::texels) rather than
+  /// becoming floats: a texture uploads them as they are, with no conversion either way.
+  bool eightBitTexels = false;
 };
 
 /// Reads any format OpenImageIO reads, as RGBA: one channel becomes grey, two are grey and
@@ -74,6 +82,21 @@ std::optional<std::string> drawText(RgbaImage& image, int x, int y, const std::s
 /// Loads the image module (OpenImageIO) now: nullopt, or why it cannot be loaded. A command
 /// that writes images calls it before long work, so a missing module is known at once.
 std::optional<std::string> loadImageModule();
+
+/// Starts loading the image module on a thread of its own, and joins it when destroyed. The
+/// module's OpenImageIO brings about 260 shared libraries, 0.2-0.4 s of mapping and relocation
+/// that the compilation of a material can hide; the first call that needs the module (any of
+/// the functions above and below) waits for the thread instead of loading it again.
+class ImageModulePreload {
+ public:
+  ImageModulePreload();
+  ~ImageModulePreload();
+  ImageModulePreload(const ImageModulePreload&) = delete;
+  ImageModulePreload& operator=(const ImageModulePreload&) = delete;
+
+ private:
+  std::thread thread_;
+};
 
 /// Whether images can be written in the format of `path`'s extension: nullopt, or why not (no
 /// extension, an unknown format, a format OpenImageIO cannot write to memory), listing the

@@ -85,7 +85,27 @@ std::variant<RgbaImage, std::string> read(const std::filesystem::path& path, con
   image.width = static_cast<uint32_t>((width + k - 1) / k);
   image.height = static_cast<uint32_t>((height + k - 1) / k);
   image.pixels.assign(size_t{image.width} * image.height * 4, 0.0f);
-  if (k == 1) {
+  if (k == 1 && options.eightBitTexels && spec.format == OIIO::TypeDesc::UINT8) {
+    // The code values as they are, straight into the RGBA layout (x stride of 4 bytes), then
+    // widened in place as toRgba does; no sRGB decoding (the texture's format does it).
+    image.pixels.clear();
+    image.pixels.shrink_to_fit();
+    image.texels.assign(size_t{image.width} * image.height * 4, 0);
+    const int read = std::min(channels, 4);
+    if (!input->read_image(0, 0, 0, read, OIIO::TypeDesc::UINT8, image.texels.data(), 4)) {
+      return fmt::format("cannot read image '{}': {}", name, input->geterror());
+    }
+    for (size_t i = 0; i < size_t{image.width} * image.height; ++i) {
+      uint8_t* p = &image.texels[i * 4];
+      if (read <= 2) {
+        const uint8_t grey = p[0], alpha = read == 2 ? p[1] : 255;
+        p[0] = p[1] = p[2] = grey;
+        p[3] = alpha;
+      } else if (read == 3) {
+        p[3] = 255;
+      }
+    }
+  } else if (k == 1) {
     // Straight into the RGBA layout (x stride of 4 floats), then widened in place.
     const int read = std::min(channels, 4);
     if (!input->read_image(0, 0, 0, read, OIIO::TypeDesc::FLOAT, image.pixels.data(), 4 * sizeof(float))) {

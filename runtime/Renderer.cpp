@@ -250,12 +250,15 @@ Renderer::~Renderer() = default;
 
 RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resources,
                               const glsl::MaterialInterface& material, const std::vector<uint32_t>& fragmentSpirv,
-                              const RenderSettings& s, const std::function<void(uint32_t)>& progress) {
-  return renderScene({SceneObject{&mesh, s.objectToWorld, &resources, &material, &fragmentSpirv}}, s, progress);
+                              const RenderSettings& s, const std::function<void(uint32_t)>& progress,
+                              const std::function<void()>& beforeFrames) {
+  return renderScene({SceneObject{&mesh, s.objectToWorld, &resources, &material, &fragmentSpirv}}, s, progress,
+                     beforeFrames);
 }
 
 RenderResult Renderer::renderScene(const std::vector<SceneObject>& objects, const RenderSettings& s,
-                                   const std::function<void(uint32_t)>& progress) {
+                                   const std::function<void(uint32_t)>& progress,
+                                   const std::function<void()>& beforeFrames) {
   if (s.environment == Environment::Map && !s.environmentMap) {
     throw std::logic_error("Renderer::renderScene: Environment::Map without an environment image");
   }
@@ -330,7 +333,7 @@ RenderResult Renderer::renderScene(const std::vector<SceneObject>& objects, cons
     };
     items.push_back(std::move(item));
   }
-  return drawItems(items, s, progress);
+  return drawItems(items, s, progress, beforeFrames);
 }
 
 RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& vertexSpirv,
@@ -343,7 +346,8 @@ RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& verte
 }
 
 RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const RenderSettings& s,
-                                 const std::function<void(uint32_t)>& progress) {
+                                 const std::function<void(uint32_t)>& progress,
+                                 const std::function<void()>& beforeFrames) {
   VkDevice device = context_.device();
   Frame f(context_);
   f.color = context_.createImage(s.width, s.height, VK_FORMAT_R32G32B32A32_SFLOAT,
@@ -396,24 +400,31 @@ RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const Rende
   // thread (LLVM, up to seconds for a large material), and vkCreateGraphicsPipelines may be
   // called from several threads at once (Vulkan 1.3, s. 3.6 "Threading Behavior": only a
   // pipeline cache, none here, needs external synchronisation). Each thread takes the next
-  // item; the first failure is rethrown once all have stopped.
+  // pipeline; the first failure is rethrown once all have stopped. The shading pipelines come
+  // first, the depth pipelines (a vertex shader only, quick) after: so that one material's two
+  // are created side by side, and a long shading pipeline does not start last.
+  const size_t jobs = 2 * items.size();
   std::atomic<size_t> next{0};
-  std::vector<std::exception_ptr> failures(items.size());
+  std::vector<std::exception_ptr> failures(jobs);
   auto createPipelines = [&] {
-    for (size_t i = next++; i < items.size(); i = next++) {
+    for (size_t j = next++; j < jobs; j = next++) {
       try {
+        const size_t i = j % items.size();  // items is not empty here: jobs > j >= 0
         ItemObjects& o = f.items[i];
         VkShaderModule vertex = modules[2 * i]->get(), fragment = modules[2 * i + 1]->get();
-        o.depthPipeline = createPipeline(device, f.renderPass, o.layout, vertex, VK_NULL_HANDLE, nullptr, items[i].inputs,
-                                         s.width, s.height);
-        o.shadePipeline = createPipeline(device, f.renderPass, o.layout, vertex, fragment, &specialization, items[i].inputs,
-                                         s.width, s.height);
+        if (j < items.size()) {
+          o.shadePipeline = createPipeline(device, f.renderPass, o.layout, vertex, fragment, &specialization, items[i].inputs,
+                                           s.width, s.height);
+        } else {
+          o.depthPipeline = createPipeline(device, f.renderPass, o.layout, vertex, VK_NULL_HANDLE, nullptr, items[i].inputs,
+                                           s.width, s.height);
+        }
       } catch (...) {
-        failures[i] = std::current_exception();
+        failures[j] = std::current_exception();
       }
     }
   };
-  const size_t threads = std::min<size_t>(items.size(), std::max(1u, std::thread::hardware_concurrency()));
+  const size_t threads = std::min<size_t>(jobs, std::max(1u, std::thread::hardware_concurrency()));
   std::vector<std::thread> workers;
   for (size_t t = 1; t < threads; ++t) workers.emplace_back(createPipelines);
   createPipelines();
@@ -422,6 +433,7 @@ RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const Rende
     if (failure) std::rethrow_exception(failure);
   }
   modules.clear();
+  if (beforeFrames) beforeFrames();
 
   context_.submit([&](VkCommandBuffer cmd) {
     VulkanContext::transition(cmd, f.color.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,

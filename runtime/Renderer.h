@@ -123,16 +123,20 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   /// Renders `mesh` with a material's fragment shader (glsl::ShaderKind::Raster). `progress`,
-  /// when given, is called after each frame with the number done.
+  /// when given, is called after each frame with the number done; `beforeFrames` once the
+  /// pipelines exist, before the first frame: a caller's last check (it may throw to stop the
+  /// render), which runs after the pipelines' compilation rather than before it.
   RenderResult render(const Mesh& mesh, const MaterialResources& resources, const glsl::MaterialInterface& material,
                       const std::vector<uint32_t>& fragmentSpirv, const RenderSettings& settings,
-                      const std::function<void(uint32_t)>& progress = {});
+                      const std::function<void(uint32_t)>& progress = {},
+                      const std::function<void()>& beforeFrames = {});
 
   /// Renders several objects in one image: each frame draws every object's depth, then shades
   /// each where it is the nearest. The settings' objectToWorld is not used (each object has its
   /// own). Where two objects have exactly the same depth, both are shaded and added.
   RenderResult renderScene(const std::vector<SceneObject>& objects, const RenderSettings& settings,
-                           const std::function<void(uint32_t)>& progress = {});
+                           const std::function<void(uint32_t)>& progress = {},
+                           const std::function<void()>& beforeFrames = {});
 
   /// Renders `mesh` with any vertex and fragment shader pair (for instance another generator's,
   /// whose resource interface the caller found by reflection): the same passes, accumulation
@@ -147,7 +151,7 @@ class Renderer {
  private:
   /// The passes, accumulation and timing of every render.
   RenderResult drawItems(const std::vector<DrawItem>& items, const RenderSettings& settings,
-                         const std::function<void(uint32_t)>& progress);
+                         const std::function<void(uint32_t)>& progress, const std::function<void()>& beforeFrames = {});
 
   VulkanContext& context_;
   const AlbedoTables& tables_;

@@ -23,9 +23,28 @@ std::vector<uint8_t> eightBitTexels(const RgbaImage& pixels, bool srgb) {
   return texels;
 }
 
+std::vector<float> floatTexels(const std::vector<uint8_t>& texels, bool srgb) {
+  std::vector<float> pixels(texels.size());
+  for (size_t i = 0; i < texels.size(); ++i) {
+    const float v = float(texels[i]) / 255.0f;
+    pixels[i] = srgb && i % 4 != 3 ? srgbToLinear(v) : v;
+  }
+  return pixels;
+}
+
 Image uploadTexture(VulkanContext& context, const RgbaImage& pixels, bool srgb) {
   const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   const VkFormat eightBit = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
+  if (!pixels.texels.empty()) {
+    Image image = context.createImage(pixels.width, pixels.height,
+                                      context.canSampleLinear(eightBit) ? eightBit : VK_FORMAT_R32G32B32A32_SFLOAT, usage);
+    if (image.format == eightBit) {
+      context.upload(image, pixels.texels.data(), 4);
+    } else {
+      context.upload(image, floatTexels(pixels.texels, srgb).data());
+    }
+    return image;
+  }
   if (pixels.eightBit && context.canSampleLinear(eightBit)) {
     const std::vector<uint8_t> texels = eightBitTexels(pixels, srgb);
     Image image = context.createImage(pixels.width, pixels.height, eightBit, usage);
@@ -58,6 +77,7 @@ std::shared_ptr<const Texture> TextureCache::get(const std::filesystem::path& pa
   ImageReadOptions options;
   options.maxDimension = context_.maxImageDimension2D();
   options.srgbDecode = srgbDecode;
+  options.eightBitTexels = true;
   std::vector<std::string> warnings;
   auto read = readImage(path, options, &warnings);
   std::string error;

@@ -68,8 +68,13 @@ class TextureCache {
 /// (alpha stays linear).
 std::vector<uint8_t> eightBitTexels(const RgbaImage& pixels, bool srgb);
 
-/// The device image of `pixels`: 8 bits per channel when they came from an 8-bit file and the
-/// device samples such images (sRGB-encoded when `srgb`), otherwise 32-bit floats.
+/// RGBA floats of 8-bit texels, decoded from sRGB when `srgb` (alpha stays linear): for a
+/// device that cannot sample an 8-bit format.
+std::vector<float> floatTexels(const std::vector<uint8_t>& texels, bool srgb);
+
+/// The device image of `pixels`: 8 bits per channel when they came from an 8-bit file (as its
+/// code values, RgbaImage::texels, or as floats holding them) and the device samples such
+/// images (sRGB-encoded when `srgb`), otherwise 32-bit floats.
 Image uploadTexture(VulkanContext& context, const RgbaImage& pixels, bool srgb);
 
 }  // namespace mxc::rt

@@ -70,5 +70,30 @@ TEST(TextureCache, EightBitSrgbCodesRoundTrip) {
   }
 }
 
+// An 8-bit file read as its code values (what a texture uploads) holds what the float read
+// holds: the same codes, and, decoded, the same linear values.
+TEST(TextureCache, EightBitTexelsAreTheFloatReadsCodes) {
+  RgbaImage pixels{5, 1, {}};
+  for (float v : {0.0f, 0.1f, 0.5f, 0.73f, 1.0f}) pixels.pixels.insert(pixels.pixels.end(), {v, 1.0f - v, v * v, 1.0f});
+  const fs::path png = tempImage("codes.png");
+  ASSERT_FALSE(writeImage(png, pixels, ToneMapping::None).has_value());
+  for (bool srgb : {false, true}) {
+    ImageReadOptions options;
+    options.srgbDecode = srgb;
+    auto floats = readImage(png, options);
+    options.eightBitTexels = true;
+    auto codes = readImage(png, options);
+    ASSERT_TRUE(std::holds_alternative<RgbaImage>(floats) && std::holds_alternative<RgbaImage>(codes));
+    const RgbaImage& f = std::get<RgbaImage>(floats);
+    const RgbaImage& c = std::get<RgbaImage>(codes);
+    EXPECT_TRUE(c.pixels.empty());
+    ASSERT_EQ(c.texels.size(), f.pixels.size());
+    EXPECT_EQ(c.texels, eightBitTexels(f, srgb));
+    const std::vector<float> decoded = floatTexels(c.texels, srgb);
+    for (size_t i = 0; i < decoded.size(); ++i) EXPECT_NEAR(decoded[i], f.pixels[i], 1e-6f) << i << (srgb ? " srgb" : "");
+  }
+  fs::remove(png);
+}
+
 }  // namespace
 }  // namespace mxc::rt
