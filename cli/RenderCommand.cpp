@@ -1,9 +1,11 @@
 #include "cli/RenderCommand.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -268,29 +270,28 @@ int runRender(const RenderOptions& options) {
     }
     if (imageBackground) behind = rt::renderBackground(settings);
     finish.behind = imageBackground ? &behind : nullptr;
-    bool checked = false;
     auto checkOutputs = [&] {
-      if (checked) return;
-      checked = true;
       if (int code = checkOutputFormats(options.outputs); code != kOk) throw OutputsRefused{code};
     };
     rt::Renderer renderer(*device.context(), *tables);
     // One bar over every frame of every material: its estimate covers the whole command.
     Progress progress(size_t{settings.frames} * programs.size());
-    for (size_t m = 0; m < programs.size(); ++m) {
+    // Each material alone in its own image; every material's pipelines compile together first.
+    std::vector<rt::SceneObject> objects;
+    for (const MaterialProgram& program : programs) {
+      objects.push_back({&mesh.mesh, settings.objectToWorld, program.resources.get(), &program.shader.interface,
+                         &program.spirv});
+    }
+    // Each image is staged as soon as it is done (one held at a time); an output that cannot be
+    // staged stops the render.
+    auto finished = [&](size_t m, rt::RenderResult&& image) {
       const ir::Material& material = pipeline.materials()[m];
-      const MaterialProgram& program = programs[m];
-      rt::RenderResult image = renderer.render(mesh.mesh, *program.resources, program.shader.interface, program.spirv,
-                                               settings, [&](uint32_t frame) {
-                                                 progress.step(several ? fmt::format("{} ({}/{}) frame {}", material.name, m + 1, programs.size(), frame)
-                                                                     : fmt::format("{} frame {}", material.name, frame));
-                                               }, checkOutputs);
       size_t bad = 0;
       for (float v : image.image.pixels) bad += std::isfinite(v) ? 0 : 1;
       std::vector<std::string> written;
       for (const std::string& output : options.outputs) {
         const auto path = perMaterialPath(output, material.name, several);
-        if (printError(stageRender(path, image.image, finish, outputs))) return kOutputFailed;
+        if (printError(stageRender(path, image.image, finish, outputs))) throw OutputsRefused{kOutputFailed};
         written.push_back(path.string());
       }
       if (bad > 0) {
@@ -301,6 +302,21 @@ int runRender(const RenderOptions& options) {
       wrote.push_back(fmt::format("{}: wrote {} ({}x{}, {} spp, {:.2f} ms per frame on {})", material.name,
                                   fmt::join(written, ", "), settings.width, settings.height, settings.frames,
                                   image.msPerFrame, device.context()->deviceName()));
+    };
+    // A few materials' pipelines at a time: enough to keep every core compiling, few enough that
+    // a document of hundreds of materials does not hold hundreds of pipelines (tens of MB each).
+    const size_t batch = 2 * size_t{std::max(1u, std::thread::hardware_concurrency())};
+    for (size_t first = 0; first < objects.size(); first += batch) {
+      const std::vector<rt::SceneObject> part(objects.begin() + std::ptrdiff_t(first),
+                                              objects.begin() + std::ptrdiff_t(std::min(first + batch, objects.size())));
+      renderer.renderEach(
+          part, settings, [&](size_t k, rt::RenderResult&& image) { finished(first + k, std::move(image)); },
+          [&](size_t k, uint32_t frame) {
+            const std::string& name = pipeline.materials()[first + k].name;
+            progress.step(several ? fmt::format("{} ({}/{}) frame {}", name, first + k + 1, programs.size(), frame)
+                                  : fmt::format("{} frame {}", name, frame));
+          },
+          checkOutputs);
     }
   } catch (const OutputsRefused& refused) {
     return refused.code;

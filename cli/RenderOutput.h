@@ -35,9 +35,10 @@ rt::ImageAttributes renderAttributes(const std::string& input, uint32_t spp, flo
 /// (kOutputFailed without the module, kUsage for a format).
 int checkOutputFormats(const std::vector<std::string>& outputs);
 
-/// What a render's last check before its frames throws when checkOutputFormats refuses (the
-/// renderer's `beforeFrames`, which runs once the pipelines are compiled, while the image module
-/// loads): the command's exit code.
+/// What a render's callbacks throw to stop it when an output is refused: checkOutputFormats in
+/// the renderer's `beforeFrames` (which runs once the pipelines are compiled, while the image
+/// module loads), or an image that cannot be staged. The command's exit code (the reason is
+/// printed).
 struct OutputsRefused {
   int code;
 };

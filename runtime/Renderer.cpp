@@ -259,6 +259,29 @@ RenderResult Renderer::render(const Mesh& mesh, const MaterialResources& resourc
 RenderResult Renderer::renderScene(const std::vector<SceneObject>& objects, const RenderSettings& s,
                                    const std::function<void(uint32_t)>& progress,
                                    const std::function<void()>& beforeFrames) {
+  std::vector<size_t> all(objects.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = i;
+  auto frameDone = [&](size_t, uint32_t drawn) {
+    if (progress) progress(drawn);
+  };
+  RenderResult image;
+  renderObjects(objects, {all}, s, [&](size_t, RenderResult&& done) { image = std::move(done); }, frameDone, beforeFrames);
+  return image;
+}
+
+void Renderer::renderEach(const std::vector<SceneObject>& objects, const RenderSettings& s,
+                          const std::function<void(size_t, RenderResult&&)>& finished,
+                          const std::function<void(size_t, uint32_t)>& progress,
+                          const std::function<void()>& beforeFrames) {
+  std::vector<std::vector<size_t>> each;
+  for (size_t i = 0; i < objects.size(); ++i) each.push_back({i});
+  renderObjects(objects, each, s, finished, progress, beforeFrames);
+}
+
+void Renderer::renderObjects(const std::vector<SceneObject>& objects, const std::vector<std::vector<size_t>>& groups,
+                             const RenderSettings& s, const std::function<void(size_t, RenderResult&&)>& finished,
+                             const std::function<void(size_t, uint32_t)>& progress,
+                             const std::function<void()>& beforeFrames) {
   if (s.environment == Environment::Map && !s.environmentMap) {
     throw std::logic_error("Renderer::renderScene: Environment::Map without an environment image");
   }
@@ -333,7 +356,7 @@ RenderResult Renderer::renderScene(const std::vector<SceneObject>& objects, cons
     };
     items.push_back(std::move(item));
   }
-  return drawItems(items, s, progress, beforeFrames);
+  drawItems(items, groups, s, finished, progress, beforeFrames);
 }
 
 RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& vertexSpirv,
@@ -342,12 +365,23 @@ RenderResult Renderer::draw(const Mesh& mesh, const std::vector<uint32_t>& verte
                             const std::function<void(const FrameView&)>& beforeFrame,
                             const std::function<void(uint32_t)>& progress) {
   DrawItem item{&mesh, &vertexSpirv, &fragmentSpirv, inputs, sets, s.objectToWorld, beforeFrame};
-  return drawItems({item}, s, progress);
+  auto frameDone = [&](size_t, uint32_t drawn) {
+    if (progress) progress(drawn);
+  };
+  RenderResult image;
+  drawItems({item}, {{0}}, s, [&](size_t, RenderResult&& done) { image = std::move(done); }, frameDone);
+  return image;
 }
 
-RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const RenderSettings& s,
-                                 const std::function<void(uint32_t)>& progress,
-                                 const std::function<void()>& beforeFrames) {
+void Renderer::drawItems(const std::vector<DrawItem>& items, const std::vector<std::vector<size_t>>& groups,
+                         const RenderSettings& s, const std::function<void(size_t, RenderResult&&)>& finished,
+                         const std::function<void(size_t, uint32_t)>& progress,
+                         const std::function<void()>& beforeFrames) {
+  for (const std::vector<size_t>& group : groups) {
+    for (size_t i : group) {
+      if (i >= items.size()) throw std::logic_error("Renderer::drawItems: a group names an item that does not exist");
+    }
+  }
   VkDevice device = context_.device();
   Frame f(context_);
   f.color = context_.createImage(s.width, s.height, VK_FORMAT_R32G32B32A32_SFLOAT,
@@ -435,86 +469,92 @@ RenderResult Renderer::drawItems(const std::vector<DrawItem>& items, const Rende
   modules.clear();
   if (beforeFrames) beforeFrames();
 
-  context_.submit([&](VkCommandBuffer cmd) {
-    VulkanContext::transition(cmd, f.color.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-                              VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                              VK_PIPELINE_STAGE_TRANSFER_BIT);
-    VkClearColorValue zero{};
-    VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdClearColorImage(cmd, f.color.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
-    VulkanContext::transition(cmd, f.color.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                              VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
-                              VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-                              VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT);
-  });
-
   FrameView frameView;
   frameView.viewToClip = viewToClip(s.camera, s.width, s.height);
   frameView.worldToView = worldToView(s.camera);
   frameView.eye = s.camera.eye;
 
-  RenderResult result;
-  double totalMs = 0.0;
-  const uint32_t frames = std::max(s.frames, 1u);
-  for (uint32_t drawn = 0; drawn < frames; ++drawn) {
-    const uint32_t frame = s.firstFrame + drawn;
-    // Sub-pixel offset in [-0.5, 0.5) pixels, in normalised device units (2 / size per pixel);
-    // frame 0 samples pixel centres.
-    const float jx = frame == 0 ? 0.0f : halton(frame, 2) - 0.5f;
-    const float jy = frame == 0 ? 0.0f : halton(frame, 3) - 0.5f;
-    // The jitter is a translation in clip space, applied before the perspective divide
-    // (x_ndc += j needs x_clip += j w): one matrix for every vertex shader.
-    frameView.jitter = glm::vec2(2.0f * jx / float(s.width), 2.0f * jy / float(s.height));
-    glm::mat4 jitter(1.0f);
-    jitter[3][0] = frameView.jitter.x;
-    jitter[3][1] = frameView.jitter.y;
-    frameView.worldToClip = jitter * frameView.viewToClip * frameView.worldToView;
-    frameView.frame = frame;
-    for (const DrawItem& item : items) {
-      frameView.objectToWorld = item.objectToWorld;
-      // Normals by the inverse transpose; a singular transform (a zero scale) leaves them as
-      // they are rather than dividing by its zero determinant.
-      const float det = glm::determinant(glm::mat3(item.objectToWorld));
-      frameView.normalToWorld = std::abs(det) > 1e-30f ? glm::transpose(glm::inverse(item.objectToWorld)) : glm::mat4(1.0f);
-      item.beforeFrame(frameView);
-    }
-    const auto start = std::chrono::steady_clock::now();
+  // One image per group, drawn alone: the color image is cleared for each.
+  for (size_t g = 0; g < groups.size(); ++g) {
+    const std::vector<size_t>& group = groups[g];
     context_.submit([&](VkCommandBuffer cmd) {
-      VkClearValue clears[2]{};
-      clears[1].depthStencil = {1.0f, 0};
-      VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-      begin.renderPass = f.renderPass;
-      begin.framebuffer = f.framebuffer;
-      begin.renderArea = {{0, 0}, {s.width, s.height}};
-      begin.clearValueCount = 2;
-      begin.pClearValues = clears;
-      vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-      // Every object's depth first, then every object shaded where it is the nearest (EQUAL).
-      for (bool shading : {false, true}) {
-        for (const ItemObjects& o : f.items) {
-          vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, o.layout, 0,
-                                  static_cast<uint32_t>(o.descriptorSets.size()), o.descriptorSets.data(), 0, nullptr);
-          VkDeviceSize offset = 0;
-          vkCmdBindVertexBuffers(cmd, 0, 1, &o.vertices.buffer, &offset);
-          vkCmdBindIndexBuffer(cmd, o.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
-          vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shading ? o.shadePipeline : o.depthPipeline);
-          vkCmdDrawIndexed(cmd, o.indexCount, 1, o.firstIndex, 0, 0);
-        }
-      }
-      vkCmdEndRenderPass(cmd);
+      VulkanContext::transition(cmd, f.color.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+                                VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                                VK_PIPELINE_STAGE_TRANSFER_BIT);
+      VkClearColorValue zero{};
+      VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+      vkCmdClearColorImage(cmd, f.color.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
+      VulkanContext::transition(cmd, f.color.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                                VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT);
     });
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (drawn > 0 || frames == 1) totalMs += ms;  // the first frame also warms caches up
-    if (progress) progress(drawn + 1);
+
+    RenderResult result;
+    double totalMs = 0.0;
+    const uint32_t frames = std::max(s.frames, 1u);
+    for (uint32_t drawn = 0; drawn < frames; ++drawn) {
+      const uint32_t frame = s.firstFrame + drawn;
+      // Sub-pixel offset in [-0.5, 0.5) pixels, in normalised device units (2 / size per pixel);
+      // frame 0 samples pixel centres.
+      const float jx = frame == 0 ? 0.0f : halton(frame, 2) - 0.5f;
+      const float jy = frame == 0 ? 0.0f : halton(frame, 3) - 0.5f;
+      // The jitter is a translation in clip space, applied before the perspective divide
+      // (x_ndc += j needs x_clip += j w): one matrix for every vertex shader.
+      frameView.jitter = glm::vec2(2.0f * jx / float(s.width), 2.0f * jy / float(s.height));
+      glm::mat4 jitter(1.0f);
+      jitter[3][0] = frameView.jitter.x;
+      jitter[3][1] = frameView.jitter.y;
+      frameView.worldToClip = jitter * frameView.viewToClip * frameView.worldToView;
+      frameView.frame = frame;
+      for (size_t i : group) {
+        const DrawItem& item = items[i];
+        frameView.objectToWorld = item.objectToWorld;
+        // Normals by the inverse transpose; a singular transform (a zero scale) leaves them as
+        // they are rather than dividing by its zero determinant.
+        const float det = glm::determinant(glm::mat3(item.objectToWorld));
+        frameView.normalToWorld = std::abs(det) > 1e-30f ? glm::transpose(glm::inverse(item.objectToWorld)) : glm::mat4(1.0f);
+        item.beforeFrame(frameView);
+      }
+      const auto start = std::chrono::steady_clock::now();
+      context_.submit([&](VkCommandBuffer cmd) {
+        VkClearValue clears[2]{};
+        clears[1].depthStencil = {1.0f, 0};
+        VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+        begin.renderPass = f.renderPass;
+        begin.framebuffer = f.framebuffer;
+        begin.renderArea = {{0, 0}, {s.width, s.height}};
+        begin.clearValueCount = 2;
+        begin.pClearValues = clears;
+        vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+        // Every object's depth first, then every object shaded where it is the nearest (EQUAL).
+        for (bool shading : {false, true}) {
+          for (size_t i : group) {
+            const ItemObjects& o = f.items[i];
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, o.layout, 0,
+                                    static_cast<uint32_t>(o.descriptorSets.size()), o.descriptorSets.data(), 0, nullptr);
+            VkDeviceSize offset = 0;
+            vkCmdBindVertexBuffers(cmd, 0, 1, &o.vertices.buffer, &offset);
+            vkCmdBindIndexBuffer(cmd, o.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, shading ? o.shadePipeline : o.depthPipeline);
+            vkCmdDrawIndexed(cmd, o.indexCount, 1, o.firstIndex, 0, 0);
+          }
+        }
+        vkCmdEndRenderPass(cmd);
+      });
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      if (drawn > 0 || frames == 1) totalMs += ms;  // the first frame also warms caches up
+      if (progress) progress(g, drawn + 1);
+    }
+    result.msPerFrame = totalMs / double(frames > 1 ? frames - 1 : 1);
+    std::vector<float> sum = context_.download(f.color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    result.image.width = s.width;
+    result.image.height = s.height;
+    result.image.pixels.resize(sum.size());
+    const float inv = 1.0f / float(frames);  // frames >= 1
+    for (size_t i = 0; i < sum.size(); ++i) result.image.pixels[i] = sum[i] * inv;
+    finished(g, std::move(result));
   }
-  result.msPerFrame = totalMs / double(frames > 1 ? frames - 1 : 1);
-  std::vector<float> sum = context_.download(f.color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-  result.image.width = s.width;
-  result.image.height = s.height;
-  result.image.pixels.resize(sum.size());
-  const float inv = 1.0f / float(frames);  // frames >= 1
-  for (size_t i = 0; i < sum.size(); ++i) result.image.pixels[i] = sum[i] * inv;
-  return result;
 }
 
 }  // namespace mxc::rt

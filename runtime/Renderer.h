@@ -138,6 +138,16 @@ class Renderer {
                            const std::function<void(uint32_t)>& progress = {},
                            const std::function<void()>& beforeFrames = {});
 
+  /// Renders each object alone, each in an image of its own, in order: render() of each, except
+  /// that every pipeline is compiled before the first frame, several at a time (a document's
+  /// materials, one image each). Each image goes to `finished` (with the object's index) as soon
+  /// as it is done, so that only one is held at a time; `progress` is called after each frame
+  /// with the object's index and the number of its frames done.
+  void renderEach(const std::vector<SceneObject>& objects, const RenderSettings& settings,
+                  const std::function<void(size_t, RenderResult&&)>& finished,
+                  const std::function<void(size_t, uint32_t)>& progress = {},
+                  const std::function<void()>& beforeFrames = {});
+
   /// Renders `mesh` with any vertex and fragment shader pair (for instance another generator's,
   /// whose resource interface the caller found by reflection): the same passes, accumulation
   /// and timing as render(). `sets` are bound as sets 0, 1, ...; `beforeFrame` updates the
@@ -149,9 +159,16 @@ class Renderer {
                     const std::function<void(uint32_t)>& progress = {});
 
  private:
-  /// The passes, accumulation and timing of every render.
-  RenderResult drawItems(const std::vector<DrawItem>& items, const RenderSettings& settings,
-                         const std::function<void(uint32_t)>& progress, const std::function<void()>& beforeFrames = {});
+  /// The passes, accumulation and timing of every render: one image per group of items (each
+  /// group drawn alone, in order, and handed to `finished` when done), after every item's
+  /// pipelines are created. `progress` gets the group's index and its frames done.
+  void drawItems(const std::vector<DrawItem>& items, const std::vector<std::vector<size_t>>& groups,
+                 const RenderSettings& settings, const std::function<void(size_t, RenderResult&&)>& finished,
+                 const std::function<void(size_t, uint32_t)>& progress, const std::function<void()>& beforeFrames = {});
+  /// The view blocks and sets of `objects`, then drawItems.
+  void renderObjects(const std::vector<SceneObject>& objects, const std::vector<std::vector<size_t>>& groups,
+                     const RenderSettings& settings, const std::function<void(size_t, RenderResult&&)>& finished,
+                     const std::function<void(size_t, uint32_t)>& progress, const std::function<void()>& beforeFrames);
 
   VulkanContext& context_;
   const AlbedoTables& tables_;

@@ -1,5 +1,6 @@
-// The raster renderer (runtime/Renderer): every corpus document renders to a finite image, and
-// a white Lambertian sphere disappears into the white furnace.
+// The raster renderer (runtime/Renderer): every corpus document renders to a finite image, a
+// white Lambertian sphere disappears into the white furnace, and renderEach gives each object
+// the image render() gives it alone.
 
 #include <gtest/gtest.h>
 
@@ -69,6 +70,59 @@ TEST(Renderer, WhiteLambertianVanishesInTheWhiteFurnace) {
   // The sphere (radius 1 at distance 3.4, 45 degree field of view) covers about 37% of the frame.
   EXPECT_GT(covered, 40u * 40u / 4);
   EXPECT_LT(covered, 40u * 40u / 2);
+}
+
+// renderEach compiles every pipeline first, then draws each object alone into the one colour
+// image, cleared between them: each image is what render() makes of that object, to the bit
+// (the same frames, jitter and random numbers), and the progress counts each object's frames.
+TEST(Renderer, RenderEachMatchesRenderingEachAlone) {
+  Context context;
+  std::vector<ir::Material> materials = lowerText(
+      context, mtlx(R"(  <open_pbr_surface name="a" type="surfaceshader"><input name="base_metalness" type="float" value="1" /></open_pbr_surface>
+  <surfacematerial name="A" type="material"><input name="surfaceshader" type="surfaceshader" nodename="a" /></surfacematerial>
+  <open_pbr_surface name="b" type="surfaceshader"><input name="base_color" type="color3" value="0.9, 0.1, 0.1" /></open_pbr_surface>
+  <surfacematerial name="B" type="material"><input name="surfaceshader" type="surfaceshader" nodename="b" /></surfacematerial>
+  <open_pbr_surface name="c" type="surfaceshader"><input name="transmission_weight" type="float" value="1" /></open_pbr_surface>
+  <surfacematerial name="C" type="material"><input name="surfaceshader" type="surfaceshader" nodename="c" /></surfacematerial>
+)"));
+  ASSERT_EQ(materials.size(), 3u) << context.diagnostics.format();
+  rt::RenderSettings settings;
+  settings.width = settings.height = 32;
+  settings.frames = 3;
+  settings.lights.push_back({rt::Light::Kind::Directional, glm::normalize(glm::vec3(-1, 1, 1)), glm::vec3(1.0f), 2.0f});
+  std::vector<Prepared> prepared;
+  for (const ir::Material& m : materials) prepared.push_back(prepare(m, glsl::ShaderKind::Raster));
+  const rt::Mesh sphere = rt::makeSphere();
+  std::vector<rt::SceneObject> objects;
+  for (const Prepared& p : prepared) {
+    ASSERT_TRUE(p.ok());
+    objects.push_back({&sphere, settings.objectToWorld, p.resources.get(), &p.shader.interface, &p.words});
+  }
+  rt::Renderer renderer(Device::get().context, Device::get().tables);
+  // Progress calls as (object, frames done); an image's arrival as (object, 0), after its frames.
+  std::vector<std::pair<size_t, uint32_t>> calls;
+  int checks = 0;
+  std::vector<rt::RenderResult> each(objects.size());
+  renderer.renderEach(
+      objects, settings,
+      [&](size_t object, rt::RenderResult&& image) {
+        calls.emplace_back(object, 0);
+        each[object] = std::move(image);
+      },
+      [&](size_t object, uint32_t frames) { calls.emplace_back(object, frames); }, [&] { ++checks; });
+  EXPECT_EQ(checks, 1);
+  ASSERT_EQ(calls.size(), 12u);
+  for (size_t k = 0; k < calls.size(); ++k) {
+    EXPECT_EQ(calls[k], std::make_pair(k / 4, uint32_t((k % 4 + 1) % 4))) << k;
+  }
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const rt::RgbaImage alone = renderer.render(sphere, *prepared[i].resources, prepared[i].shader.interface,
+                                                prepared[i].words, settings).image;
+    EXPECT_EQ(each[i].image.pixels, alone.pixels) << materials[i].name;
+  }
+  // The three differ (each image is its own material's, not the last one's or a sum).
+  EXPECT_NE(each[0].image.pixels, each[1].image.pixels);
+  EXPECT_NE(each[1].image.pixels, each[2].image.pixels);
 }
 
 }  // namespace
