@@ -84,12 +84,11 @@ std::variant<RgbaImage, std::string> read(const std::filesystem::path& path, con
   image.eightBit = spec.format.size() == 1;  // UINT8 or INT8 channels
   image.width = static_cast<uint32_t>((width + k - 1) / k);
   image.height = static_cast<uint32_t>((height + k - 1) / k);
-  image.pixels.assign(size_t{image.width} * image.height * 4, 0.0f);
-  if (k == 1 && options.eightBitTexels && spec.format == OIIO::TypeDesc::UINT8) {
+  const bool codes = k == 1 && options.eightBitTexels && spec.format == OIIO::TypeDesc::UINT8;
+  if (!codes) image.pixels.assign(size_t{image.width} * image.height * 4, 0.0f);
+  if (codes) {
     // The code values as they are, straight into the RGBA layout (x stride of 4 bytes), then
     // widened in place as toRgba does; no sRGB decoding (the texture's format does it).
-    image.pixels.clear();
-    image.pixels.shrink_to_fit();
     image.texels.assign(size_t{image.width} * image.height * 4, 0);
     const int read = std::min(channels, 4);
     if (!input->read_image(0, 0, 0, read, OIIO::TypeDesc::UINT8, image.texels.data(), 4)) {
