@@ -4,12 +4,11 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
-#include <thread>
 #include <cmath>
 
 #include <fmt/format.h>
+
+#include "compiler/common/Parallel.h"
 
 namespace mxc::cli {
 
@@ -75,30 +74,14 @@ std::optional<std::vector<MaterialProgram>> prepareMaterials(const std::vector<M
     bool ok = false;
   };
   std::vector<Compiled> compiled(materials.size());
-  std::atomic<size_t> next{0};
-  std::vector<std::exception_ptr> failures(materials.size());  // rethrown here, in order
-  auto work = [&] {
-    for (size_t i = next++; i < materials.size(); i = next++) {
-      try {
-        const MaterialToPrepare& m = materials[i];
-        Compiled& c = compiled[i];
-        c.program.shader = m.pipeline->compiler().shader(*m.material, kind);
-        auto words = compileShader(c.program.shader, m.pipeline->compiler().request(), c.diagnostics);
-        c.ok = words.has_value();
-        if (words) c.program.spirv = std::move(*words);
-      } catch (...) {
-        failures[i] = std::current_exception();
-      }
-    }
-  };
-  const size_t threads = std::min<size_t>(materials.size(), std::max(1u, std::thread::hardware_concurrency()));
-  std::vector<std::thread> helpers;
-  for (size_t t = 1; t < threads; ++t) helpers.emplace_back(work);
-  work();
-  for (std::thread& t : helpers) t.join();
-  for (const std::exception_ptr& failure : failures) {
-    if (failure) std::rethrow_exception(failure);
-  }
+  runOnEveryCore(materials.size(), [&](size_t i) {
+    const MaterialToPrepare& m = materials[i];
+    Compiled& c = compiled[i];
+    c.program.shader = m.pipeline->compiler().shader(*m.material, kind);
+    auto words = compileShader(c.program.shader, m.pipeline->compiler().request(), c.diagnostics);
+    c.ok = words.has_value();
+    if (words) c.program.spirv = std::move(*words);
+  });
 
   Diagnostics& diagnostics = session.workspace.diagnostics;
   std::vector<MaterialProgram> programs;

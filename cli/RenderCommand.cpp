@@ -5,9 +5,10 @@
 #include <cstdio>
 #include <optional>
 #include <sstream>
-#include <thread>
 
 #include <fmt/format.h>
+
+#include "compiler/common/Parallel.h"
 
 #include "cli/ExitCode.h"
 #include "cli/Harness.h"
@@ -305,7 +306,7 @@ int runRender(const RenderOptions& options) {
     };
     // A few materials' pipelines at a time: enough to keep every core compiling, few enough that
     // a document of hundreds of materials does not hold hundreds of pipelines (tens of MB each).
-    const size_t batch = 2 * size_t{std::max(1u, std::thread::hardware_concurrency())};
+    const size_t batch = 2 * coreCount();
     for (size_t first = 0; first < objects.size(); first += batch) {
       const std::vector<rt::SceneObject> part(objects.begin() + std::ptrdiff_t(first),
                                               objects.begin() + std::ptrdiff_t(std::min(first + batch, objects.size())));

@@ -1,9 +1,6 @@
 #include "runtime/Renderer.h"
 
-#include <atomic>
 #include <chrono>
-#include <exception>
-#include <thread>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -12,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
+#include "compiler/common/Parallel.h"
 #include "compiler/glsl/Contract.h"
 #include "runtime/Descriptors.h"
 
@@ -433,39 +431,22 @@ void Renderer::drawItems(const std::vector<DrawItem>& items, const std::vector<s
   // The pipelines, several at a time: lavapipe compiles a material's shader on the calling
   // thread (LLVM, up to seconds for a large material), and vkCreateGraphicsPipelines may be
   // called from several threads at once (Vulkan 1.3, s. 3.6 "Threading Behavior": only a
-  // pipeline cache, none here, needs external synchronisation). Each thread takes the next
-  // pipeline; the first failure is rethrown once all have stopped. The shading pipelines come
+  // pipeline cache, none here, needs external synchronisation). One job per pipeline; the
+  // first failure is rethrown once all have stopped (runOnEveryCore). The shading pipelines come
   // first, the depth pipelines (a vertex shader only, quick) after: so that one material's two
   // are created side by side, and a long shading pipeline does not start last.
-  const size_t jobs = 2 * items.size();
-  std::atomic<size_t> next{0};
-  std::vector<std::exception_ptr> failures(jobs);
-  auto createPipelines = [&] {
-    for (size_t j = next++; j < jobs; j = next++) {
-      try {
-        const size_t i = j % items.size();  // items is not empty here: jobs > j >= 0
-        ItemObjects& o = f.items[i];
-        VkShaderModule vertex = modules[2 * i]->get(), fragment = modules[2 * i + 1]->get();
-        if (j < items.size()) {
-          o.shadePipeline = createPipeline(device, f.renderPass, o.layout, vertex, fragment, &specialization, items[i].inputs,
-                                           s.width, s.height);
-        } else {
-          o.depthPipeline = createPipeline(device, f.renderPass, o.layout, vertex, VK_NULL_HANDLE, nullptr, items[i].inputs,
-                                           s.width, s.height);
-        }
-      } catch (...) {
-        failures[j] = std::current_exception();
-      }
+  runOnEveryCore(2 * items.size(), [&](size_t j) {
+    const size_t i = j % items.size();  // items is not empty: there is a job
+    ItemObjects& o = f.items[i];
+    VkShaderModule vertex = modules[2 * i]->get(), fragment = modules[2 * i + 1]->get();
+    if (j < items.size()) {
+      o.shadePipeline = createPipeline(device, f.renderPass, o.layout, vertex, fragment, &specialization, items[i].inputs,
+                                       s.width, s.height);
+    } else {
+      o.depthPipeline = createPipeline(device, f.renderPass, o.layout, vertex, VK_NULL_HANDLE, nullptr, items[i].inputs,
+                                       s.width, s.height);
     }
-  };
-  const size_t threads = std::min<size_t>(jobs, std::max(1u, std::thread::hardware_concurrency()));
-  std::vector<std::thread> workers;
-  for (size_t t = 1; t < threads; ++t) workers.emplace_back(createPipelines);
-  createPipelines();
-  for (std::thread& worker : workers) worker.join();
-  for (const std::exception_ptr& failure : failures) {
-    if (failure) std::rethrow_exception(failure);
-  }
+  });
   modules.clear();
   if (beforeFrames) beforeFrames();
 
