@@ -21,6 +21,7 @@ bool requestInputs(const MaterialOptions& options, CompileRequest& request) {
   request.lowering.parameters = options.parameters;
   request.material = options.material;
   request.accuracy = options.accuracy;
+  request.specialize = !options.noSpecialize;
   if (options.referenceSamples > 0) request.referenceSamples = options.referenceSamples;
   return true;
 }

@@ -21,6 +21,7 @@ struct MaterialOptions {
   std::string material;                 ///< --material NAME: only this one
   Accuracy accuracy = Accuracy::Balanced;  ///< --accuracy TIER
   int referenceSamples = 0;                ///< --reference-samples N (0: the command's default)
+  bool noSpecialize = false;               ///< --no-specialize: the general shader (CompileRequest::specialize)
   LibraryOptions libraries;
 };
 

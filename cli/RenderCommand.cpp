@@ -137,6 +137,7 @@ int runRender(const RenderOptions& options) {
     return kUsage;
   }
   settings.frames = static_cast<uint32_t>(options.spp);
+  settings.specialize = !options.materials.noSpecialize;
   const bool environmentImage = options.environment != "none" && options.environment != "white" &&
                                 options.environment != "sky";
   settings.environment = options.environment == "none"    ? rt::Environment::None

@@ -102,6 +102,7 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
   settings.width = scene.width;
   settings.height = scene.height;
   settings.frames = scene.spp;
+  settings.specialize = !options.materials.noSpecialize;
   const float exposure = scene.exposure;
   const rt::ToneMapping tone = rt::parseToneMapping(scene.toneMapping).value_or(rt::ToneMapping::AcesFit);
   settings.environment = scene.environment.kind;

@@ -6,7 +6,7 @@ namespace mxc::rt {
 
 DescriptorSet::DescriptorSet(VulkanContext& context, const std::vector<VkDescriptorType>& types,
                              VkShaderStageFlags stages)
-    : context_(context), types_(types) {
+    : context_(context), types_(types), stages_(stages) {
   std::vector<VkDescriptorSetLayoutBinding> bindings;
   std::map<VkDescriptorType, uint32_t> counts;
   for (uint32_t i = 0; i < types.size(); ++i) {

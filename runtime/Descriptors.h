@@ -19,11 +19,15 @@ class DescriptorSet {
   void bind(uint32_t binding, const Buffer& buffer);
   void bind(uint32_t binding, const Image& image);
   VkDescriptorSetLayout layout() const { return layout_; }
+  /// What the layout was made of (two sets with equal types and stages have compatible layouts).
+  const std::vector<VkDescriptorType>& types() const { return types_; }
+  VkShaderStageFlags stages() const { return stages_; }
   VkDescriptorSet set() const { return set_; }
 
  private:
   VulkanContext& context_;
   std::vector<VkDescriptorType> types_;
+  VkShaderStageFlags stages_ = 0;
   VkDescriptorSetLayout layout_ = VK_NULL_HANDLE;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

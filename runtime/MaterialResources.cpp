@@ -44,7 +44,7 @@ MaterialResources::MaterialResources(VulkanContext& context, const glsl::Materia
   for (glsl::UniformField& f : material_.parameters) {
     if (f.name == "missing_textures") f.value = {static_cast<float>(missing)};
   }
-  parameters_ = context.createBuffer(material_.parameterBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  parameters_ = context.createBuffer(material_.parameterBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   std::vector<uint8_t> bytes = glsl::packParameters(material_.parameters, material_.parameterBytes);
   std::memcpy(parameters_.mapped, bytes.data(), bytes.size());
 }
@@ -52,8 +52,12 @@ MaterialResources::MaterialResources(VulkanContext& context, const glsl::Materia
 MaterialResources::~MaterialResources() { context_.destroy(parameters_); }
 
 std::vector<VkDescriptorType> MaterialResources::layout(const glsl::MaterialInterface& material) {
+  // The parameters are a read-only storage buffer, not a uniform block: lavapipe (Mesa 22.3)
+  // compiles a shader again at every draw for the values of uniform-block members that decide a
+  // branch ("inlinable uniforms"), and a parameter (`--param`, every input of a shader compiled
+  // with --no-specialize) decides many. A storage buffer is never inlined (compiler/glsl/Bindings.h).
   std::vector<VkDescriptorType> types{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                      VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                      VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                                       VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
   types.resize(glsl::kFirstTextureBinding + material.textures.size(), VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
   return types;

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <memory>
 #include <stdexcept>
@@ -30,6 +31,31 @@ glsl::EnvironmentCode environmentCode(Environment e) {
   return glsl::EnvironmentCode::None;
 }
 
+/// A light's kind in MxcView.lightVector[k].w (compiler/glsl/Contract.h).
+glsl::LightCode lightCode(Light::Kind kind) {
+  switch (kind) {
+    case Light::Kind::Directional: return glsl::LightCode::Directional;
+    case Light::Kind::Point: return glsl::LightCode::Point;
+    case Light::Kind::Spot: return glsl::LightCode::Spot;
+  }
+  return glsl::LightCode::Directional;
+}
+
+/// The values of the fragment stage's specialization constants for a render's settings
+/// (compiler/glsl/Contract.h), in the order of their ids.
+struct SceneConstants {
+  int32_t environment = 0;
+  int32_t lightCount = 0;
+  int32_t lightKinds = 0;
+};
+SceneConstants sceneConstants(const RenderSettings& s) {
+  SceneConstants c;
+  c.environment = static_cast<int32_t>(environmentCode(s.environment));
+  c.lightCount = static_cast<int32_t>(std::min<size_t>(s.lights.size(), glsl::kMaxLights));
+  for (int32_t k = 0; k < c.lightCount; ++k) c.lightKinds |= 1 << static_cast<int32_t>(lightCode(s.lights[k].kind));
+  return c;
+}
+
 /// The radical inverse in base b (Halton 1964): well-spread sub-pixel offsets over frames.
 float halton(uint32_t index, uint32_t base) {
   float f = 1.0f, r = 0.0f;
@@ -48,8 +74,33 @@ struct ItemObjects {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkPipeline depthPipeline = VK_NULL_HANDLE;
   VkPipeline shadePipeline = VK_NULL_HANDLE;
+  bool ownsDepth = false, ownsShade = false;  ///< created for this item (else another item's, shared)
   std::vector<VkDescriptorSet> descriptorSets;
 };
+
+/// Whether two draw items build the same pipeline: the same shaders (the fragment shader only
+/// when `shading`), vertex inputs and descriptor set layouts. Identically defined set layouts make
+/// pipeline layouts compatible (Vulkan 1.3, s. 14.2.2), so one pipeline serves both: a document
+/// or scene whose materials compile to one shader (the general shader, `--no-specialize`, of
+/// every material of a shading model whose inputs are values) creates it once, and every item
+/// shares one depth pipeline.
+bool samePipeline(const DrawItem& a, const DrawItem& b, bool shading) {
+  auto sameWords = [](const std::vector<uint32_t>* x, const std::vector<uint32_t>* y) {
+    return x == y || (x && y && *x == *y);
+  };
+  if (!sameWords(a.vertexSpirv, b.vertexSpirv) || (shading && !sameWords(a.fragmentSpirv, b.fragmentSpirv))) return false;
+  if (a.inputs.size() != b.inputs.size() || a.sets.size() != b.sets.size()) return false;
+  for (size_t k = 0; k < a.inputs.size(); ++k) {
+    const VertexInput &x = a.inputs[k], &y = b.inputs[k];
+    if (x.location != y.location || x.format != y.format || x.offset != y.offset) return false;
+  }
+  for (size_t k = 0; k < a.sets.size(); ++k) {
+    if (a.sets[k] != b.sets[k] && (a.sets[k]->types() != b.sets[k]->types() || a.sets[k]->stages() != b.sets[k]->stages())) {
+      return false;
+    }
+  }
+  return true;
+}
 
 /// Vulkan objects of one render, destroyed together.
 struct Frame {
@@ -63,8 +114,8 @@ struct Frame {
     VkDevice d = context.device();
     vkDeviceWaitIdle(d);
     for (ItemObjects& item : items) {
-      if (item.shadePipeline) vkDestroyPipeline(d, item.shadePipeline, nullptr);
-      if (item.depthPipeline) vkDestroyPipeline(d, item.depthPipeline, nullptr);
+      if (item.shadePipeline && item.ownsShade) vkDestroyPipeline(d, item.shadePipeline, nullptr);
+      if (item.depthPipeline && item.ownsDepth) vkDestroyPipeline(d, item.depthPipeline, nullptr);
       if (item.layout) vkDestroyPipelineLayout(d, item.layout, nullptr);
       for (Buffer* b : {&item.vertices, &item.indices}) context.destroy(*b);
     }
@@ -326,7 +377,7 @@ void Renderer::renderObjects(const std::vector<SceneObject>& objects, const std:
     st.set->bind(glsl::kOutputBinding, dummy);
     for (uint32_t k = 0; k < lights; ++k) {
       const Light& l = s.lights[k];
-      const float kind = l.kind == Light::Kind::Directional ? 0.0f : l.kind == Light::Kind::Point ? 1.0f : 2.0f;
+      const float kind = static_cast<float>(lightCode(l.kind));
       st.block.set("lightVector", glm::vec4(l.vector, kind), k);
       st.block.set("lightSpot", glm::vec4(l.axis, l.cosOuter), k);
       st.block.set("lightRadiance", glm::vec4(l.color * l.intensity, l.cosInner), k);
@@ -397,8 +448,19 @@ void Renderer::drawItems(const std::vector<DrawItem>& items, const std::vector<s
   fb.layers = 1;
   check(vkCreateFramebuffer(device, &fb, nullptr, &f.framebuffer), "vkCreateFramebuffer");
   f.items.resize(items.size());
-  // The modules are needed only while the pipelines are created.
-  std::vector<std::unique_ptr<ShaderModule>> modules;
+  // Which item's pipelines each item uses (its own, or an earlier item's that is the same).
+  std::vector<size_t> shadeOwner(items.size()), depthOwner(items.size());
+  for (size_t i = 0; i < items.size(); ++i) {
+    shadeOwner[i] = depthOwner[i] = i;
+    for (size_t j = 0; j < i; ++j) {
+      if (shadeOwner[j] == j && shadeOwner[i] == i && samePipeline(items[j], items[i], true)) shadeOwner[i] = j;
+      if (depthOwner[j] == j && depthOwner[i] == i && samePipeline(items[j], items[i], false)) depthOwner[i] = j;
+    }
+    f.items[i].ownsShade = shadeOwner[i] == i;
+    f.items[i].ownsDepth = depthOwner[i] == i;
+  }
+  // The modules are needed only while the pipelines are created (only the owners' are made).
+  std::vector<std::unique_ptr<ShaderModule>> modules(2 * items.size());
   for (size_t i = 0; i < items.size(); ++i) {
     const DrawItem& item = items[i];
     ItemObjects& o = f.items[i];
@@ -411,8 +473,8 @@ void Renderer::drawItems(const std::vector<DrawItem>& items, const std::vector<s
     o.firstIndex = std::min(item.firstIndex, static_cast<uint32_t>(mesh.indices.size()));
     const uint32_t available = static_cast<uint32_t>(mesh.indices.size()) - o.firstIndex;
     o.indexCount = item.indexCount == 0 ? available : std::min(item.indexCount, available);
-    modules.push_back(std::make_unique<ShaderModule>(context_, *item.vertexSpirv));
-    modules.push_back(std::make_unique<ShaderModule>(context_, *item.fragmentSpirv));
+    if (o.ownsShade || o.ownsDepth) modules[2 * i] = std::make_unique<ShaderModule>(context_, *item.vertexSpirv);
+    if (o.ownsShade) modules[2 * i + 1] = std::make_unique<ShaderModule>(context_, *item.fragmentSpirv);
     std::vector<VkDescriptorSetLayout> setLayouts;
     for (const DescriptorSet* set : item.sets) {
       setLayouts.push_back(set->layout());
@@ -423,11 +485,16 @@ void Renderer::drawItems(const std::vector<DrawItem>& items, const std::vector<s
     layoutInfo.pSetLayouts = setLayouts.data();
     check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &o.layout), "vkCreatePipelineLayout");
   }
-  // The environment is fixed per pipeline (compiler/glsl/Contract.h): a shader without the
-  // constant (another generator's) is not affected by the entry (Vulkan 1.3, s. 10.9).
-  const int32_t environment = static_cast<int32_t>(environmentCode(s.environment));
-  const VkSpecializationMapEntry entry{glsl::kEnvironmentConstantId, 0, sizeof(int32_t)};
-  const VkSpecializationInfo specialization{1, &entry, sizeof(int32_t), &environment};
+  // The environment and the lights are fixed per pipeline (compiler/glsl/Contract.h), unless
+  // the settings ask for the general shader: a shader without the constants (another
+  // generator's) is not affected by the entries (Vulkan 1.3, s. 10.9).
+  const SceneConstants constants = sceneConstants(s);
+  const VkSpecializationMapEntry entries[] = {
+      {glsl::kEnvironmentConstantId, offsetof(SceneConstants, environment), sizeof(int32_t)},
+      {glsl::kLightCountConstantId, offsetof(SceneConstants, lightCount), sizeof(int32_t)},
+      {glsl::kLightKindsConstantId, offsetof(SceneConstants, lightKinds), sizeof(int32_t)}};
+  const VkSpecializationInfo specialization{3, entries, sizeof(SceneConstants), &constants};
+  const VkSpecializationInfo* fragmentConstants = s.specialize ? &specialization : nullptr;
   // The pipelines, several at a time: lavapipe compiles a material's shader on the calling
   // thread (LLVM, up to seconds for a large material), and vkCreateGraphicsPipelines may be
   // called from several threads at once (Vulkan 1.3, s. 3.6 "Threading Behavior": only a
@@ -435,19 +502,30 @@ void Renderer::drawItems(const std::vector<DrawItem>& items, const std::vector<s
   // first failure is rethrown once all have stopped (runOnEveryCore). The shading pipelines come
   // first, the depth pipelines (a vertex shader only, quick) after: so that one material's two
   // are created side by side, and a long shading pipeline does not start last.
-  runOnEveryCore(2 * items.size(), [&](size_t j) {
-    const size_t i = j % items.size();  // items is not empty: there is a job
+  std::vector<std::pair<size_t, bool>> jobs;  // (item, shading), shading pipelines first
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (f.items[i].ownsShade) jobs.emplace_back(i, true);
+  }
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (f.items[i].ownsDepth) jobs.emplace_back(i, false);
+  }
+  runOnEveryCore(jobs.size(), [&](size_t j) {
+    const auto [i, shading] = jobs[j];
     ItemObjects& o = f.items[i];
-    VkShaderModule vertex = modules[2 * i]->get(), fragment = modules[2 * i + 1]->get();
-    if (j < items.size()) {
-      o.shadePipeline = createPipeline(device, f.renderPass, o.layout, vertex, fragment, &specialization, items[i].inputs,
-                                       s.width, s.height);
+    VkShaderModule vertex = modules[2 * i]->get();  // an owner has its vertex module
+    if (shading) {
+      o.shadePipeline = createPipeline(device, f.renderPass, o.layout, vertex, modules[2 * i + 1]->get(), fragmentConstants,
+                                       items[i].inputs, s.width, s.height);
     } else {
       o.depthPipeline = createPipeline(device, f.renderPass, o.layout, vertex, VK_NULL_HANDLE, nullptr, items[i].inputs,
                                        s.width, s.height);
     }
   });
   modules.clear();
+  for (size_t i = 0; i < items.size(); ++i) {
+    f.items[i].shadePipeline = f.items[shadeOwner[i]].shadePipeline;
+    f.items[i].depthPipeline = f.items[depthOwner[i]].depthPipeline;
+  }
   if (beforeFrames) beforeFrames();
 
   FrameView frameView;

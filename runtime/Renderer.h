@@ -55,6 +55,10 @@ struct RenderSettings {
   float environmentRotation = 0.0f;
   float emissionScale = 1.0f;     ///< radiance per unit of the material's emission
   std::vector<Light> lights;
+  /// Fix the environment, the number of lights and their kinds in each pipeline (the fragment
+  /// stage's specialization constants, compiler/glsl/Contract.h); false: the shader reads them
+  /// from its view block at run time, as a general shader does (`--no-specialize`).
+  bool specialize = true;
   Camera camera;
   glm::mat4 objectToWorld{1.0f};
 };

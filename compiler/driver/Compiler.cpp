@@ -51,7 +51,9 @@ std::vector<ir::Material>& Compiler::materials() {
   lowered_ = true;
   const resolve::ResolvedDocument* r = resolved();
   if (!r || (workspace_.diagnostics.hasErrors() && !request_.partial)) return materials_;
-  materials_ = lower::lowerDocument(*r, request_.lowering, workspace_.diagnostics);
+  lower::LoweringOptions lowering = request_.lowering;
+  lowering.everyInputVariable = lowering.everyInputVariable || !request_.specialize;
+  materials_ = lower::lowerDocument(*r, lowering, workspace_.diagnostics);
   for (const ir::Material& m : materials_) names_.push_back(m.name);
   if (!request_.material.empty()) {
     std::erase_if(materials_, [&](const ir::Material& m) { return m.name != request_.material; });
@@ -84,6 +86,7 @@ glsl::MaterialShader buildShader(const ir::Material& material, glsl::ShaderKind 
   options.expandLibrary = request.expandLibrary;
   options.accuracy = request.accuracy;
   options.referenceSamples = request.referenceSamples;
+  options.specialize = request.specialize;
   return glsl::buildMaterialShader(material, kind, options);
 }
 

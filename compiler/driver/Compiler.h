@@ -81,6 +81,13 @@ struct CompileRequest {
   bool expandLibrary = true;
   /// SPIRV-Tools' performance passes (`-O`).
   bool optimize = false;
+  /// Compile only what the material and the scene use (the default). False (`--no-specialize`):
+  /// the general shader, for comparison: every input of the shading node a uniform (so no effect
+  /// of the shading model is folded away; LoweringOptions::everyInputVariable) and the library's
+  /// refraction and absorption code compiled in whatever the lobes (BuildOptions::specialize).
+  /// The renderer then also reads the environment and the lights at run time
+  /// (rt::RenderSettings::specialize).
+  bool specialize = true;
   /// Verify the IR after lowering and after every pass (compiler/ir/Verify.h): on in debug
   /// builds and in the tests; a broken rule throws ir::VerifyFailure.
 #ifdef NDEBUG

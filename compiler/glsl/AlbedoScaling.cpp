@@ -1,5 +1,10 @@
 #include "compiler/glsl/AlbedoScaling.h"
 
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
 #include <fmt/format.h>
 
 #include "compiler/glsl/ClosureValues.h"
@@ -25,26 +30,56 @@ class Walk {
 
   void run() {
     if (m_.root != ir::kNone) node(m_.root, v_.vec3(1.0f), Above::ambient(v_));
+    // The lobes' weights, summed over the paths that reach each, and the lobes stored; a lobe
+    // of weight constant 0 is dropped.
+    for (const PendingLobe& l : lobes_) {
+      if (v_.isZero(l.weight)) continue;
+      out_.lines.add(fmt::format("  {}.weight = {};", l.name, v_.glsl(v_.asVec3(l.weight))), l.at);
+      out_.lines.add(fmt::format("  c.lobes[{}] = {};", out_.lobes++, l.name), l.at);
+    }
   }
 
  private:
   std::string var(const std::string& prefix) { return fmt::format("{}{}", prefix, counter_++); }
 
   /// A value the generated code keeps in a variable (`vec3 name = value;`), to use it twice
-  /// without computing it twice.
+  /// without computing it twice; a value kept before is that variable (the closure's code is
+  /// straight-line: a variable declared earlier is in scope).
   Id keep(const std::string& prefix, Id value, SourceLocation at = {}) {
+    const Id v3 = v_.asVec3(value);
+    if (auto it = kept_.find(v3); it != kept_.end()) return it->second;
     const std::string name = var(prefix);
-    out_.lines.add(fmt::format("  vec3 {} = {};", name, v_.glsl(v_.asVec3(value))), at);
-    return v_.local(name, Type::Vec3);
+    out_.lines.add(fmt::format("  vec3 {} = {};", name, v_.glsl(v3)), at);
+    return kept_[v3] = v_.local(name, Type::Vec3);
   }
 
-  /// A lobe for an interface; returns its variable.
-  std::string lobe(Index iface, Id weight, const Above& above, int mode) {
+  /// The lobe of an interface reached with `weight` under `above`, in `mode` (with `medium`
+  /// under it when it transmits into it); returns its variable. Every path that reaches the
+  /// same interface in the same place (the same mode, medium and layers above) shares one
+  /// lobe, whose weight is their sum: the closure is linear in the weights, and its mixture
+  /// (OpenPBR "Reduction to a mixture of lobes") is the same with fewer lobes. A slab tree
+  /// distributed over its mixes (ir::distributeOverMix) repeats the layers above each mix once
+  /// per branch.
+  std::string lobe(Index iface, Id weight, const Above& above, int mode, Index medium) {
     const ir::Interface& f = m_.interfaces[iface];
-    LobeFields fields = mapInterface(v_, m_, f, above, mode, weight);
+    const LobeKey key{iface, mode, (mode & (kModeTransmit | kModeThinWall)) ? medium : ir::kNone,
+                      above.coatIor, above.coatCoverage, above.tau, above.tauEta};
+    const Id w = lobeWeight(v_, f, weight);
+    if (auto it = lobeKeys_.find(key); it != lobeKeys_.end()) {
+      PendingLobe& l = lobes_[it->second];
+      l.weight = v_.add(l.weight, w);
+      created_ = false;
+      return l.name;
+    }
+    LobeFields fields = mapInterface(v_, m_, f, above, mode, v_.vec3(0.0f));
+    out_.modes |= mode;
+    out_.absorbs = out_.absorbs || !v_.isZero(above.tau);
     const std::string name = var("lobe");
-    writeLobe(out_.lines, name, out_.lobes++, fields, f.origin.location,
-              f.thinFilm.present() ? f.thinFilm.thickness.origin.location : SourceLocation{});
+    declareLobe(out_.lines, name, fields, f.origin.location,
+                f.thinFilm.present() ? f.thinFilm.thickness.origin.location : SourceLocation{}, "weight");
+    lobeKeys_.emplace(key, lobes_.size());
+    lobes_.push_back({name, w, f.origin.location, {}});
+    created_ = true;
     return name;
   }
 
@@ -72,28 +107,32 @@ class Walk {
         mode |= kModeTransmit;
         if (thinWall) mode |= kModeThinWall;
       }
-      const std::string l = lobe(n.top, v_.mul(weight, cov), above, mode);
-      if (thinWall) {
+      const std::string l = lobe(n.top, v_.mul(weight, cov), above, mode, n.medium);
+      if (thinWall && created_) {
         // A thin sheet's normal-incidence transmittance through its absorption (OpenPBR
         // "Thin-walled mode": transmission_color).
-        out_.lines.add(fmt::format("  c.lobes[{}].c1 *= exp(-{});", out_.lobes - 1,
+        out_.lines.add(fmt::format("  {}.c1 *= exp(-{});", l,
                                    v_.glsl(v_.mul(mediumSlot(Slot::Absorption, v_.vec3(0.0f)),
                                                   mediumSlot(Slot::Thickness, v_.constant(1.0f))))));
-      } else if ((mode & kModeTransmit) && medium->slots.find(Slot::Absorption)) {
+      } else if ((mode & kModeTransmit) && medium->slots.find(Slot::Absorption) && created_) {
         // The bulk's absorption along the refracted path, taken as MXC_BULK_PATH (one scene
         // unit, the radius of the test sphere): this closure sees one interface, not the
         // object, so the path length inside is assumed (Beer's law; OpenPBR "Translucent base").
-        out_.lines.add(fmt::format("  c.lobes[{}].c1 *= exp(-{} * MXC_BULK_PATH);", out_.lobes - 1,
+        out_.lines.add(fmt::format("  {}.c1 *= exp(-{} * MXC_BULK_PATH);", l,
                                    v_.glsl(mediumSlot(Slot::Absorption, v_.vec3(0.0f)))),
                        medium->origin.location);
       }
       if (top->kind == InterfaceKind::Dielectric) topIor = v_.slot(top->slots, Slot::Ior, v_.constant(1.5f));
       if (below) {
-        // OpenPBR "Layering": the layers below receive what the top does not reflect, 1 - E(wo).
-        const std::string albedo = var("e");
-        out_.lines.add(fmt::format("  vec3 {0} = mxc_lobe_layer_albedo({1}, mxc_to_local(mxc_frame({1}.N, {1}.T), wo));",
-                                   albedo, l));
-        through = v_.oneMinus(v_.local(albedo, Type::Vec3));
+        // OpenPBR "Layering": the layers below receive what the top does not reflect, 1 - E(wo)
+        // (once per lobe: the albedo does not depend on the lobe's weight).
+        auto [known, added] = layerAlbedo_.try_emplace(l, std::string());
+        if (added) {
+          known->second = var("e");
+          out_.lines.add(fmt::format("  vec3 {0} = mxc_lobe_layer_albedo({1}, mxc_to_local(mxc_frame({1}.N, {1}.T), wo));",
+                                     known->second, l));
+        }
+        through = v_.oneMinus(v_.local(known->second, Type::Vec3));
         const ir::Param* darkening = top->slots.find(Slot::Darkening);
         const ir::Param* baseAlbedo = top->slots.find(Slot::BaseAlbedo);
         const ir::Param* baseRoughness = top->slots.find(Slot::BaseRoughness);
@@ -101,12 +140,15 @@ class Walk {
         if (baseAlbedo && baseRoughness && !v_.isZero(delta)) {
           // OpenPBR "Darkening": the internal reflections of the coat darken what is under it
           // (albedo scaling alone does not trap light), modulated by coat_darkening.
-          const std::string factor = var("dark");
-          out_.lines.add(fmt::format("  vec3 {} = mxc_coat_darkening({}, {}, {}, {}, dot(wo, {}.N));", factor,
-                                     v_.glsl(v_.max(topIor, floor)), v_.glsl(v_.asVec3(baseAlbedo->value)),
-                                     v_.glsl(baseRoughness->value), v_.glsl(delta), l),
-                         darkening->origin.location);
-          through = v_.mul(through, v_.local(factor, Type::Vec3));
+          auto [factor, newFactor] = darkening_.try_emplace(l, std::string());
+          if (newFactor) {
+            factor->second = var("dark");
+            out_.lines.add(fmt::format("  vec3 {} = mxc_coat_darkening({}, {}, {}, {}, dot(wo, {}.N));", factor->second,
+                                       v_.glsl(v_.max(topIor, floor)), v_.glsl(v_.asVec3(baseAlbedo->value)),
+                                       v_.glsl(baseRoughness->value), v_.glsl(delta), l),
+                           darkening->origin.location);
+          }
+          through = v_.mul(through, v_.local(factor->second, Type::Vec3));
         }
       }
       normal = l + ".N";
@@ -130,15 +172,26 @@ class Walk {
       // observed albedo (OpenPBR "Subsurface" defines subsurface_color as that albedo; without
       // a subsurface transport the spec asks for it as a diffuse colour, "Flexibility of
       // implementation").
-      LobeFields fields;
-      fields.set("kind", fmt::format("MXC_LOBE_{}", ir::lobeKindName(ir::LobeKind::EON)));
-      fields.set("weight", v_.glsl(v_.mul(v_.mul(weight, cov), through)));
-      fields.set("N", normal);
-      fields.set("T", tangent);
-      fields.set("c0", v_.glsl(mediumSlot(Slot::ObservedAlbedo, v_.vec3(0.8f))));
-      fields.set("tau", v_.glsl(above.tau));
-      fields.set("tauEta", v_.glsl(v_.max(above.tauEta, floor)));
-      writeLobe(out_.lines, var("lobe"), out_.lobes++, fields, medium->origin.location);
+      const Id w = v_.mul(v_.mul(weight, cov), through);
+      // Keyed by the medium, with no interface: one lobe per bulk and place.
+      const LobeKey key{ir::kNone, kModeReflect, n.medium, above.coatIor, above.coatCoverage, above.tau, above.tauEta};
+      if (auto it = lobeKeys_.find(key); it != lobeKeys_.end() && lobes_[it->second].normal == normal) {
+        lobes_[it->second].weight = v_.add(lobes_[it->second].weight, w);
+      } else {
+        LobeFields fields;
+        fields.set("kind", fmt::format("MXC_LOBE_{}", ir::lobeKindName(ir::LobeKind::EON)));
+        fields.set("N", normal);
+        fields.set("T", tangent);
+        fields.set("c0", v_.glsl(mediumSlot(Slot::ObservedAlbedo, v_.vec3(0.8f))));
+        fields.set("tau", v_.glsl(above.tau));
+        fields.set("tauEta", v_.glsl(v_.max(above.tauEta, floor)));
+        out_.modes |= kModeReflect;
+        out_.absorbs = out_.absorbs || !v_.isZero(above.tau);
+        const std::string name = var("lobe");
+        declareLobe(out_.lines, name, fields, medium->origin.location, {}, "weight");
+        lobeKeys_.insert_or_assign(key, lobes_.size());
+        lobes_.push_back({name, w, medium->origin.location, normal});
+      }
     }
     if (n.base == ir::kNone) return;
     if (finite) {
@@ -184,10 +237,28 @@ class Walk {
     }
   }
 
+  /// A lobe of the closure: its variable, the sum of the weights of the paths that reach it,
+  /// where it comes from, and (a subsurface lobe) the normal it was made with.
+  struct PendingLobe {
+    std::string name;
+    Id weight;
+    SourceLocation at;
+    std::string normal;
+  };
+  /// What makes two visits the same lobe: the interface (none for a subsurface bulk's lobe),
+  /// mode, the medium it transmits into, and what lies above it.
+  using LobeKey = std::tuple<Index, int, Index, Id, Id, Id, Id>;
+
   const ir::Material& m_;
   ClosureValues v_;
   Closure& out_;
   int counter_ = 0;
+  std::vector<PendingLobe> lobes_;
+  std::map<LobeKey, size_t> lobeKeys_;
+  bool created_ = false;                         ///< the last lobe() made a new lobe
+  std::map<std::string, std::string> layerAlbedo_;  ///< a lobe's variable -> its layer albedo's
+  std::map<std::string, std::string> darkening_;    ///< a lobe's variable -> its coat darkening's
+  std::map<Id, Id> kept_;                        ///< keep(): a value -> its variable
 };
 
 }  // namespace

@@ -10,7 +10,9 @@ namespace mxc::glsl {
 enum Binding : uint32_t {
   kTablesBinding = 0,      ///< sampler2D: albedo tables (computed by the tables stage)
   kStageBinding = 1,       ///< uniform block of the stage (camera and lights, or batch sizes)
-  kParameterBinding = 2,   ///< uniform block of the material's parameters (`--param`, frame, time)
+  /// The material's parameters (`--param`, frame, time): a read-only storage buffer in std140
+  /// layout, which lavapipe never specialises a shader on (runtime/MaterialResources.cpp).
+  kParameterBinding = 2,
   kInputBinding = 3,       ///< storage buffer read by compute stages
   kOutputBinding = 4,      ///< storage buffer written by compute stages
   kFirstTextureBinding = 5 ///< sampler2D per image file, in ExprEmitter order

@@ -21,6 +21,12 @@ struct Closure {
   int lobes = 0;
   /// The reference tier: how many slab stacks it holds (MXC_MAX_STACKS); 0 for the others.
   int stacks = 0;
+  /// The modes of its lobes OR'd together (kModeReflect, kModeTransmit, kModeThinWall): without
+  /// kModeTransmit the library's refraction code is not compiled (MXC_TRANSMISSION).
+  int modes = 0;
+  /// A lobe lies under an absorbing medium (an optical depth that is not constant 0): the
+  /// library computes the absorption along wi (MXC_ABSORPTION).
+  bool absorbs = false;
 };
 
 /// How an accuracy tier turns a material's slab tree into lobes with weights.

@@ -88,11 +88,20 @@ std::string viewHeader() {
   out += fmt::format("const int MXC_ENV_SKY = {};\n", int(EnvironmentCode::Sky));
   out += fmt::format("const int MXC_ENV_MAP = {};  // an equirectangular image (stages/mxc_environment.glsl)\n",
                      int(EnvironmentCode::Map));
+  out += fmt::format("const int MXC_LIGHT_DIRECTIONAL = {};\n", int(LightCode::Directional));
+  out += fmt::format("const int MXC_LIGHT_POINT = {};\n", int(LightCode::Point));
+  out += fmt::format("const int MXC_LIGHT_SPOT = {};\n", int(LightCode::Spot));
+  out += fmt::format("const int MXC_FROM_VIEW = {};\n", kFromView);
   out += fmt::format(
-      "// The environment (MXC_ENV_*), fixed when the pipeline is created: the other environments'\n"
-      "// code is not compiled. MxcView.counts.y holds the same code.\n"
-      "layout(constant_id = {}) const int MXC_ENVIRONMENT = MXC_ENV_MAP;\n",
-      kEnvironmentConstantId);
+      "// What the scene fixes, set when the pipeline is created, so that the code of what it does\n"
+      "// not have is not compiled; MXC_FROM_VIEW (the default) reads it from MxcView at run time.\n"
+      "// The environment (MXC_ENV_*; counts.y):\n"
+      "layout(constant_id = {}) const int MXC_ENVIRONMENT = MXC_FROM_VIEW;\n"
+      "// The number of lights (counts.x):\n"
+      "layout(constant_id = {}) const int MXC_LIGHT_COUNT = MXC_FROM_VIEW;\n"
+      "// The kinds of light present: bit MXC_LIGHT_* for each:\n"
+      "layout(constant_id = {}) const int MXC_LIGHT_KINDS = MXC_FROM_VIEW;\n",
+      kEnvironmentConstantId, kLightCountConstantId, kLightKindsConstantId);
   out += fmt::format("layout(set = 0, binding = {}, std140) uniform MxcView {{\n", uint32_t(kStageBinding));
   out += declarations(viewMembers()) + "} mxc_view;\n";
   return out;

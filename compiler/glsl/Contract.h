@@ -34,10 +34,24 @@ constexpr uint32_t kTablesOutputBinding = 0;
 
 /// The environment of the raster renderer, MxcView.counts.y.
 enum class EnvironmentCode : int32_t { None = 0, White = 1, Sky = 2, Map = 3 };
-/// The specialization constant (MXC_ENVIRONMENT) through which the renderer fixes the
-/// environment's code when it creates a pipeline: the code of the other environments is not
-/// compiled (lavapipe runs both sides of every branch, so it would otherwise run, masked).
-constexpr uint32_t kEnvironmentConstantId = 0;
+/// The kinds of the raster renderer's lights, MxcView.lightVector[k].w.
+enum class LightCode : int32_t { Directional = 0, Point = 1, Spot = 2 };
+
+/// The specialization constants of the raster renderer's fragment stage: what a scene fixes for
+/// a whole render, set when a pipeline is created (Vulkan 1.3, s. 10.9), so that the pipeline
+/// drops the code of the environments, light kinds and light slots the scene does not have,
+/// without compiling GLSL again (lavapipe runs both sides of every branch, masked, so that code
+/// would otherwise run). Each one's default, kFromView, reads the choice from MxcView at run time
+/// instead: the general shader (`--no-specialize`) is created without them.
+///
+/// Which choices are made where (docs/specialization.md): what the material fixes (lobe kinds,
+/// transmission, absorbing media, thin film, procedural code) is compiled in by the back end;
+/// what the scene fixes and a renderer may change between frames (the environment, the number of
+/// lights and their kinds) is one of these constants.
+constexpr uint32_t kEnvironmentConstantId = 0;  ///< MXC_ENVIRONMENT: an EnvironmentCode
+constexpr uint32_t kLightCountConstantId = 1;   ///< MXC_LIGHT_COUNT: 0 to kMaxLights
+constexpr uint32_t kLightKindsConstantId = 2;   ///< MXC_LIGHT_KINDS: bit LightCode set for each kind present
+constexpr int32_t kFromView = -1;
 
 /// The raster renderer's environment image (stages/mxc_environment.glsl) is its own descriptor
 /// set, so that a material's set 0 does not change with the scene: the radiance (an RGBA32F

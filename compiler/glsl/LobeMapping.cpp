@@ -101,9 +101,13 @@ LobeFields mapInterface(ClosureValues& v, const ir::Material& m, const ir::Inter
     fields.set("film", v.glsl(v.construct3(v.param(f.thinFilm.thickness, v.constant(0.0f)), v.div(filmIor, aboveIor),
                                            v.param(f.thinFilm.coverage, v.constant(1.0f)))));
   }
-  if (const ir::Param* scale = f.slots.find(Slot::Weight); scale && scale->present()) weight = v.mul(weight, scale->value);
-  fields.set("weight", v.glsl(weight));
+  fields.set("weight", v.glsl(lobeWeight(v, f, weight)));
   return fields;
+}
+
+ClosureValues::Id lobeWeight(ClosureValues& v, const ir::Interface& f, ClosureValues::Id weight) {
+  if (const ir::Param* scale = f.slots.find(Slot::Weight); scale && scale->present()) return v.mul(weight, scale->value);
+  return weight;
 }
 
 std::string emittedRadiance(ClosureValues& v, const ir::Emission& e, ClosureValues::Id weight) {
@@ -128,12 +132,18 @@ std::string emittedRadiance(ClosureValues& v, const ir::Emission& e, ClosureValu
   return v.glsl(v.mul(v.mul(weight, color), shape)) + directional;
 }
 
-void writeLobe(Lines& out, const std::string& name, int index, const LobeFields& fields, SourceLocation at,
-               SourceLocation filmAt) {
+void declareLobe(Lines& out, const std::string& name, const LobeFields& fields, SourceLocation at, SourceLocation filmAt,
+                 std::string_view skip) {
   out.add(fmt::format("  MxcLobe {};", name), at);
   for (const auto& [member, value] : fields.values()) {
+    if (member == skip) continue;
     out.add(fmt::format("  {}.{} = {};", name, member, value), member == "film" && filmAt.valid() ? filmAt : at);
   }
+}
+
+void writeLobe(Lines& out, const std::string& name, int index, const LobeFields& fields, SourceLocation at,
+               SourceLocation filmAt) {
+  declareLobe(out, name, fields, at, filmAt);
   out.add(fmt::format("  c.lobes[{}] = {};", index, name), at);
 }
 

@@ -52,8 +52,15 @@ std::string emittedRadiance(ClosureValues& values, const ir::Emission& emission,
 /// normal (a shading normal from a document need not be unit length: geometry_normal = 0.9,0,0.1).
 std::string unitNormal(const ClosureValues& values, const ir::Material& material, const ir::Param* normal);
 
-/// Appends `MxcLobe <name>;`, one assignment per member, and `c.lobes[<index>] = <name>;`.
-/// The film member is located at `filmAt` when valid, everything else at `at`.
+/// The weight of an interface's lobe reached with `weight`: times the interface's own weight
+/// slot where it has one (what mapInterface sets as the lobe's weight).
+ClosureValues::Id lobeWeight(ClosureValues& values, const ir::Interface& interface, ClosureValues::Id weight);
+
+/// Appends `MxcLobe <name>;` and one assignment per member but `skip` (which the caller assigns
+/// later). The film member is located at `filmAt` when valid, everything else at `at`.
+void declareLobe(Lines& out, const std::string& name, const LobeFields& fields, SourceLocation at,
+                 SourceLocation filmAt = {}, std::string_view skip = {});
+/// declareLobe, then `c.lobes[<index>] = <name>;`.
 void writeLobe(Lines& out, const std::string& name, int index, const LobeFields& fields, SourceLocation at,
                SourceLocation filmAt = {});
 

@@ -144,6 +144,10 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   iface.lobeKinds = material.features.lobes.empty() ? FlagSet<ir::LobeKind>().insert(ir::LobeKind::EON)
                                                     : material.features.lobes;
   iface.geomprops = exprs.geomprops();
+  // The reference tier's walk refracts through every interface and crosses every medium.
+  const bool everything = !options.specialize || options.accuracy == Accuracy::Reference;
+  iface.transmission = everything || (closure.modes & kModeTransmit) != 0;
+  iface.absorption = everything || closure.absorbs;
   iface.parameters = parameterLayout(material, exprs, iface.parameterBytes);
 
   Writer w(options.expandLibrary);
@@ -167,6 +171,8 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   std::sort(kinds.begin(), kinds.end());
   for (std::string_view k : kinds) w.line(fmt::format("#define MXC_HAS_{}", k));
   if (material.features.thinFilm) w.line("#define MXC_THIN_FILM");
+  if (iface.transmission) w.line("#define MXC_TRANSMISSION");
+  if (iface.absorption) w.line("#define MXC_ABSORPTION");
   w.line(fmt::format("#define MXC_TABLE_BINDING {}", static_cast<uint32_t>(kTablesBinding)));
   w.line(fmt::format("#define MXC_TABLE_SIZE {}", kTableSize));
   w.line(fmt::format("#define MXC_TABLE_SLICES {}", kTableSlices));
@@ -184,7 +190,7 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   w.file("library/mxc_closure_sample.glsl");
 
   w.line("// ---- the material's parameters ----");
-  w.line(fmt::format("layout(set = 0, binding = {}, std140) uniform MxcParameters {{", static_cast<uint32_t>(kParameterBinding)));
+  w.line(fmt::format("layout(set = 0, binding = {}, std140) readonly buffer MxcParameters {{", static_cast<uint32_t>(kParameterBinding)));
   for (const UniformField& f : iface.parameters) {
     w.line(fmt::format("  layout(offset = {}) {} {};", f.offset, fieldType(f), f.name));
   }

@@ -43,6 +43,8 @@ struct MaterialInterface {
   /// tier, whose walk may run up to the device's loop cap on its own (mxc_walk.glsl, MXC_WALK_BUDGET).
   uint32_t samplesPerDispatch = 0;
   FlagSet<ir::LobeKind> lobeKinds;      ///< the lobe kinds compiled in (MXC_HAS_*)
+  bool transmission = false;            ///< the lobes' refraction code is compiled in (MXC_TRANSMISSION)
+  bool absorption = false;              ///< absorption above the lobes is computed (MXC_ABSORPTION)
   std::vector<std::string> geomprops;
 };
 
@@ -60,6 +62,9 @@ struct BuildOptions {
   /// false, each library file is an `#include` line instead: the material-specific part only,
   /// which is what the golden files under generated/glsl hold.
   bool expandLibrary = true;
+  /// Compile only the library code the material's closure uses (false, `--no-specialize`: the
+  /// refraction and absorption code whatever the lobes' modes, as a general shader has it).
+  bool specialize = true;
 };
 
 /// The shader of a material for a use. Its GLSL lines map back to the document elements that

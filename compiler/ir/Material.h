@@ -33,6 +33,23 @@ struct ImageFile {
   Origin origin;     ///< the first `file` input that names it
 };
 
+/// An input of the shading node as the compilation sees it, for reports that say why an effect
+/// is compiled in or left out (`inspect --effects`): its value and where it is set.
+struct ShaderInput {
+  enum class Source : uint8_t {
+    Document,   ///< set in the document
+    Default,    ///< the nodedef's default
+    Override,   ///< `--set`
+    Parameter,  ///< kept variable (`--param`, `--no-specialize`): any value in its UI range
+    Connected,  ///< connected to a node graph, a node or a geometric property
+  };
+  std::string_view name;
+  Source source = Source::Default;
+  std::string value;        ///< as written ("0.8, 0.8, 0.8"); empty when connected
+  std::string range;        ///< the nodedef's UI range ("0 to 1"), empty when it declares none
+  SourceLocation location;  ///< where it is set: the document's element, else the nodedef's input
+};
+
 struct Material {
   std::string name;          ///< the material node's name (or a graph output's, for pbrlib graphs)
   std::string shader;        ///< the shading node's category (open_pbr_surface, standard_surface, surface)
@@ -49,6 +66,15 @@ struct Material {
   std::vector<Note> notes;
   std::vector<Parameter> parameters;
   std::vector<ImageFile> images;
+  std::vector<ShaderInput> shaderInputs;  ///< every input of the shading node, in nodedef order
+
+  /// The shading node's input of this name, or null.
+  const ShaderInput* shaderInput(std::string_view input) const {
+    for (const ShaderInput& i : shaderInputs) {
+      if (i.name == input) return &i;
+    }
+    return nullptr;
+  }
 
   /// Records that an image node reads `path` (once per path).
   void addImage(const std::string& path, Origin from) {

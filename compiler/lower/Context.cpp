@@ -155,15 +155,24 @@ ir::ExprId Context::userInput(const ResolvedInput& in, ir::ExprId v) {
       v = material.exprs.constant(*parsed);
     }
   }
-  for (const std::string& name : options.parameters) {
-    if (name != in.name || v == ir::kNoExpr) continue;
-    if (!material.exprs.isConstant(v)) {
+  bool variable = false;
+  for (const std::string& name : options.parameters) variable = variable || name == in.name;
+  if (variable && v != ir::kNoExpr && !material.exprs.isConstant(v)) {
+    // Reported once per input, however often the lowering reads it.
+    if (reportedParameters_.insert(std::string(in.name)).second) {
       error(shaderNode->node->location,
-            fmt::format("--param {}: the input is connected to a node graph; only an input with a value can be a parameter", name));
-      continue;
+            fmt::format("--param {}: the input is connected to a node graph; only an input with a value can be a parameter",
+                        in.name));
     }
+    variable = false;
+  }
+  // --no-specialize: every input with a value, not a string (names, enumerations, file names).
+  if (options.everyInputVariable && v != ir::kNoExpr && material.exprs.isConstant(v) && b.type(v) != ir::Type::String) {
+    variable = true;
+  }
+  if (variable && v != ir::kNoExpr) {
     ir::Type type = b.type(v);
-    const std::string id = "p_" + name;
+    const std::string id = "p_" + std::string(in.name);
     bool known = false;
     for (const ir::Parameter& p : material.parameters) known = known || p.name == id;
     if (!known) {

@@ -6,6 +6,7 @@
 #include <deque>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -100,6 +101,7 @@ class Context {
  private:
   int depth_ = 0;                 ///< nodeValue calls on the stack: the path length from the shading node
   bool tooDeepReported_ = false;  ///< the stack limit is reported once per material
+  std::set<std::string> reportedParameters_;  ///< --param inputs reported as connected
   const resolve::ResolvedInput* interfaceInput(Env& env, std::string_view name, Env*& where);
   /// The value of a shading-node input with `--set` and `--param` applied; kNoExpr when neither
   /// names it.

@@ -23,6 +23,37 @@ void checkUserInputs(Context& c, const LoweringOptions& options, const std::stri
   }
 }
 
+/// The shading node's inputs as the compilation sees them (ir::ShaderInput).
+void recordShaderInputs(const resolve::ResolvedNode& node, const LoweringOptions& options, ir::Material& material) {
+  for (const resolve::ResolvedInput& in : node.inputs) {
+    ir::ShaderInput out;
+    out.name = in.name;
+    out.location = in.location;
+    const bool valued = in.source == resolve::InputSource::Value || in.source == resolve::InputSource::Default;
+    out.source = in.source == resolve::InputSource::Value     ? ir::ShaderInput::Source::Document
+                 : in.source == resolve::InputSource::Default ? ir::ShaderInput::Source::Default
+                                                              : ir::ShaderInput::Source::Connected;
+    if (valued && in.value) out.value = in.value->str();
+    for (const auto& [name, text] : options.overrides) {
+      if (name == in.name) {
+        out.source = ir::ShaderInput::Source::Override;
+        out.value = text;
+      }
+    }
+    ir::Type type = ir::Type::String;
+    const bool numeric = ir::irTypeOf(in.type, type) && type != ir::Type::String;
+    bool variable = options.everyInputVariable && numeric;
+    for (const std::string& name : options.parameters) variable = variable || name == in.name;
+    if (variable && out.source != ir::ShaderInput::Source::Connected) out.source = ir::ShaderInput::Source::Parameter;
+    if (in.declaration && in.declaration->element.valid()) {
+      const auto low = in.declaration->element.attribute("uimin");
+      const auto high = in.declaration->element.attribute("uimax");
+      if (low || high) out.range = fmt::format("{} to {}", low.value_or("-inf"), high.value_or("inf"));
+    }
+    material.shaderInputs.push_back(std::move(out));
+  }
+}
+
 /// Lowers the closure feeding `input` in `env` as the whole material.
 ir::Material lowerShader(const resolve::ResolvedDocument& document, const LoweringOptions& options,
                          Diagnostics& diagnostics, std::string name, const resolve::ResolvedNode* shader,
@@ -36,6 +67,7 @@ ir::Material lowerShader(const resolve::ResolvedDocument& document, const Loweri
     c.shaderNode = graphOutput->upstream.node;
   }
   checkUserInputs(c, options, material.name);
+  if (c.shaderNode) recordShaderInputs(*c.shaderNode, options, material);
   if (shader) {
     material.shader = std::string(shader->category());
     material.origin = {shader->node->location, shader->name()};

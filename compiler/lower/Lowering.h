@@ -24,6 +24,10 @@ struct LoweringOptions {
   /// `--param NAME`: inputs of the shading node that stay variable in the shader (a uniform with
   /// the input's value as its default) instead of being folded as constants.
   std::vector<std::string> parameters;
+  /// `--no-specialize`: every input of the shading node that has a value (set or default; not a
+  /// string) stays variable, as `--param` would keep it, so that no effect of the shading model
+  /// is folded away: the general shader a generator that does not specialize makes.
+  bool everyInputVariable = false;
 };
 
 /// Every material of the document, in document order: each surfacematerial's surface shader.

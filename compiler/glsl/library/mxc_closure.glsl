@@ -40,9 +40,23 @@ vec3 mxc_absorption(vec3 tau, float eta, float mu) {
   return exp(-tau / max(mut, 0.05));
 }
 
-// How often each lobe is chosen: in proportion to the luminance of what it can return.
+// The transmittance of the absorbing media above a lobe along a direction of cosine mu. Without
+// MXC_ABSORPTION no lobe of the material lies under an absorbing medium (the back end defines it
+// from the lobes' optical depths), and none is computed.
+#ifdef MXC_ABSORPTION
+vec3 mxc_lobe_absorption(MxcLobe l, float mu) { return mxc_absorption(l.tau, l.tauEta, mu); }
+#else
+vec3 mxc_lobe_absorption(MxcLobe l, float mu) { return vec3(1.0); }
+#endif
+
+// How often each lobe is chosen: in proportion to the luminance of what it can return, with a
+// floor so that a lobe that returns little is still sampled. A lobe of weight exactly 0 returns
+// nothing and is never chosen: a shader that keeps every lobe of its shading model (`mxc
+// compile --no-specialize`) then draws the very samples of one compiled without them, and its
+// image is the same (tests/runtime/SpecializationTest.cpp).
 // `ms`: the lobe's multiple-scattering factor at woLocal.
 float mxc_lobe_choice(MxcLobe l, vec3 woLocal, vec3 ms) {
+  if (l.weight == vec3(0.0)) return 0.0;
   return max(mxc_luminance(l.weight * mxc_lobe_albedo_scaled(l, woLocal, ms)), 0.0) + 1e-4;
 }
 
@@ -69,10 +83,11 @@ vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, out floa
   float p = 0.0;
   for (int k = 0; k < c.count; ++k) {
     MxcLobe l = c.lobes[k];
+    if (l.weight == vec3(0.0)) continue;  // off (an input of the general shader): its f is 0
     mat3 frame = mxc_frame(l.N, l.T);
     vec3 o = mxc_to_local(frame, wo);
     vec3 i = mxc_to_local(frame, wi);
-    f += l.weight * c.ms[k] * mxc_absorption(l.tau, l.tauEta, abs(i.z)) * mxc_lobe_eval(l, o, i);
+    f += l.weight * c.ms[k] * mxc_lobe_absorption(l, abs(i.z)) * mxc_lobe_eval(l, o, i);
     if (wantPdf) p += c.choice[k] * mxc_lobe_pdf(l, o, i);
   }
   pdf = c.choiceTotal > 0.0 ? p / c.choiceTotal : 0.0;
@@ -92,23 +107,36 @@ MxcSample mxc_closure_sample_direction(MxcClosure c, vec3 wo, vec3 u) {
   s.pdf = 0.0;
   s.weight = vec3(0.0);
   s.wi = wo;
-  if (c.count == 0) return s;
-  float total = c.choiceTotal;  // >= 1e-4 per lobe: not zero
-  // Pick lobe k with probability choice_k / total, reusing u.z for the lobe's own choice.
+  float total = c.choiceTotal;  // >= 1e-4 per lobe of weight other than 0
+  if (c.count == 0 || total <= 0.0) return s;
+  // Pick lobe k with probability choice_k / total, reusing u.z for the lobe's own choice. A
+  // lobe of choice 0 is never picked: x < before + 0 cannot hold once x >= before, and the last
+  // lobe that can be chosen takes what rounding leaves over.
   float x = u.z * total;
-  int chosen = c.count - 1;
+  int chosen = -1;
   float before = 0.0;
   float p = 0.0;
+  float lastBefore = 0.0;
+  int last = -1;
   for (int k = 0; k < c.count; ++k) {
     float pk = c.choice[k];
-    if (x < before + pk || k == c.count - 1) {
+    if (pk <= 0.0) continue;
+    if (x < before + pk) {
       chosen = k;
       p = pk;
       break;
     }
+    last = k;
+    lastBefore = before;
     before += pk;
   }
-  float uz = clamp((x - before) / p, 0.0, 0.99999994);  // p >= 1e-4 > 0
+  if (chosen < 0) {  // x >= the sum by rounding: the last lobe with a choice (total > 0: there is one)
+    chosen = max(last, 0);
+    p = c.choice[chosen];
+    before = lastBefore;
+  }
+  if (p <= 0.0) return s;
+  float uz = clamp((x - before) / p, 0.0, 0.99999994);  // p > 0
   MxcLobe l = c.lobes[chosen];
   mat3 frame = mxc_frame(l.N, l.T);
   vec3 o = mxc_to_local(frame, wo);
@@ -118,7 +146,7 @@ MxcSample mxc_closure_sample_direction(MxcClosure c, vec3 wo, vec3 u) {
   if (ls.delta) {
     s.delta = true;
     s.pdf = ls.pdf * p / total;
-    s.weight = l.weight * c.ms[chosen] * mxc_absorption(l.tau, l.tauEta, abs(ls.wi.z)) * ls.value / s.pdf;
+    s.weight = l.weight * c.ms[chosen] * mxc_lobe_absorption(l, abs(ls.wi.z)) * ls.value / s.pdf;
     s.valid = s.pdf > 0.0;
     return s;
   }

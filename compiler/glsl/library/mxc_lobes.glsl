@@ -4,6 +4,15 @@
 
 #include "generated/mxc_lobe.glsl"
 
+// Whether a lobe carries transmission. Without MXC_TRANSMISSION no lobe of the material does
+// (the back end defines it from the modes its closure gives the lobes), and the refraction code
+// is not compiled: an opaque material's dielectric reflects only.
+#ifdef MXC_TRANSMISSION
+bool mxc_lobe_transmits(MxcLobe l) { return (l.mode & MXC_TRANSMIT) != 0; }
+#else
+bool mxc_lobe_transmits(MxcLobe l) { return false; }
+#endif
+
 struct MxcLobeSample {
   vec3 wi;      // local
   vec3 value;   // f |cos| (for a delta: the discrete weight)
@@ -122,7 +131,9 @@ vec3 mxc_lobe_fresnel(MxcLobe l, float cosh, bool above) {
     f = l.p1 * mxc_fresnel_f82(cosh, l.c0, l.c2, l.p0, l.c1);
   }
 #ifdef MXC_THIN_FILM
-  if (l.film.z > 0.0 && above) {
+  // A film of thickness 0 is no film (the IR drops it when the thickness is a constant 0; a
+  // thickness read at run time, `--param` or `--no-specialize`, is treated alike).
+  if (l.film.z > 0.0 && l.film.x > 0.0 && above) {
     // The base under the film: the dielectric's IOR, or for a conductor its complex IOR; the
     // Schlick metal has no physical IOR, so it is taken from its F0 (Gulbrandsen 2014, n for
     // k = 0) as the spec suggests ("Thin-film iridescence").
@@ -155,6 +166,7 @@ vec3 mxc_microfacet_reflect(MxcLobe l, vec3 wo, vec3 wi) {
   return f * mxc_ggx_d(h, l.alpha) * mxc_ggx_g2(wo, wi, l.alpha) / (4.0 * wo.z);
 }
 
+#ifdef MXC_TRANSMISSION
 // f |cos| of the transmission (Walter et al. 2007, eq. 21) with the roles arranged so that its
 // integral over wi is the transmittance (1 - F) seen from wo: flux is conserved, R + T = 1.
 vec3 mxc_dielectric_transmit(MxcLobe l, vec3 wo, vec3 wi) {
@@ -184,6 +196,7 @@ vec3 mxc_dielectric_transmit(MxcLobe l, vec3 wo, vec3 wi) {
   float value = abs(ho * hi) * eta * eta * mxc_ggx_d(h, l.alpha) * g / (abs(wo.z) * denom);
   return value * f * l.c1;
 }
+#endif
 
 #endif
 
@@ -289,7 +302,7 @@ vec3 mxc_lobe_albedo_scaled(MxcLobe l, vec3 wo, vec3 ms) {
     if (l.kind == MXC_LOBE_DIELECTRIC && !mxc_is_delta(l.alpha)) {
       vec3 e = vec3(mxc_dielectric_albedo(mu, alpha, l.eta));
 #ifdef MXC_THIN_FILM
-      if (l.film.z > 0.0) {
+      if (l.film.z > 0.0 && l.film.x > 0.0) {
         // With a film, the tabulated albedo of the bare interface scaled by how much the film
         // changes the Fresnel factor at this view (exact for a smooth interface).
         MxcLobe bare = l;
@@ -349,8 +362,12 @@ vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi) {
         }
         return mxc_microfacet_reflect(l, wo, wi);
       }
-      if ((l.mode & MXC_TRANSMIT) == 0 || (l.mode & MXC_THIN_WALL) != 0) return vec3(0.0);
+#ifdef MXC_TRANSMISSION
+      if (!mxc_lobe_transmits(l) || (l.mode & MXC_THIN_WALL) != 0) return vec3(0.0);
       return mxc_dielectric_transmit(l, wo, wi);
+#else
+      return vec3(0.0);
+#endif
     case MXC_LOBE_CONDUCTOR:
     case MXC_LOBE_SCHLICK:
       return mxc_microfacet_reflect(l, wo, wi);
@@ -411,9 +428,10 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi) {
         // Reflection is chosen with probability F when the lobe also transmits (a thin sheet
         // included: its transmission is the delta straight through).
         float fr = mxc_mean(mxc_lobe_fresnel(l, max(dot(o, h), 0.0), above));
-        return p * ((l.mode & MXC_TRANSMIT) != 0 && (l.mode & MXC_REFLECT) != 0 ? fr : 1.0);
+        return p * (mxc_lobe_transmits(l) && (l.mode & MXC_REFLECT) != 0 ? fr : 1.0);
       }
-      if (l.kind != MXC_LOBE_DIELECTRIC || (l.mode & MXC_TRANSMIT) == 0 || (l.mode & MXC_THIN_WALL) != 0) return 0.0;
+#ifdef MXC_TRANSMISSION
+      if (l.kind != MXC_LOBE_DIELECTRIC || !mxc_lobe_transmits(l) || (l.mode & MXC_THIN_WALL) != 0) return 0.0;
       float eta = mxc_lobe_eta(l, above);
       vec3 h = -(o + eta * i);
       if (dot(h, h) <= 1e-20) return 0.0;
@@ -428,6 +446,9 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi) {
       float fr = (l.mode & MXC_REFLECT) != 0 ? 1.0 - ft : 0.0;
       // Transmission chosen with probability 1 - F (all of it when reflection is off).
       return mxc_ggx_pdf_vndf(o, h, l.alpha) * (fr > 0.0 ? ft : 1.0) * eta * eta * abs(hi) / denom;
+#else
+      return 0.0;
+#endif
     }
 #endif
 #ifdef MXC_HAS_TRANSLUCENT
@@ -468,7 +489,7 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u) {
       bool delta = mxc_is_delta(l.alpha);
       vec3 m = delta ? vec3(0.0, 0.0, 1.0) : mxc_ggx_sample_vndf(o, l.alpha, u.xy);
       float hm = dot(o, m);
-      bool transmits = l.kind == MXC_LOBE_DIELECTRIC && (l.mode & MXC_TRANSMIT) != 0;
+      bool transmits = l.kind == MXC_LOBE_DIELECTRIC && mxc_lobe_transmits(l);
       bool reflects = l.kind != MXC_LOBE_DIELECTRIC || (l.mode & MXC_REFLECT) != 0;
       vec3 f = mxc_lobe_fresnel(l, max(hm, 0.0), above);
       // Reflection or transmission is chosen by the mean Fresnel (a thin film colours F); the
@@ -492,6 +513,7 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u) {
         return s;
       }
       // Transmission.
+#ifdef MXC_TRANSMISSION
       if ((l.mode & MXC_THIN_WALL) != 0) {
         // A thin sheet: the ray passes straight through, attenuated by (1 - F).
         s.wi = -wo;
@@ -514,7 +536,8 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u) {
         s.pdf = mxc_lobe_pdf(l, wo, s.wi);
       }
       s.valid = s.pdf > 0.0;
-      return s;
+#endif
+      return s;  // without MXC_TRANSMISSION, pReflect = 1: not reached
     }
 #endif
 #if defined(MXC_HAS_TRANSLUCENT) || defined(MXC_HAS_SHEET)

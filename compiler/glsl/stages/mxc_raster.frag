@@ -30,11 +30,23 @@ vec3 mxc_sky(vec3 d) {
   return mix(horizon, ground, sqrt(-y));               // -y > 0
 }
 
+// What the scene has, from the specialization constants where the pipeline has them (then the
+// code of what the scene does not have folds away), else from the view block.
+int mxc_environment_code() { return MXC_ENVIRONMENT != MXC_FROM_VIEW ? MXC_ENVIRONMENT : mxc_view.counts.y; }
+int mxc_light_count() {
+  return min(MXC_LIGHT_COUNT != MXC_FROM_VIEW ? MXC_LIGHT_COUNT : mxc_view.counts.x, MXC_MAX_LIGHTS);
+}
+int mxc_light_kinds() {
+  const int all = (1 << MXC_LIGHT_DIRECTIONAL) | (1 << MXC_LIGHT_POINT) | (1 << MXC_LIGHT_SPOT);
+  return MXC_LIGHT_KINDS != MXC_FROM_VIEW ? MXC_LIGHT_KINDS : all;
+}
+
 // Radiance arriving from world direction d.
 vec3 mxc_environment(vec3 d) {
-  if (MXC_ENVIRONMENT == MXC_ENV_WHITE) return vec3(mxc_view.environment.x);
-  if (MXC_ENVIRONMENT == MXC_ENV_SKY) return mxc_view.environment.x * mxc_sky(d);
-  if (MXC_ENVIRONMENT == MXC_ENV_MAP) {
+  int code = mxc_environment_code();
+  if (code == MXC_ENV_WHITE) return vec3(mxc_view.environment.x);
+  if (code == MXC_ENV_SKY) return mxc_view.environment.x * mxc_sky(d);
+  if (code == MXC_ENV_MAP) {
     return mxc_view.environment.x * mxc_env_lookup(mxc_env_to_map(d, mxc_view.environment.z));
   }
   return vec3(0.0);
@@ -106,9 +118,10 @@ void main() {
   // work is batched: batch b draws environment sample b (the closure's direction and, for an
   // image, the image's), batch 0 also takes the lights, and one inner loop evaluates the
   // batch's directions. Each strategy's code then runs once per batch, as it would unbatched.
-  int lights = min(mxc_view.counts.x, MXC_MAX_LIGHTS);
-  bool image = MXC_ENVIRONMENT == MXC_ENV_MAP;
-  int n = MXC_ENVIRONMENT != MXC_ENV_NONE ? max(mxc_view.counts.w, 1) : 0;
+  int lights = mxc_light_count();
+  int kinds = mxc_light_kinds();
+  bool image = mxc_environment_code() == MXC_ENV_MAP;
+  int n = mxc_environment_code() != MXC_ENV_NONE ? max(mxc_view.counts.w, 1) : 0;
   uint seed = mxc_pcg(uint(gl_FragCoord.x) + mxc_pcg(uint(gl_FragCoord.y) + mxc_pcg(uint(mxc_view.counts.z))));
   // The closure sample's three numbers (lobe choice, then direction) and the image sample's
   // cell follow a 4D Halton sequence (bases 2, 3, 5, 7; Halton 1964) over the pixel's samples,
@@ -135,7 +148,16 @@ void main() {
     // The closure's sample. Above the surface an image's samples reach the same directions: the
     // two are weighted against each other. Below it (transmission) and for delta lobes only the
     // closure reaches the direction, with weight 1.
-    MxcSample smp = mxc_closure_sample_direction(c, wo, vec3(choice.z, choice.w, choice.x));
+    // Not drawn at all without an environment (n = 0: a constant where the pipeline is
+    // specialized, and the sampling code is then not compiled).
+    MxcSample smp;
+    smp.valid = false;
+    smp.evaluate = false;
+    smp.delta = false;
+    smp.pdf = 0.0;
+    smp.weight = vec3(0.0);
+    smp.wi = N;
+    if (n > 0) smp = mxc_closure_sample_direction(c, wo, vec3(choice.z, choice.w, choice.x));
     bool above = dot(smp.wi, N) > 0.0;
     vec3 seen = smp.valid ? mxc_environment(above ? smp.wi : mxc_exit_direction(-wo, smp.wi)) : vec3(0.0);
     if (b < n && smp.valid && !smp.evaluate) {  // weighted by the closure (a delta lobe, a walk)
@@ -160,18 +182,21 @@ void main() {
       vec3 incoming = vec3(0.0);  // a light's irradiance, or the radiance arriving along wi
       bool use = true;            // wi contributes
       // 0: light j, 1: the closure's sample, 2: the image's sample.
-      int strategy = j < batchLights ? 0 : j == batchLights + evaluatedClosureSamples - 1 ? 1 : 2;
+      int strategy = n == 0 || j < batchLights ? 0 : j == batchLights + evaluatedClosureSamples - 1 ? 1 : 2;
       if (strategy == 0) {
         vec4 light = mxc_view.lightVector[j];
         incoming = mxc_view.lightRadiance[j].rgb;
-        if (light.w == 0.0) {
+        // Only the kinds the scene has (constant where the pipeline is specialized).
+        const int directionalOnly = 1 << MXC_LIGHT_DIRECTIONAL;
+        bool directional = kinds == directionalOnly || ((kinds & directionalOnly) != 0 && light.w == float(MXC_LIGHT_DIRECTIONAL));
+        if (directional) {
           wi = mxc_safe_normalize(light.xyz, N);
         } else {
           vec3 d = light.xyz - vPosition;
           float d2 = max(dot(d, d), 1e-8);  // a light inside the surface point: bounded
           wi = d * inversesqrt(d2);
           incoming /= d2;  // inverse-square falloff of a point light's intensity
-          if (light.w == 2.0) {
+          if ((kinds & (1 << MXC_LIGHT_SPOT)) != 0 && light.w == float(MXC_LIGHT_SPOT)) {
             // A spot light: full inside the inner cone, none outside the outer one, a smooth
             // fade between (cosInner > cosOuter, checked where the light is made).
             vec4 spot = mxc_view.lightSpot[j];

@@ -5,6 +5,7 @@
 #define MXC_MAX_LOBES 1
 #define MXC_ACCURACY_BALANCED
 #define MXC_HAS_DIELECTRIC
+#define MXC_TRANSMISSION
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
@@ -18,7 +19,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -33,7 +34,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 3;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v5;
   lobe0.T = v6;
   lobe0.alpha = vec2(0.0);
@@ -46,6 +46,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);

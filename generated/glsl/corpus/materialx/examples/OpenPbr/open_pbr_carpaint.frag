@@ -19,7 +19,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -34,7 +34,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v5;
   lobe0.T = v6;
   lobe0.alpha = vec2(4e-04);
@@ -47,14 +46,12 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 dark2 = mxc_coat_darkening(1.6, vec3(0.1, 0.6, 0.9), 1.0, 1.0, dot(wo, lobe0.N));
   vec3 w3 = ((vec3(1.0) - e1) * dark2);
   MxcLobe lobe4;
   lobe4.kind = MXC_LOBE_DIELECTRIC;
   lobe4.mode = 1;
-  lobe4.weight = w3;
   lobe4.N = v5;
   lobe4.T = v6;
   lobe4.alpha = vec2(0.09);
@@ -67,13 +64,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe4.film = vec3(0.0);
   lobe4.tau = vec3(0.0);
   lobe4.tauEta = 1.0;
-  c.lobes[1] = lobe4;
   vec3 e5 = mxc_lobe_layer_albedo(lobe4, mxc_to_local(mxc_frame(lobe4.N, lobe4.T), wo));
   vec3 w6 = (w3 * (vec3(1.0) - e5));
   MxcLobe lobe7;
   lobe7.kind = MXC_LOBE_EON;
   lobe7.mode = 1;
-  lobe7.weight = w6;
   lobe7.N = v5;
   lobe7.T = g.T;
   lobe7.alpha = vec2(0.0);
@@ -86,6 +81,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe7.film = vec3(0.0);
   lobe7.tau = vec3(0.0);
   lobe7.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
+  c.lobes[0] = lobe0;
+  lobe4.weight = w3;
+  c.lobes[1] = lobe4;
+  lobe7.weight = w6;
   c.lobes[2] = lobe7;
   c.count = 3;
   mxc_closure_prepare(c, wo);

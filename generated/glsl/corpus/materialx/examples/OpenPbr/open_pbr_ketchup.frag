@@ -19,7 +19,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -34,7 +34,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v4;
   lobe0.T = v5;
   lobe0.alpha = vec2(0.0);
@@ -47,12 +46,10 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   MxcLobe lobe2;
   lobe2.kind = MXC_LOBE_EON;
   lobe2.mode = 0;
-  lobe2.weight = (vec3(1.0) - e1);
   lobe2.N = lobe0.N;
   lobe2.T = lobe0.T;
   lobe2.alpha = vec2(0.0);
@@ -65,6 +62,9 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe2.film = vec3(0.0);
   lobe2.tau = vec3(0.0);
   lobe2.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
+  c.lobes[0] = lobe0;
+  lobe2.weight = (vec3(1.0) - e1);
   c.lobes[1] = lobe2;
   c.count = 2;
   mxc_closure_prepare(c, wo);

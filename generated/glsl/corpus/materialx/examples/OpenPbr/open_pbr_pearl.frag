@@ -20,7 +20,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -35,7 +35,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v5;
   lobe0.T = v6;
   lobe0.alpha = vec2(0.0225);
@@ -48,14 +47,12 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 dark2 = mxc_coat_darkening(1.68, vec3(0.8, 0.75, 0.7), 0.9979174, 1.0, dot(wo, lobe0.N));
   vec3 w3 = ((vec3(1.0) - e1) * dark2);
   MxcLobe lobe4;
   lobe4.kind = MXC_LOBE_DIELECTRIC;
   lobe4.mode = 1;
-  lobe4.weight = w3;
   lobe4.N = v5;
   lobe4.T = v6;
   lobe4.alpha = vec2(0.122499995);
@@ -68,12 +65,10 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe4.film = vec3(420.0, 1.1904762, 1.0);
   lobe4.tau = vec3(0.0);
   lobe4.tauEta = 1.0;
-  c.lobes[1] = lobe4;
   vec3 e5 = mxc_lobe_layer_albedo(lobe4, mxc_to_local(mxc_frame(lobe4.N, lobe4.T), wo));
   MxcLobe lobe6;
   lobe6.kind = MXC_LOBE_EON;
   lobe6.mode = 0;
-  lobe6.weight = (w3 * (vec3(1.0) - e5));
   lobe6.N = lobe4.N;
   lobe6.T = lobe4.T;
   lobe6.alpha = vec2(0.0);
@@ -86,6 +81,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe6.film = vec3(0.0);
   lobe6.tau = vec3(0.0);
   lobe6.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
+  c.lobes[0] = lobe0;
+  lobe4.weight = w3;
+  c.lobes[1] = lobe4;
+  lobe6.weight = (w3 * (vec3(1.0) - e5));
   c.lobes[2] = lobe6;
   c.count = 3;
   mxc_closure_prepare(c, wo);

@@ -6,6 +6,7 @@
 #define MXC_ACCURACY_BALANCED
 #define MXC_HAS_CONDUCTOR
 #define MXC_HAS_DIELECTRIC
+#define MXC_ABSORPTION
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
@@ -20,7 +21,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -48,7 +49,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v8;
   lobe0.T = v15;
   lobe0.alpha = v14;
@@ -61,14 +61,12 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 tau2 = v24;
   vec3 w3 = ((vec3(1.0) - e1) * mxc_absorption(tau2, 1.5, clamp(dot(wo, lobe0.N), 0.0, 1.0)));
   MxcLobe lobe4;
   lobe4.kind = MXC_LOBE_CONDUCTOR;
   lobe4.mode = 1;
-  lobe4.weight = w3;
   lobe4.N = v8;
   lobe4.T = v15;
   lobe4.alpha = v14;
@@ -81,6 +79,9 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe4.film = vec3(0.0);
   lobe4.tau = tau2;
   lobe4.tauEta = 1.5;
+  lobe0.weight = vec3(1.0);
+  c.lobes[0] = lobe0;
+  lobe4.weight = w3;
   c.lobes[1] = lobe4;
   c.count = 2;
   mxc_closure_prepare(c, wo);

@@ -19,7 +19,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -34,7 +34,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v4;
   lobe0.T = v8;
   lobe0.alpha = vec2(1e-07);
@@ -47,13 +46,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 w2 = (vec3(1.0) - e1);
   MxcLobe lobe3;
   lobe3.kind = MXC_LOBE_DIELECTRIC;
   lobe3.mode = 1;
-  lobe3.weight = w2;
   lobe3.N = v4;
   lobe3.T = v8;
   lobe3.alpha = vec2(0.22627419, 0.11313709);
@@ -66,13 +63,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.film = vec3(0.0);
   lobe3.tau = vec3(0.0);
   lobe3.tauEta = 1.0;
-  c.lobes[1] = lobe3;
   vec3 e4 = mxc_lobe_layer_albedo(lobe3, mxc_to_local(mxc_frame(lobe3.N, lobe3.T), wo));
   vec3 w5 = (w2 * (vec3(1.0) - e4));
   MxcLobe lobe6;
   lobe6.kind = MXC_LOBE_DIFFUSE;
   lobe6.mode = 1;
-  lobe6.weight = (w5 * 0.5);
   lobe6.N = v4;
   lobe6.T = g.T;
   lobe6.alpha = vec2(0.0);
@@ -85,6 +80,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe6.film = vec3(0.0);
   lobe6.tau = vec3(0.0);
   lobe6.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
+  c.lobes[0] = lobe0;
+  lobe3.weight = w2;
+  c.lobes[1] = lobe3;
+  lobe6.weight = (w5 * 0.5);
   c.lobes[2] = lobe6;
   c.count = 3;
   mxc_closure_prepare(c, wo);

@@ -6,6 +6,7 @@
 #define MXC_ACCURACY_BALANCED
 #define MXC_HAS_CONDUCTOR
 #define MXC_HAS_DIELECTRIC
+#define MXC_ABSORPTION
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
@@ -19,7 +20,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -34,7 +35,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v4;
   lobe0.T = v7;
   lobe0.alpha = vec2(0.040000003);
@@ -47,14 +47,12 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 tau2 = vec3(0.017979505, 0.4887335, 0.6770434);
   vec3 w3 = ((vec3(1.0) - e1) * mxc_absorption(tau2, 1.5, clamp(dot(wo, lobe0.N), 0.0, 1.0)));
   MxcLobe lobe4;
   lobe4.kind = MXC_LOBE_CONDUCTOR;
   lobe4.mode = 1;
-  lobe4.weight = w3;
   lobe4.N = v4;
   lobe4.T = v7;
   lobe4.alpha = vec2(0.0625);
@@ -67,6 +65,9 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe4.film = vec3(0.0);
   lobe4.tau = tau2;
   lobe4.tauEta = 1.5;
+  lobe0.weight = vec3(1.0);
+  c.lobes[0] = lobe0;
+  lobe4.weight = w3;
   c.lobes[1] = lobe4;
   c.count = 2;
   mxc_closure_prepare(c, wo);

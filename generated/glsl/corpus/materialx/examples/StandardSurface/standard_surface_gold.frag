@@ -18,7 +18,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -33,7 +33,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_CONDUCTOR;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v2;
   lobe0.T = v4;
   lobe0.alpha = vec2(4e-04);
@@ -46,6 +45,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);

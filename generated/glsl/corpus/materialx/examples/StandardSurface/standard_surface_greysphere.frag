@@ -19,7 +19,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -34,7 +34,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v4;
   lobe0.T = v7;
   lobe0.alpha = vec2(0.48999998);
@@ -47,13 +46,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 w2 = (vec3(1.0) - e1);
   MxcLobe lobe3;
   lobe3.kind = MXC_LOBE_DIFFUSE;
   lobe3.mode = 1;
-  lobe3.weight = w2;
   lobe3.N = v4;
   lobe3.T = g.T;
   lobe3.alpha = vec2(0.0);
@@ -66,6 +63,9 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.film = vec3(0.0);
   lobe3.tau = vec3(0.0);
   lobe3.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
+  c.lobes[0] = lobe0;
+  lobe3.weight = w2;
   c.lobes[1] = lobe3;
   c.count = 2;
   mxc_closure_prepare(c, wo);

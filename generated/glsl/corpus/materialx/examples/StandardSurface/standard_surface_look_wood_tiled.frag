@@ -20,7 +20,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -48,7 +48,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;
-  lobe0.weight = vec3(0.1);
   lobe0.N = v14;
   lobe0.T = v24;
   lobe0.alpha = vec2(0.056568548, 0.028284272);
@@ -61,13 +60,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 w2 = (0.9 + (0.1 * (vec3(1.0) - e1)));
   MxcLobe lobe3;
   lobe3.kind = MXC_LOBE_DIELECTRIC;
   lobe3.mode = 1;
-  lobe3.weight = (w2 * 0.4);
   lobe3.N = v14;
   lobe3.T = v24;
   lobe3.alpha = v23;
@@ -80,13 +77,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.film = vec3(0.0);
   lobe3.tau = vec3(0.0);
   lobe3.tauEta = 1.0;
-  c.lobes[1] = lobe3;
   vec3 e4 = mxc_lobe_layer_albedo(lobe3, mxc_to_local(mxc_frame(lobe3.N, lobe3.T), wo));
   vec3 w5 = (w2 * (0.6 + (0.4 * (vec3(1.0) - e4))));
   MxcLobe lobe6;
   lobe6.kind = MXC_LOBE_DIFFUSE;
   lobe6.mode = 1;
-  lobe6.weight = w5;
   lobe6.N = v14;
   lobe6.T = g.T;
   lobe6.alpha = vec2(0.0);
@@ -99,6 +94,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe6.film = vec3(0.0);
   lobe6.tau = vec3(0.0);
   lobe6.tauEta = 1.0;
+  lobe0.weight = vec3(0.1);
+  c.lobes[0] = lobe0;
+  lobe3.weight = (w2 * 0.4);
+  c.lobes[1] = lobe3;
+  lobe6.weight = w5;
   c.lobes[2] = lobe6;
   c.count = 3;
   mxc_closure_prepare(c, wo);
@@ -130,7 +130,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -154,7 +154,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v16;
   lobe0.T = v19;
   lobe0.alpha = vec2(0.48999998);
@@ -167,13 +166,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 w2 = (vec3(1.0) - e1);
   MxcLobe lobe3;
   lobe3.kind = MXC_LOBE_DIFFUSE;
   lobe3.mode = 1;
-  lobe3.weight = w2;
   lobe3.N = v16;
   lobe3.T = g.T;
   lobe3.alpha = vec2(0.0);
@@ -186,6 +183,9 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.film = vec3(0.0);
   lobe3.tau = vec3(0.0);
   lobe3.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
+  c.lobes[0] = lobe0;
+  lobe3.weight = w2;
   c.lobes[1] = lobe3;
   c.count = 2;
   mxc_closure_prepare(c, wo);

@@ -18,7 +18,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -33,7 +33,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_SCHLICK;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v2;
   lobe0.T = v3;
   lobe0.alpha = vec2(0.02);
@@ -46,6 +45,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);
@@ -75,7 +75,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -90,7 +90,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_SCHLICK;
   lobe0.mode = 0;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v2;
   lobe0.T = v3;
   lobe0.alpha = vec2(0.02);
@@ -103,6 +102,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);
@@ -132,7 +132,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -147,7 +147,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_SCHLICK;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v2;
   lobe0.T = v3;
   lobe0.alpha = vec2(0.02);
@@ -160,6 +159,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);
@@ -189,7 +189,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -204,7 +204,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_SCHLICK;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v2;
   lobe0.T = v3;
   lobe0.alpha = vec2(0.02);
@@ -217,13 +216,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 w2 = (vec3(1.0) - e1);
   MxcLobe lobe3;
   lobe3.kind = MXC_LOBE_SCHLICK;
   lobe3.mode = 0;
-  lobe3.weight = w2;
   lobe3.N = v2;
   lobe3.T = v3;
   lobe3.alpha = vec2(0.02);
@@ -236,6 +233,9 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.film = vec3(0.0);
   lobe3.tau = vec3(0.0);
   lobe3.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
+  c.lobes[0] = lobe0;
+  lobe3.weight = w2;
   c.lobes[1] = lobe3;
   c.count = 2;
   mxc_closure_prepare(c, wo);
@@ -265,7 +265,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -280,7 +280,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_SCHLICK;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v3;
   lobe0.T = v4;
   lobe0.alpha = vec2(0.02);
@@ -293,6 +292,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);
@@ -322,7 +322,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -337,7 +337,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_SCHLICK;
   lobe0.mode = 0;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v3;
   lobe0.T = v4;
   lobe0.alpha = vec2(0.02);
@@ -350,6 +349,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);
@@ -379,7 +379,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -394,7 +394,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_SCHLICK;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v3;
   lobe0.T = v4;
   lobe0.alpha = vec2(0.02);
@@ -407,6 +406,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);
@@ -436,7 +436,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -451,7 +451,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_SCHLICK;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v3;
   lobe0.T = v4;
   lobe0.alpha = vec2(0.02);
@@ -464,13 +463,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 w2 = (vec3(1.0) - e1);
   MxcLobe lobe3;
   lobe3.kind = MXC_LOBE_SCHLICK;
   lobe3.mode = 0;
-  lobe3.weight = w2;
   lobe3.N = v3;
   lobe3.T = v4;
   lobe3.alpha = vec2(0.02);
@@ -483,6 +480,9 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.film = vec3(0.0);
   lobe3.tau = vec3(0.0);
   lobe3.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
+  c.lobes[0] = lobe0;
+  lobe3.weight = w2;
   c.lobes[1] = lobe3;
   c.count = 2;
   mxc_closure_prepare(c, wo);
@@ -512,7 +512,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -527,7 +527,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_SCHLICK;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v3;
   lobe0.T = v4;
   lobe0.alpha = vec2(0.02);
@@ -540,6 +539,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);

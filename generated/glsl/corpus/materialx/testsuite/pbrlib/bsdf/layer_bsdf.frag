@@ -21,7 +21,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -36,7 +36,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v3;
   lobe0.T = v4;
   lobe0.alpha = vec2(0.05);
@@ -49,13 +48,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 w2 = (vec3(1.0) - e1);
   MxcLobe lobe3;
   lobe3.kind = MXC_LOBE_DIELECTRIC;
   lobe3.mode = 1;
-  lobe3.weight = w2;
   lobe3.N = v3;
   lobe3.T = v4;
   lobe3.alpha = vec2(0.05);
@@ -68,13 +65,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.film = vec3(0.0);
   lobe3.tau = vec3(0.0);
   lobe3.tauEta = 1.0;
-  c.lobes[1] = lobe3;
   vec3 e4 = mxc_lobe_layer_albedo(lobe3, mxc_to_local(mxc_frame(lobe3.N, lobe3.T), wo));
   vec3 w5 = (w2 * (vec3(1.0) - e4));
   MxcLobe lobe6;
   lobe6.kind = MXC_LOBE_SHEEN;
   lobe6.mode = 1;
-  lobe6.weight = w5;
   lobe6.N = v3;
   lobe6.T = g.T;
   lobe6.alpha = vec2(0.0);
@@ -87,13 +82,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe6.film = vec3(0.0);
   lobe6.tau = vec3(0.0);
   lobe6.tauEta = 1.0;
-  c.lobes[2] = lobe6;
   vec3 e7 = mxc_lobe_layer_albedo(lobe6, mxc_to_local(mxc_frame(lobe6.N, lobe6.T), wo));
   vec3 w8 = (w5 * (vec3(1.0) - e7));
   MxcLobe lobe9;
   lobe9.kind = MXC_LOBE_DIFFUSE;
   lobe9.mode = 1;
-  lobe9.weight = w8;
   lobe9.N = v3;
   lobe9.T = g.T;
   lobe9.alpha = vec2(0.0);
@@ -106,6 +99,13 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe9.film = vec3(0.0);
   lobe9.tau = vec3(0.0);
   lobe9.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
+  c.lobes[0] = lobe0;
+  lobe3.weight = w2;
+  c.lobes[1] = lobe3;
+  lobe6.weight = w5;
+  c.lobes[2] = lobe6;
+  lobe9.weight = w8;
   c.lobes[3] = lobe9;
   c.count = 4;
   mxc_closure_prepare(c, wo);
@@ -122,6 +122,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_MAX_LOBES 2
 #define MXC_ACCURACY_BALANCED
 #define MXC_HAS_DIELECTRIC
+#define MXC_TRANSMISSION
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
@@ -135,7 +136,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -150,7 +151,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v2;
   lobe0.T = v3;
   lobe0.alpha = vec2(0.05);
@@ -163,13 +163,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  c.lobes[0] = lobe0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
   vec3 w2 = (vec3(1.0) - e1);
   MxcLobe lobe3;
   lobe3.kind = MXC_LOBE_DIELECTRIC;
   lobe3.mode = 2;
-  lobe3.weight = w2;
   lobe3.N = v2;
   lobe3.T = v3;
   lobe3.alpha = vec2(0.05);
@@ -182,8 +180,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.film = vec3(0.0);
   lobe3.tau = vec3(0.0);
   lobe3.tauEta = 1.0;
+  lobe3.c1 *= exp(-vec3(0.8, 0.8, 0.1) * MXC_BULK_PATH);
+  lobe0.weight = vec3(1.0);
+  c.lobes[0] = lobe0;
+  lobe3.weight = w2;
   c.lobes[1] = lobe3;
-  c.lobes[1].c1 *= exp(-vec3(0.8, 0.8, 0.1) * MXC_BULK_PATH);
   c.count = 2;
   mxc_closure_prepare(c, wo);
 }

@@ -18,7 +18,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -33,7 +33,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe1;
   lobe1.kind = MXC_LOBE_DIFFUSE;
   lobe1.mode = 1;
-  lobe1.weight = (vec3(1.0) - m0);
   lobe1.N = v2;
   lobe1.T = g.T;
   lobe1.alpha = vec2(0.0);
@@ -46,11 +45,9 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe1.film = vec3(0.0);
   lobe1.tau = vec3(0.0);
   lobe1.tauEta = 1.0;
-  c.lobes[0] = lobe1;
   MxcLobe lobe2;
   lobe2.kind = MXC_LOBE_DIFFUSE;
   lobe2.mode = 1;
-  lobe2.weight = m0;
   lobe2.N = v2;
   lobe2.T = g.T;
   lobe2.alpha = vec2(0.0);
@@ -63,6 +60,9 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe2.film = vec3(0.0);
   lobe2.tau = vec3(0.0);
   lobe2.tauEta = 1.0;
+  lobe1.weight = (vec3(1.0) - m0);
+  c.lobes[0] = lobe1;
+  lobe2.weight = m0;
   c.lobes[1] = lobe2;
   c.count = 2;
   mxc_closure_prepare(c, wo);
@@ -93,7 +93,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -109,7 +109,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe1;
   lobe1.kind = MXC_LOBE_DIFFUSE;
   lobe1.mode = 1;
-  lobe1.weight = (vec3(1.0) - m0);
   lobe1.N = mxc_safe_normalize(vec3(0.0), g.N);
   lobe1.T = g.T;
   lobe1.alpha = vec2(0.0);
@@ -122,11 +121,9 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe1.film = vec3(0.0);
   lobe1.tau = vec3(0.0);
   lobe1.tauEta = 1.0;
-  c.lobes[0] = lobe1;
   MxcLobe lobe2;
   lobe2.kind = MXC_LOBE_DIELECTRIC;
   lobe2.mode = 1;
-  lobe2.weight = m0;
   lobe2.N = v2;
   lobe2.T = v3;
   lobe2.alpha = vec2(0.05);
@@ -139,6 +136,9 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe2.film = vec3(0.0);
   lobe2.tau = vec3(0.0);
   lobe2.tauEta = 1.0;
+  lobe1.weight = (vec3(1.0) - m0);
+  c.lobes[0] = lobe1;
+  lobe2.weight = m0;
   c.lobes[1] = lobe2;
   c.count = 2;
   mxc_closure_prepare(c, wo);
@@ -168,7 +168,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -182,7 +182,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_TRANSLUCENT;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v0;
   lobe0.T = g.T;
   lobe0.alpha = vec2(0.0);
@@ -195,6 +194,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);

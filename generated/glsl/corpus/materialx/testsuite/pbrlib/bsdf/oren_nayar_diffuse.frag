@@ -18,7 +18,7 @@
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -32,7 +32,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_EON;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v2;
   lobe0.T = g.T;
   lobe0.alpha = vec2(0.0);
@@ -45,6 +44,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);
@@ -74,7 +74,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -88,7 +88,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_EON;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v2;
   lobe0.T = g.T;
   lobe0.alpha = vec2(0.0);
@@ -101,6 +100,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);
@@ -130,7 +130,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -144,7 +144,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_EON;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v2;
   lobe0.T = g.T;
   lobe0.alpha = vec2(0.0);
@@ -157,6 +156,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);
@@ -186,7 +186,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -200,7 +200,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_EON;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v2;
   lobe0.T = g.T;
   lobe0.alpha = vec2(0.0);
@@ -213,6 +212,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);
@@ -242,7 +242,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
-layout(set = 0, binding = 2, std140) uniform MxcParameters {
+layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 0) uint missing_textures;
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
@@ -256,7 +256,6 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_EON;
   lobe0.mode = 1;
-  lobe0.weight = vec3(1.0);
   lobe0.N = v2;
   lobe0.T = g.T;
   lobe0.alpha = vec2(0.0);
@@ -269,6 +268,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
+  lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;
   mxc_closure_prepare(c, wo);
