@@ -77,6 +77,10 @@ void addInputOptions(CLI::App& command, MaterialOptions& options) {
             return parseAccuracy(text) ? std::string() : fmt::format("'{}' is not a tier ({})", text, names);
           },
           ""));
+  command.add_flag("--no-specialize", options.noSpecialize,
+                   "Compile the general shader, for comparison: every input of the shading node a uniform, every "
+                   "effect of the shading model and the library's refraction and absorption code compiled in, and "
+                   "(render) the environment and lights read at run time instead of fixed in the pipeline");
   command
       .add_option("--reference-samples", options.referenceSamples,
                   "With --accuracy reference: random walks averaged per evaluation of f cos (default: 1 for render, "
@@ -104,7 +108,7 @@ void registerInspect(CLI::App& app, int& exitCode) {
       "inspect",
       "Show a document: its materials, their shader nodes with every input (set or default, with its source "
       "line), and the resolved graph as an indented tree");
-  command->add_option("file", options->file, "The .mtlx document")->required();
+  command->add_option("file", options->file, "The .mtlx document (with --effects: or a scene .json)")->required();
   auto* json = command->add_flag("--json", options->json, "Write JSON (schema mxc-inspect-1, docs/inspect-json.md)");
   auto* dot = command->add_flag("--dot", options->dot, "Write a Graphviz DOT graph");
   json->excludes(dot);
@@ -112,6 +116,13 @@ void registerInspect(CLI::App& app, int& exitCode) {
                                "Show the slab IR of each material after the passes (with --json: schema mxc-ir-1, "
                                "docs/ir-json.md)");
   ir->excludes(dot);
+  auto* effects = command->add_flag(
+      "--effects", options->effects,
+      "List, per material, each effect its shader simulates or leaves out and why: the input value at its line, or "
+      "the scene fact (a scene file's lights and environment; for a document, mxc render's default scene). With "
+      "--json: schema mxc-effects-1 (docs/specialization.md)");
+  effects->excludes(dot);
+  effects->excludes(ir);
   command->add_flag("--shading-model-graphs", options->shadingModelGraphs,
                     "With --ir: lower open_pbr_surface and standard_surface through the node graphs that implement "
                     "them in the libraries (MaterialX's, with --library) instead of mxc's own lowering")

@@ -16,6 +16,7 @@
 namespace mxc::cli {
 
 int runInspect(const InspectOptions& options) {
+  if (options.effects) return runInspectEffects(options);
   const std::string output = options.output.empty() ? "-" : options.output;
   OutputSet outputs;
   if (printError(outputs.declare(output, "-o"))) return kOutputFailed;

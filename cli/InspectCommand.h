@@ -18,10 +18,13 @@ struct InspectOptions {
   bool partial = false;
   bool ir = false;
   bool shadingModelGraphs = false;
+  bool effects = false;  ///< --effects: what each material's shader simulates and why (cli/InspectEffects.cpp)
   MaterialOptions inputs;  ///< --set and --param, for --ir
   LibraryOptions libraries;
 };
 
 int runInspect(const InspectOptions& options);
+/// `inspect --effects DOC|SCENE`.
+int runInspectEffects(const InspectOptions& options);
 
 }  // namespace mxc::cli

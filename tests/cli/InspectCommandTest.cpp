@@ -60,6 +60,44 @@ TEST(InspectCommand, JsonFollowsTheSchema) {
   EXPECT_TRUE(found);
 }
 
+// --effects: each effect kept or dropped with the input behind it, and the scene's choices.
+TEST(InspectCommand, EffectsNameTheInputOrSceneFactBehindEachChoice) {
+  const std::string doc = corpus("materialx/examples/OpenPbr/open_pbr_default.mtlx");
+  CommandRun r = mxc("inspect --effects " + doc);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto line = [&](const std::string& text, const std::string& effect) {
+    const size_t at = text.find(effect);
+    return at == std::string::npos ? std::string() : text.substr(text.rfind('\n', at) + 1, text.find('\n', at) - text.rfind('\n', at) - 1);
+  };
+  EXPECT_NE(line(r.out, " coat ").find("dropped"), std::string::npos) << r.out;
+  EXPECT_NE(line(r.out, " coat ").find("coat_weight = 0 (line 32)"), std::string::npos) << r.out;
+  EXPECT_NE(line(r.out, " specular ").find("kept"), std::string::npos) << r.out;
+  EXPECT_NE(line(r.out, "environment lighting").find("kept"), std::string::npos) << r.out;
+  EXPECT_NE(line(r.out, "point and spot light code").find("dropped"), std::string::npos) << r.out;
+  EXPECT_NE(line(r.out, "refraction code").find("dropped"), std::string::npos) << r.out;
+
+  // A parameter keeps what it can switch on, and says so with its UI range.
+  CommandRun p = mxc("inspect --effects --param coat_weight " + doc);
+  ASSERT_EQ(p.exitCode, 0) << p.err;
+  EXPECT_NE(line(p.out, " coat ").find("kept"), std::string::npos) << p.out;
+  EXPECT_NE(line(p.out, " coat ").find("coat_weight is a parameter (UI range 0.0 to 1.0)"), std::string::npos) << p.out;
+
+  // A scene's lights and environment: the still life has a spot light and the sky; the glass
+  // transmits.
+  CommandRun scene = mxc("inspect --effects --json " + (sourceDir() / "examples/scenes/still_life.json").string());
+  ASSERT_EQ(scene.exitCode, 0) << scene.err;
+  nlohmann::json j = nlohmann::json::parse(scene.out);
+  EXPECT_EQ(j["schema"], "mxc-effects-1");
+  ASSERT_FALSE(j["materials"].empty());
+  for (const auto& m : j["materials"]) {
+    for (const auto& e : m["effects"]) {
+      if (e["effect"] == "point and spot light code" || e["effect"] == "environment lighting") {
+        EXPECT_TRUE(e["kept"].get<bool>()) << m["name"] << ": " << e["effect"];
+      }
+    }
+  }
+}
+
 TEST(InspectCommand, DotIsAGraphvizDigraph) {
   CommandRun r = mxc("inspect --dot " + corpus("materialx/examples/StandardSurface/standard_surface_brick_procedural.mtlx"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
