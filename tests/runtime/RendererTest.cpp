@@ -1,6 +1,7 @@
-// The raster renderer (runtime/Renderer): every corpus document renders to a finite image, a
-// white Lambertian sphere disappears into the white furnace, and renderEach gives each object
-// the image render() gives it alone.
+// The raster renderer (runtime/Renderer): a white Lambertian sphere disappears into the white
+// furnace, and renderEach gives each object the image render() gives it alone. (That every
+// corpus document renders to a finite image is checked by tests/corpus/SpecializationTest.cpp,
+// which renders each of them.)
 
 #include <gtest/gtest.h>
 
@@ -12,36 +13,6 @@ namespace mxc::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-class RenderCorpus : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(RenderCorpus, ImageIsFinite) {
-  Context context;
-  const fs::path path = sharedDir() / GetParam();
-  std::vector<ir::Material> materials = lowerFile(context, path);
-  ASSERT_FALSE(materials.empty());
-  rt::RenderSettings settings;
-  settings.width = settings.height = 24;
-  settings.frames = 2;
-  settings.lights.push_back({rt::Light::Kind::Directional, glm::normalize(glm::vec3(-1, 1, 1)), glm::vec3(1.0f), 2.0f});
-  settings.lights.push_back({rt::Light::Kind::Point, glm::vec3(2, 0, 2), glm::vec3(1.0f), 4.0f});
-  for (const ir::Material& m : materials) {
-    rt::RgbaImage image = render(m, settings, path.parent_path());
-    ASSERT_EQ(image.pixels.size(), 24u * 24u * 4u) << m.name;
-    size_t bad = 0, negative = 0;
-    for (float v : image.pixels) {
-      bad += std::isfinite(v) ? 0 : 1;
-      negative += v < 0.0f ? 1 : 0;
-    }
-    EXPECT_EQ(bad, 0u) << m.name << ": NaN or infinite pixel values";
-    EXPECT_EQ(negative, 0u) << m.name << ": negative pixel values";
-    EXPECT_GT(image.at(12, 12)[3], 0.0f) << m.name << ": the sphere does not cover the centre";
-  }
-  EXPECT_TRUE(Device::get().context.validationMessages().empty()) << Device::get().context.validationMessages().front();
-}
-
-INSTANTIATE_TEST_SUITE_P(Corpus, RenderCorpus, ::testing::ValuesIn(corpusDocuments()),
-                         corpusTestName);
 
 // A white Lambertian in a white environment reflects exactly the environment's radiance: every
 // covered pixel is 1 (cosine sampling makes each sample's weight exactly 1), the background 0.
