@@ -20,19 +20,9 @@ namespace {
 SceneFacts sceneFacts(const Scene& scene) {
   SceneFacts facts;
   facts.description = fmt::format("scene {}", scene.file.string());
-  switch (scene.environment.kind) {
-    case rt::Environment::None: facts.environment = glsl::EnvironmentCode::None; break;
-    case rt::Environment::White: facts.environment = glsl::EnvironmentCode::White; break;
-    case rt::Environment::Sky: facts.environment = glsl::EnvironmentCode::Sky; break;
-    case rt::Environment::Map: facts.environment = glsl::EnvironmentCode::Map; break;
-  }
+  facts.environment = rt::environmentCode(scene.environment.kind);
   facts.environmentImage = scene.environment.image.filename().string();
-  for (const rt::Light& light : scene.lights) {
-    const glsl::LightCode code = light.kind == rt::Light::Kind::Directional ? glsl::LightCode::Directional
-                                 : light.kind == rt::Light::Kind::Point     ? glsl::LightCode::Point
-                                                                            : glsl::LightCode::Spot;
-    facts.lights[static_cast<size_t>(code)] += 1;
-  }
+  for (const rt::Light& light : scene.lights) facts.lights[static_cast<size_t>(rt::lightCode(light.kind))] += 1;
   return facts;
 }
 

@@ -16,10 +16,6 @@
 
 namespace mxc::rt {
 
-namespace {
-
-static_assert(sizeof(Vertex) == 48, "Vertex must be tightly packed for the vertex input layout");
-
 /// The environment's code in MxcView.counts.y (compiler/glsl/Contract.h).
 glsl::EnvironmentCode environmentCode(Environment e) {
   switch (e) {
@@ -40,6 +36,10 @@ glsl::LightCode lightCode(Light::Kind kind) {
   }
   return glsl::LightCode::Directional;
 }
+
+namespace {
+
+static_assert(sizeof(Vertex) == 48, "Vertex must be tightly packed for the vertex input layout");
 
 /// The values of the fragment stage's specialization constants for a render's settings
 /// (compiler/glsl/Contract.h), in the order of their ids.

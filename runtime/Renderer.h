@@ -13,6 +13,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "compiler/glsl/Contract.h"
 #include "runtime/Camera.h"
 #include "runtime/Descriptors.h"
 #include "runtime/EnvironmentMap.h"
@@ -38,6 +39,11 @@ struct Light {
 /// Map: RenderSettings::environmentMap, importance-sampled and combined with the closure's
 /// samples by multiple importance sampling.
 enum class Environment : uint8_t { None, White, Sky, Map };
+
+/// The codes the shaders know these by (compiler/glsl/Contract.h): MxcView.counts.y and the
+/// MXC_ENVIRONMENT constant; MxcView.lightVector[k].w and the bits of MXC_LIGHT_KINDS.
+glsl::EnvironmentCode environmentCode(Environment environment);
+glsl::LightCode lightCode(Light::Kind kind);
 
 struct RenderSettings {
   uint32_t width = 512;
