@@ -90,8 +90,10 @@ EffectChoice kept(const ir::Material& m, Effect effect, std::string how) {
   return c;
 }
 
-/// Why an effect is not there: the model's inputs that would switch it on, with their values.
-EffectChoice dropped(const ir::Material& m, Effect effect, std::string how) {
+/// Why an effect is not there: the model's inputs that would switch it on, with their values;
+/// `otherwise` when the model names none.
+EffectChoice dropped(const ir::Material& m, Effect effect, std::string how,
+                     std::string otherwise = "no node of the material produces it") {
   EffectChoice c{std::string(ir::effectName(effect)), false, std::move(how), {}, {}};
   if (const EffectInputs* inputs = effectInputs(m.shader, effect)) {
     for (std::string_view name : inputs->inputs) {
@@ -102,7 +104,7 @@ EffectChoice dropped(const ir::Material& m, Effect effect, std::string how) {
       if (!c.at.valid()) c.at = in->location;
     }
   }
-  if (c.reason.empty()) c.reason = "no node of the material produces it";
+  if (c.reason.empty()) c.reason = std::move(otherwise);
   return c;
 }
 
@@ -175,35 +177,31 @@ std::vector<EffectChoice> materialEffects(const ir::Material& m, const glsl::Mat
                                 : lights > 0 ? "scene: directional lights only" : "scene: no lights",
                  {}});
 
-  // What the material's closure decides in the shader library (compile time).
-  auto because = [&](Effect effect, const std::string& otherwise) {
-    if (m.features.effects.has(effect)) return kept(m, effect, "");
-    EffectChoice c = dropped(m, effect, "");
-    if (c.reason == "no node of the material produces it") c.reason = otherwise;
+  // What the material's closure decides in the shader library (compile time): the effect that
+  // needs the code names its input; the general shader and the reference tier always compile it.
+  auto libraryCode = [&](std::string name, std::string_view guard, bool compiled, Effect effect, std::string otherwise,
+                         std::string_view reference) {
+    EffectChoice c =
+        m.features.effects.has(effect) ? kept(m, effect, "") : dropped(m, effect, "", std::move(otherwise));
+    c.name = std::move(name);
+    c.how = fmt::format("compile time ({})", guard);
+    c.kept = compiled;
+    if (!scene.specialize) c.reason = "the general shader (--no-specialize) compiles it";
+    if (accuracy == Accuracy::Reference) c.reason = std::string(reference);
     return c;
   };
-  {
-    EffectChoice c = because(Effect::Transmission, "no lobe transmits");
-    c.name = "refraction code";
-    c.how = "compile time (MXC_TRANSMISSION)";
-    c.kept = shader.transmission;
-    if (!scene.specialize) c.reason = "the general shader (--no-specialize) compiles it";
-    if (accuracy == Accuracy::Reference) c.reason = "the reference tier's walk refracts through every interface";
-    if (c.kept && !m.features.effects.has(Effect::Transmission) && scene.specialize && accuracy != Accuracy::Reference) {
-      c.reason = "a lobe transmits";
-    }
-    out.push_back(std::move(c));
+  const bool always = !scene.specialize || accuracy == Accuracy::Reference;
+  EffectChoice refraction = libraryCode("refraction code", "MXC_TRANSMISSION", shader.transmission, Effect::Transmission,
+                                        "no lobe transmits", "the reference tier's walk refracts through every interface");
+  if (refraction.kept && !always && !m.features.effects.has(Effect::Transmission)) refraction.reason = "a lobe transmits";
+  out.push_back(std::move(refraction));
+  EffectChoice absorption = libraryCode("absorption above lobes", "MXC_ABSORPTION", shader.absorption, Effect::Coat,
+                                        "no lobe lies under an absorbing medium",
+                                        "the reference tier's walk crosses every medium");
+  if (!absorption.kept && m.features.effects.has(Effect::Coat)) {
+    absorption.reason = "the coat does not absorb (coat colour white)";
   }
-  {
-    EffectChoice c = because(Effect::Coat, "no lobe lies under an absorbing medium");
-    c.name = "absorption above lobes";
-    c.how = "compile time (MXC_ABSORPTION)";
-    c.kept = shader.absorption;
-    if (!scene.specialize) c.reason = "the general shader (--no-specialize) compiles it";
-    if (accuracy == Accuracy::Reference) c.reason = "the reference tier's walk crosses every medium";
-    if (!c.kept && m.features.effects.has(Effect::Coat)) c.reason = "the coat does not absorb (coat colour white)";
-    out.push_back(std::move(c));
-  }
+  out.push_back(std::move(absorption));
   out.push_back({"albedo tables", accuracy != Accuracy::Fast, "compile time (the tier)",
                  accuracy == Accuracy::Fast ? "the fast tier uses fitted albedos: no table is read"
                                             : fmt::format("the {} tier reads tabulated albedos", accuracyName(accuracy)),
