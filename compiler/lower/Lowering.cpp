@@ -23,7 +23,7 @@ void checkUserInputs(Context& c, const LoweringOptions& options, const std::stri
   }
 }
 
-/// The shading node's inputs as the compilation sees them (ir::ShaderInput).
+/// The shading node's inputs as the compilation sees them (ir::ShaderInput), after lowering.
 void recordShaderInputs(const resolve::ResolvedNode& node, const LoweringOptions& options, ir::Material& material) {
   for (const resolve::ResolvedInput& in : node.inputs) {
     ir::ShaderInput out;
@@ -40,11 +40,10 @@ void recordShaderInputs(const resolve::ResolvedNode& node, const LoweringOptions
         out.value = text;
       }
     }
-    ir::Type type = ir::Type::String;
-    const bool numeric = ir::irTypeOf(in.type, type) && type != ir::Type::String;
-    bool variable = options.everyInputVariable && numeric;
-    for (const std::string& name : options.parameters) variable = variable || name == in.name;
-    if (variable && out.source != ir::ShaderInput::Source::Connected) out.source = ir::ShaderInput::Source::Parameter;
+    // A parameter as the lowering made it (Context::userInput decides): recorded after lowering.
+    for (const ir::Parameter& p : material.parameters) {
+      if (p.origin.input == in.name) out.source = ir::ShaderInput::Source::Parameter;
+    }
     if (in.declaration && in.declaration->element.valid()) {
       const auto low = in.declaration->element.attribute("uimin");
       const auto high = in.declaration->element.attribute("uimax");
@@ -67,7 +66,6 @@ ir::Material lowerShader(const resolve::ResolvedDocument& document, const Loweri
     c.shaderNode = graphOutput->upstream.node;
   }
   checkUserInputs(c, options, material.name);
-  if (c.shaderNode) recordShaderInputs(*c.shaderNode, options, material);
   if (shader) {
     material.shader = std::string(shader->category());
     material.origin = {shader->node->location, shader->name()};
@@ -89,6 +87,7 @@ ir::Material lowerShader(const resolve::ResolvedDocument& document, const Loweri
       c.note(material.origin, "the shader has no BSDF: the surface is black");
     }
   }
+  if (c.shaderNode) recordShaderInputs(*c.shaderNode, options, material);
   return material;
 }
 
