@@ -116,10 +116,6 @@ struct KnownDivergence {
   std::string_view cause;
 };
 constexpr KnownDivergence kKnownDivergences[] = {
-    {"standard_surface_jade.mtlx: Jade",
-     "a bug of the general lowering: the subsurface bulk is lowered under the sheen layer, whose coverage (sheen = 0) then weighs the "
-     "subsurface lobe to 0; with sheen folded away it sits under the specular layer"},
-    {"standard_surface_marble_solid.mtlx: Marble_3D", "as jade: the subsurface bulk under the sheen layer"},
     {"standard_surface_wood_tiled.mtlx: Tiled_Wood",
      "the same mixture drawn with other samples: coat_color, a uniform, keeps the coat's absorbing medium, so "
      "the lobes under the coat come in a covered and an uncovered copy; at 512 frames the two images agree to "

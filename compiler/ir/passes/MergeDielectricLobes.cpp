@@ -48,8 +48,11 @@ int mergeDielectricLobes(Material& m, const PassContext&) {
       n.base = under.base;
       m.nodes[i] = n;
       ++edits;
-    } else if (under.top == kNone && under.medium != kNone) {
-      // layer(interface, index-matched medium) -> the medium lies under that interface.
+    } else if (under.top == kNone && under.medium != kNone && !n.coverage.present()) {
+      // layer(interface, index-matched medium) -> the medium lies under that interface. Not
+      // under a layer with coverage (OpenPBR "Coverage"): where such a layer is absent the
+      // medium is still there, so it cannot be that layer's (Standard Surface's sheen over
+      // its subsurface bulk: with sheen 0 the bulk would go with the absent sheen).
       n.medium = under.medium;
       n.base = under.base;
       m.nodes[i] = n;

@@ -255,6 +255,17 @@ TEST(MergeDielectricLobes, IndexMatchedMediumTakesTheInterfaceAbove) {
   EXPECT_EQ(f.structure(), "slab(dielectric:RT,bulk,-)");
 }
 
+TEST(MergeDielectricLobes, IndexMatchedMediumStaysOutOfACoveredLayer) {
+  // Standard Surface's sheen (coverage: sheen) over its subsurface bulk: where the sheen is
+  // absent the bulk is still there, so it is not the sheen layer's medium.
+  Fixture f;
+  Index sss = f.medium(Medium::Extent::Bulk, 0.1f);
+  Index sheen = f.iface(InterfaceKind::Sheen);
+  f.m.root = f.slab(sheen, kNone, f.slab(kNone, sss), f.pf(0.5f));
+  EXPECT_EQ(mergeDielectricLobes(f.m), 0);
+  EXPECT_EQ(f.structure(), "slab(sheen,-,slab(-,bulk,-),cov)");
+}
+
 TEST(BulkUnderTransmission, TransmittingBottomGetsItsBulk) {
   Fixture f;
   f.m.root = f.m.mix(f.slab(f.iface(InterfaceKind::Dielectric, ScatterMode::RT)),
