@@ -68,6 +68,11 @@ void mxc_closure_prepare(inout MxcClosure c, vec3 wo) {
   c.choiceTotal = 0.0;
   for (int k = 0; k < c.count; ++k) {
     MxcLobe l = c.lobes[k];
+    // A lobe that is off (an input of the general shader at 0) is never evaluated nor chosen:
+    // its factor and its tables' lookups are not needed.
+    c.ms[k] = vec3(1.0);
+    c.choice[k] = 0.0;
+    if (l.weight == vec3(0.0)) continue;
     vec3 o = mxc_to_local(mxc_frame(l.N, l.T), wo);
     c.ms[k] = mxc_lobe_ms_scale(l, o);
     c.choice[k] = mxc_lobe_choice(l, o, c.ms[k]);

@@ -118,18 +118,23 @@ float mxc_dielectric_albedo(float mu, float alpha, float eta) {
 float mxc_lobe_eta(MxcLobe l, bool above) { return above ? l.eta : 1.0 / l.eta; }
 
 vec3 mxc_lobe_fresnel(MxcLobe l, float cosh, bool above) {
-  vec3 f;
+  // Only the kinds the material has are compiled (the lobe kinds' macros, ShaderBuilder.cpp).
+  vec3 f = vec3(1.0);
+#ifdef MXC_HAS_DIELECTRIC
   if (l.kind == MXC_LOBE_DIELECTRIC) {
 #ifdef MXC_ACCURACY_FAST
     f = vec3(mxc_fresnel_dielectric_schlick(cosh, mxc_lobe_eta(l, above)));
 #else
     f = vec3(mxc_fresnel_dielectric(cosh, mxc_lobe_eta(l, above)));
 #endif
-  } else if (l.kind == MXC_LOBE_CONDUCTOR) {
-    f = mxc_fresnel_conductor(cosh, l.c0, l.c1);
-  } else {
-    f = l.p1 * mxc_fresnel_f82(cosh, l.c0, l.c2, l.p0, l.c1);
   }
+#endif
+#ifdef MXC_HAS_CONDUCTOR
+  if (l.kind == MXC_LOBE_CONDUCTOR) f = mxc_fresnel_conductor(cosh, l.c0, l.c1);
+#endif
+#ifdef MXC_HAS_SCHLICK
+  if (l.kind == MXC_LOBE_SCHLICK) f = l.p1 * mxc_fresnel_f82(cosh, l.c0, l.c2, l.p0, l.c1);
+#endif
 #ifdef MXC_THIN_FILM
   // A film of thickness 0 is no film (the IR drops it when the thickness is a constant 0; a
   // thickness read at run time, `--param` or `--no-specialize`, is treated alike).
@@ -320,11 +325,13 @@ vec3 mxc_lobe_albedo_scaled(MxcLobe l, vec3 wo, vec3 ms) {
     if (mxc_is_delta(l.alpha)) return mxc_lobe_fresnel(l, mu, true) * tint;
     return clamp((f0 * ab.x + f90 * ab.y) * tint * ms, 0.0, 1.0);
   }
+#ifdef MXC_HAS_SHEEN
   if (l.kind == MXC_LOBE_SHEEN) return l.c0 * min(mxc_sheen_albedo(mu, l.p0), 1.0);
+#endif
 #ifdef MXC_HAS_FUZZ
   if (l.kind == MXC_LOBE_FUZZ) return l.c0 * mxc_fuzz_albedo(mu, mxc_fuzz_roughness(l.p0));
 #endif
-#if defined(MXC_HAS_DIFFUSE) || defined(MXC_HAS_EON) || defined(MXC_HAS_SHEET)
+#ifdef MXC_HAS_DIFFUSE
   if (l.kind == MXC_LOBE_DIFFUSE) return l.c0 * mxc_fon_albedo(l.p0, mu);
 #endif
   if (l.kind == MXC_LOBE_SHEET) return l.c0;
