@@ -260,6 +260,13 @@ glm::mat4 worldToView(const Camera& camera) { return glm::lookAtRH(camera.eye, c
 
 }  // namespace
 
+std::vector<std::pair<uint32_t, int32_t>> sceneSpecialization(const RenderSettings& settings) {
+  const SceneConstants c = sceneConstants(settings);
+  return {{glsl::kEnvironmentConstantId, c.environment},
+          {glsl::kLightCountConstantId, c.lightCount},
+          {glsl::kLightKindsConstantId, c.lightKinds}};
+}
+
 RgbaImage renderBackground(const RenderSettings& s) {
   RgbaImage out{s.width, s.height, std::vector<float>(size_t{s.width} * s.height * 4, 0.0f)};
   for (size_t i = 3; i < out.pixels.size(); i += 4) out.pixels[i] = 1.0f;
@@ -509,6 +516,7 @@ void Renderer::drawItems(const std::vector<DrawItem>& items, const std::vector<s
   for (size_t i = 0; i < items.size(); ++i) {
     if (f.items[i].ownsDepth) jobs.emplace_back(i, false);
   }
+  const auto pipelinesStart = std::chrono::steady_clock::now();
   runOnEveryCore(jobs.size(), [&](size_t j) {
     const auto [i, shading] = jobs[j];
     ItemObjects& o = f.items[i];
@@ -521,6 +529,8 @@ void Renderer::drawItems(const std::vector<DrawItem>& items, const std::vector<s
                                        s.width, s.height);
     }
   });
+  const double pipelineMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - pipelinesStart).count();
   modules.clear();
   for (size_t i = 0; i < items.size(); ++i) {
     f.items[i].shadePipeline = f.items[shadeOwner[i]].shadePipeline;
@@ -606,6 +616,7 @@ void Renderer::drawItems(const std::vector<DrawItem>& items, const std::vector<s
       if (progress) progress(g, drawn + 1);
     }
     result.msPerFrame = totalMs / double(frames > 1 ? frames - 1 : 1);
+    result.pipelineMs = pipelineMs;
     std::vector<float> sum = context_.download(f.color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
     result.image.width = s.width;
     result.image.height = s.height;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -69,9 +70,17 @@ struct RenderSettings {
   glm::mat4 objectToWorld{1.0f};
 };
 
+/// The fragment stage's specialization constants (SpecId, value) that a pipeline of `settings`
+/// gets when `settings.specialize` (compiler/glsl/Contract.h): for a tool that folds them into a
+/// module as the pipeline does (spirv::CompileOptions::specialization).
+std::vector<std::pair<uint32_t, int32_t>> sceneSpecialization(const RenderSettings& settings);
+
 struct RenderResult {
   RgbaImage image;      ///< average of the frames; alpha is the coverage
   double msPerFrame = 0.0;  ///< wall time per frame (draw, submit and wait), after the first
+  /// Wall time of creating the render's pipelines (the device compiling its shaders), several
+  /// at a time: with one material, its shading pipeline's compile time.
+  double pipelineMs = 0.0;
 };
 
 /// One vertex attribute read from the mesh's Vertex (binding 0).

@@ -201,6 +201,14 @@ std::optional<std::vector<uint32_t>> compile(const GlslSource& source, const Com
   if (options.optimize) {
     keepLargeFunctionsAsCalls(words);
     spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_1);
+    if (!options.specialization.empty()) {
+      std::unordered_map<uint32_t, std::string> values;
+      for (const auto& [id, value] : options.specialization) values[id] = std::to_string(value);
+      optimizer.RegisterPass(spvtools::CreateSetSpecConstantDefaultValuePass(values));
+      optimizer.RegisterPass(spvtools::CreateFreezeSpecConstantValuePass());
+      // Expressions of the constants (OpSpecConstantOp: `MXC_LIGHT_COUNT > 0`) become constants.
+      optimizer.RegisterPass(spvtools::CreateFoldSpecConstantOpAndCompositePass());
+    }
     optimizer.RegisterPerformancePasses();
     std::vector<uint32_t> optimized;
     if (optimizer.Run(words.data(), words.size(), &optimized)) words = std::move(optimized);

@@ -8,6 +8,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "compiler/common/Diagnostic.h"
@@ -66,6 +67,9 @@ struct CompileOptions {
   /// When set, filled with the module's live blocks (every member of each, used or not),
   /// samplers and, for a vertex stage, its inputs.
   Reflection* reflection = nullptr;
+  /// With `optimize`: specialization constants (SpecId, value) fixed before the passes, so that
+  /// they fold what the values decide, as a pipeline created with those values can.
+  std::vector<std::pair<uint32_t, int32_t>> specialization;
 };
 
 /// Compiles GLSL 4.50 for Vulkan 1.1 / SPIR-V 1.3 and validates the module. On failure the

@@ -49,7 +49,7 @@ struct Modules {
 Modules compileBoth(const std::string& body) {
   Diagnostics diagnostics;
   auto plain = spirv::compile(shader(body), {}, diagnostics);
-  auto optimized = spirv::compile(shader(body), {true}, diagnostics);
+  auto optimized = spirv::compile(shader(body), {.optimize = true, .reflection = nullptr, .specialization = {}}, diagnostics);
   Modules m;
   EXPECT_TRUE(plain && optimized) << diagnostics.format();
   if (!plain || !optimized) return m;
@@ -80,6 +80,24 @@ TEST(SpirvOptimisation, CountsInlinedCalleesInAFunctionsSize) {
   Modules m = compileBoth(chain("h", 12) + "float f(float x) { return h(x) + h(x + 1.0); }");
   EXPECT_EQ(m.plainFunctions, 3u);
   EXPECT_EQ(m.optimizedFunctions, 2u) << "h is inlined into f, f stays a function";
+}
+
+// Specialization constants fixed before the passes fold what they decide: the branch a value
+// does not take is gone from the module, as from a pipeline created with that value.
+TEST(SpirvOptimisation, FixedSpecializationConstantsFoldTheirBranches) {
+  const std::string body = "layout(constant_id = 1) const int kMode = -1;\n" + chain("heavy", 40) +
+                           "float f(float x) { return kMode == 2 ? heavy(x) : x + 1.0; }";
+  Diagnostics diagnostics;
+  spirv::CompileOptions open{.optimize = true, .reflection = nullptr, .specialization = {}};
+  spirv::CompileOptions light{.optimize = true, .reflection = nullptr, .specialization = {{1u, 0}}};
+  spirv::CompileOptions heavy{.optimize = true, .reflection = nullptr, .specialization = {{1u, 2}}};
+  auto a = spirv::compile(shader(body), open, diagnostics);
+  auto b = spirv::compile(shader(body), light, diagnostics);
+  auto c = spirv::compile(shader(body), heavy, diagnostics);
+  ASSERT_TRUE(a && b && c) << diagnostics.format();
+  EXPECT_TRUE(spirv::validate(*b).empty());
+  EXPECT_LT(spirv::instructionCount(*b) + 100, spirv::instructionCount(*a)) << "the heavy branch is folded away";
+  EXPECT_GT(spirv::instructionCount(*c), spirv::instructionCount(*b) + 100) << "the heavy branch is kept";
 }
 
 }  // namespace

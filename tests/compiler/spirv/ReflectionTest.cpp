@@ -25,7 +25,7 @@ void main() { color = vec4(a) + texture(tex, uv) + vec4(normal, float(u_light[0]
 )";
   spirv::Reflection r;
   Diagnostics diagnostics;
-  auto words = spirv::compile({fragment, spirv::Stage::Fragment, "test", {}}, {false, &r}, diagnostics);
+  auto words = spirv::compile({fragment, spirv::Stage::Fragment, "test", {}}, {.reflection = &r, .specialization = {}}, diagnostics);
   ASSERT_TRUE(words) << diagnostics.format();
 
   auto block = [&](const std::string& name) {
@@ -72,7 +72,7 @@ void main() { gl_Position = vec4(i_position + vec3(i_texcoord_0, 0.0), 1.0); }
 )";
   spirv::Reflection r;
   Diagnostics diagnostics;
-  ASSERT_TRUE(spirv::compile({vertex, spirv::Stage::Vertex, "test", {}}, {false, &r}, diagnostics))
+  ASSERT_TRUE(spirv::compile({vertex, spirv::Stage::Vertex, "test", {}}, {.reflection = &r, .specialization = {}}, diagnostics))
       << diagnostics.format();
   ASSERT_EQ(r.inputs.size(), 2u);
   for (const auto& in : r.inputs) {
