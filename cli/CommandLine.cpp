@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "cli/AccuracyBench.h"
+#include "cli/SpecializationBench.h"
 #include "cli/CompileCommand.h"
 #include "cli/EvalCommand.h"
 #include "cli/ExitCode.h"
@@ -243,7 +244,8 @@ void registerRender(CLI::App& app, int& exitCode) {
 }
 
 void registerBench(CLI::App& app, int& exitCode) {
-  CLI::App* bench = app.add_subcommand("bench", "Measure mxc against itself: 'mxc bench accuracy'");
+  CLI::App* bench =
+      app.add_subcommand("bench", "Measure mxc against itself: 'mxc bench accuracy', 'mxc bench specialize'");
   bench->require_subcommand(1);
   auto options = std::make_shared<AccuracyBenchOptions>();
   CLI::App* command = bench->add_subcommand(
@@ -273,6 +275,31 @@ void registerBench(CLI::App& app, int& exitCode) {
   addLibraryOptions(*command, options->libraries);
   addDeviceOptions(*command, options->device);
   command->callback([options, &exitCode] { exitCode = runAccuracyBench(*options); });
+
+  auto specialize = std::make_shared<SpecializationBenchOptions>();
+  command = bench->add_subcommand(
+      "specialize",
+      "Each material's specialized shader against the general one (--no-specialize), and against MaterialX's own "
+      "shader of the document when --materialx gives its GLSL: SPIR-V instructions (plain and -O), compile time to "
+      "SPIR-V and to a pipeline, and frame time in two scenes (a key light; the sky and a key light), all measured in "
+      "one run. Writes specialization.md (with the medians and the targets) and specialization.csv to --report-dir");
+  command->add_option("files", specialize->files,
+                      "Documents (every material of each); default: the documents of the comparison with MaterialX "
+                      "(tests/bench/materialx_compare.py) and two plain diffuse presets");
+  command->add_option("--corpus", specialize->corpus, "The corpus folder of the fixed set (default: ../shared/corpus "
+                      "beside the source tree)");
+  command->add_option("--materialx", specialize->materialx,
+                      "The manifest of MaterialX's generated shaders that 'python3 tests/bench/materialx_compare.py "
+                      "--specialization' writes (build/materialx-compare/manifest.json)");
+  command->add_option("--report-dir", specialize->reportDir, "Folder of the report files (default: generated/reports)");
+  command->add_option("--size", specialize->size, "Width and height of the timed images")->check(CLI::Range(8, 4096));
+  command->add_option("--frames", specialize->frames, "Frames per timed image (the first is not timed)")
+      ->check(CLI::Range(2, 1 << 16));
+  command->add_option("--repeat", specialize->repeat, "Compilations per shader (the median time is reported)")
+      ->check(CLI::Range(1, 100));
+  addLibraryOptions(*command, specialize->libraries);
+  addDeviceOptions(*command, specialize->device);
+  command->callback([specialize, &exitCode] { exitCode = runSpecializationBench(*specialize); });
 }
 
 }  // namespace

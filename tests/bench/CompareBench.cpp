@@ -39,7 +39,7 @@
 #include "runtime/ImageIO.h"
 #include "runtime/MaterialResources.h"
 #include "runtime/Renderer.h"
-#include "tests/bench/MaterialXShader.h"
+#include "cli/MaterialXShader.h"
 
 namespace {
 
@@ -89,7 +89,7 @@ ModuleFigures compileStage(mxc::spirv::GlslSource source, int repeat) {
   }
   out.compileMs = median(times);
   mxc::Diagnostics diagnostics;
-  auto optimized = mxc::spirv::compile(source, {true}, diagnostics);
+  auto optimized = mxc::spirv::compile(source, {.optimize = true, .reflection = nullptr, .specialization = {}}, diagnostics);
   if (!optimized) {
     out.error = diagnostics.format();
     return out;
@@ -179,18 +179,6 @@ struct RenderRig {
   mxc::rt::RenderSettings settings;
 };
 
-std::vector<mxc::bench::MaterialXUniform> readUniforms(const fs::path& path) {
-  std::vector<mxc::bench::MaterialXUniform> out;
-  const json blocks = json::parse(readText(path));
-  for (const auto& [block, entries] : blocks.items()) {
-    for (const json& e : entries) {
-      if (e.at("value").is_null()) continue;
-      out.push_back({e.at("name"), e.at("type"), e.at("value")});
-    }
-  }
-  return out;
-}
-
 /// Both shaders on the same sphere, camera and light.
 json renderBoth(RenderRig& rig, const json& entry, const mxc::glsl::MaterialShader& ours,
                 const std::vector<uint32_t>& ourWords, const fs::path& images) {
@@ -202,12 +190,12 @@ json renderBoth(RenderRig& rig, const json& entry, const mxc::glsl::MaterialShad
   std::vector<std::string> warnings;
   for (const mxc::Diagnostic& d : diagnostics.all()) warnings.push_back(d.format());
   mxc::rt::RenderResult mine = rig.renderer.render(rig.sphere, resources, ours.interface, ourWords, rig.settings);
-  auto loaded = mxc::bench::MaterialXShader::load(readText(entry.at("vertex").get<std::string>()),
+  auto loaded = mxc::cli::MaterialXShader::load(readText(entry.at("vertex").get<std::string>()),
                                                   readText(entry.at("pixel").get<std::string>()),
-                                                  readUniforms(entry.at("uniforms").get<std::string>()), folder);
+                                                  mxc::cli::parseMaterialXUniforms(readText(entry.at("uniforms").get<std::string>())), folder);
   if (auto* error = std::get_if<std::string>(&loaded)) return {{"error", *error}};
   mxc::rt::RenderResult theirs =
-      std::get<mxc::bench::MaterialXShader>(loaded).render(rig.context, rig.renderer, rig.sphere, rig.settings, warnings);
+      std::get<mxc::cli::MaterialXShader>(loaded).render(rig.context, rig.renderer, rig.sphere, rig.settings, warnings);
   out["mxc_ms_per_frame"] = mine.msPerFrame;
   out["materialx_ms_per_frame"] = theirs.msPerFrame;
   out["difference"] = difference(mine.image, theirs.image);

@@ -4,6 +4,10 @@ field's reference generator (MaterialX's VkShaderGenerator, from the PyPI packag
 
     python3 tests/bench/materialx_compare.py [--build DIR] [--repeat N] [--report FILE]
                                              [--accuracy fast|balanced] [NAME ...]
+    python3 tests/bench/materialx_compare.py --specialization
+
+With --specialization it only generates MaterialX's shaders (below) and hands them to
+`mxc bench specialize --materialx`, which writes generated/reports/specialization.md.
 
 Installs `materialx` (pinned) into DIR/materialx-venv when missing, then for each selected corpus
 document (default: the MaterialX OpenPbr and StandardSurface examples below; NAME filters by
@@ -293,7 +297,7 @@ def write_report(path: Path, generated: dict, results: dict, rows: list) -> None
         f"Both shaders in mxc's raster harness on {results['device']}: the same unit sphere, camera and one "
         f"directional light (irradiance 3), no environment, {results['size']}x{results['size']} pixels, "
         f"{results['frames']} jittered frames. MaterialX's shader gets its uniform blocks filled through glslang's "
-        "reflection (tests/bench/MaterialXShader.cpp). *ms/frame* is the wall time of one frame (draw, submit, "
+        "reflection (cli/MaterialXShader.cpp). *ms/frame* is the wall time of one frame (draw, submit, "
         "wait) after the first. The difference is over the pixels both images cover fully: per pixel, the summed "
         "absolute RGB difference over MaterialX's summed RGB (floored at 0.03); its mean and 99th percentile. "
         f"Tolerance: mean {TOLERANCE_MEAN:.0%}, 99th percentile {TOLERANCE_P99:.0%}. Images: "
@@ -367,6 +371,9 @@ def main() -> int:
                         "performance-fast.md for --accuracy fast)")
     parser.add_argument("--accuracy", choices=["fast", "balanced"], default="balanced",
                         help="mxc's accuracy tier (default balanced)")
+    parser.add_argument("--specialization", action="store_true",
+                        help="generate MaterialX's shaders, then run `mxc bench specialize --materialx` on them "
+                        "(writes generated/reports/specialization.md instead of the comparison report)")
     parser.add_argument("--generate-only", metavar="MANIFEST", help=argparse.SUPPRESS)  # the venv half
     parser.add_argument("names", nargs="*", help="only documents whose name contains one of these")
     args = parser.parse_args()
@@ -383,6 +390,18 @@ def main() -> int:
 
     bench = build / "tests" / "bench" / "compare_bench"
     mxc = build / "mxc"
+    if args.specialization:
+        # MaterialX's shaders only; mxc's own bench measures the rest in one run.
+        if (build / "build.ninja").exists():
+            subprocess.run(["cmake", "--build", str(build), "--target", "mxc"], check=True)
+        python = venv_python(build)
+        work.mkdir(parents=True, exist_ok=True)
+        manifest = work / "manifest.json"
+        subprocess.run([str(python), __file__, "--build", str(build), "--repeat", str(args.repeat),
+                        "--generate-only", str(manifest), *args.names], check=True)
+        command = [str(mxc), "bench", "specialize", "--materialx", os.path.relpath(manifest, ROOT),
+                   "--size", str(args.size), "--frames", str(args.frames)]
+        return subprocess.run(command, cwd=ROOT).returncode
     # Not part of the default build (tests/bench/CMakeLists.txt): built here when missing or old.
     if (build / "build.ninja").exists():
         subprocess.run(["cmake", "--build", str(build), "--target", "compare_bench", "mxc"], check=True)

@@ -1,4 +1,4 @@
-#include "tests/bench/MaterialXShader.h"
+#include "cli/MaterialXShader.h"
 
 #include <algorithm>
 #include <cstring>
@@ -6,11 +6,12 @@
 #include <memory>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "compiler/document/Value.h"
 #include "runtime/ImageIO.h"
 
-namespace mxc::bench {
+namespace mxc::cli {
 
 namespace {
 
@@ -64,6 +65,18 @@ struct BlockBuffer {
 
 }  // namespace
 
+std::vector<MaterialXUniform> parseMaterialXUniforms(const std::string& json) {
+  std::vector<MaterialXUniform> out;
+  const nlohmann::json blocks = nlohmann::json::parse(json);
+  for (const auto& [block, entries] : blocks.items()) {
+    for (const nlohmann::json& e : entries) {
+      if (e.at("value").is_null()) continue;
+      out.push_back({e.at("name"), e.at("type"), e.at("value")});
+    }
+  }
+  return out;
+}
+
 std::variant<MaterialXShader, std::string> MaterialXShader::load(const std::string& vertexGlsl,
                                                                   const std::string& pixelGlsl,
                                                                   std::vector<MaterialXUniform> uniforms,
@@ -71,9 +84,9 @@ std::variant<MaterialXShader, std::string> MaterialXShader::load(const std::stri
   MaterialXShader s;
   Diagnostics diagnostics;
   auto vertex = spirv::compile({vertexGlsl, spirv::Stage::Vertex, "MaterialX vertex stage", {}},
-                               {false, &s.vertexInterface_}, diagnostics);
+                               {.reflection = &s.vertexInterface_, .specialization = {}}, diagnostics);
   auto pixel = spirv::compile({pixelGlsl, spirv::Stage::Fragment, "MaterialX pixel stage", {}},
-                              {false, &s.pixelInterface_}, diagnostics);
+                              {.reflection = &s.pixelInterface_, .specialization = {}}, diagnostics);
   if (!vertex || !pixel) return diagnostics.format();
   s.vertex_ = std::move(*vertex);
   s.pixel_ = std::move(*pixel);
@@ -252,4 +265,4 @@ rt::RenderResult MaterialXShader::render(rt::VulkanContext& context, rt::Rendere
   return renderer.draw(mesh, vertex_, pixel_, inputs, {&set}, settings, [&](const rt::FrameView& v) { fill(&v); });
 }
 
-}  // namespace mxc::bench
+}  // namespace mxc::cli

@@ -4,8 +4,9 @@
 /// raster harness: both stages compiled by glslang with reflection, the uniform blocks laid
 /// out from that reflection and filled by name (camera and light from the render settings,
 /// material inputs from the values MaterialX's generator reported), textures bound to their
-/// samplers, mesh attributes to the stage inputs. For the side-by-side comparison, and for
-/// any later test that holds a MaterialX-like accuracy tier to MaterialX's own images.
+/// samplers, mesh attributes to the stage inputs. For the side-by-side comparison
+/// (tests/bench/CompareBench.cpp) and `mxc bench specialize --materialx`: MaterialX itself is
+/// not used, only the GLSL its generator wrote (tests/bench/materialx_compare.py makes it).
 
 #include <filesystem>
 #include <string>
@@ -16,7 +17,7 @@
 #include "compiler/spirv/SpirvCompiler.h"
 #include "runtime/Renderer.h"
 
-namespace mxc::bench {
+namespace mxc::cli {
 
 /// A value of MaterialX's public uniform block, as its generator printed it.
 struct MaterialXUniform {
@@ -24,6 +25,11 @@ struct MaterialXUniform {
   std::string type;   ///< MaterialX type name: float, color3, filename, boolean, ...
   std::string value;  ///< MaterialX value string; "" when the generator gave none
 };
+
+/// The uniform values tests/bench/materialx_compare.py writes beside the stages: per block, a
+/// list of {"name", "type", "value"}; entries whose value is null are left out. Throws a
+/// std::exception (nlohmann::json's) on malformed text.
+std::vector<MaterialXUniform> parseMaterialXUniforms(const std::string& json);
 
 class MaterialXShader {
  public:
@@ -55,4 +61,4 @@ class MaterialXShader {
   std::filesystem::path folder_;
 };
 
-}  // namespace mxc::bench
+}  // namespace mxc::cli
