@@ -170,9 +170,14 @@ std::optional<CompiledShader> compileShader(const lib::LibraryStack& libraries, 
   out.figures.toSpirvMs = medianOf(times);
   out.figures.instructions = spirv::instructionCount(out.words);
   for (const Scene& scene : scenes) {
+    // The general shader's pipeline gets no constants (it keeps their defaults, which read the
+    // view): one -O module serves every scene.
+    if (!specialize && !out.figures.optimized.empty()) {
+      out.figures.optimized.push_back(out.figures.optimized.front());
+      continue;
+    }
     spirv::CompileOptions options;
     options.optimize = true;
-    // The general shader's pipeline gets no constants: it keeps their defaults (read the view).
     if (specialize) options.specialization = rt::sceneSpecialization(scene.settings);
     auto optimized = spirv::compile(out.shader.glsl, options, out.workspace->diagnostics);
     if (!optimized) {
