@@ -12,6 +12,7 @@
 
 #include "compiler/common/InputFile.h"
 #include "compiler/common/OutputFile.h"
+#include "compiler/common/Parallel.h"
 
 namespace mxc::rt {
 
@@ -141,6 +142,9 @@ std::optional<std::string> loadImageModule() {
 
 ImageModulePreload::ImageModulePreload() {
   // A thread that cannot be started leaves the load to the first call that needs the module.
+  // The pool's threads are made first: glibc holds its TLS lock through the whole dlopen, and a
+  // thread created during it (a compile on every core) would wait for the load.
+  startWorkers();
   try {
     thread_ = std::thread([] { loadImageModule(); });
   } catch (const std::system_error&) {

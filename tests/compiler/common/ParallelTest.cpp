@@ -4,7 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
+#include <mutex>
+#include <set>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "compiler/common/Parallel.h"
@@ -33,6 +37,54 @@ TEST(Parallel, TheLowestFailureIsRethrownAfterEveryJobStopped) {
     EXPECT_STREQ(e.what(), "job 17");
   }
   EXPECT_EQ(finished.load(), 62);
+}
+
+// The pool serves one call at a time; a call nested in a job, or made from another thread while
+// the pool is busy, runs on threads of its own. Every index of every call still runs once.
+TEST(Parallel, NestedAndConcurrentCallsEachRunEveryIndexOnce) {
+  constexpr size_t kOuter = 8, kInner = 50;
+  std::vector<std::atomic<int>> runs(kOuter * kInner);
+  runOnEveryCore(kOuter, [&](size_t o) {
+    runOnEveryCore(kInner, [&](size_t i) { ++runs[o * kInner + i]; });
+  });
+  for (size_t k = 0; k < runs.size(); ++k) EXPECT_EQ(runs[k].load(), 1) << k;
+
+  std::vector<std::atomic<int>> a(500), b(500);
+  std::thread other([&] {
+    for (int round = 0; round < 20; ++round) runOnEveryCore(a.size(), [&](size_t i) { ++a[i]; });
+  });
+  for (int round = 0; round < 20; ++round) runOnEveryCore(b.size(), [&](size_t i) { ++b[i]; });
+  other.join();
+  for (size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].load(), 20) << k;
+    EXPECT_EQ(b[k].load(), 20) << k;
+  }
+}
+
+// The pool's threads are made once: many calls in a row reuse them. Thread ids can repeat
+// across threads (glibc reuses stacks), so each thread takes a serial number when it first runs
+// a job: a call that made threads of its own would show a new serial each round.
+std::atomic<int> threadsSeen{0};
+int threadSerial() {
+  thread_local const int serial = threadsSeen++;
+  return serial;
+}
+
+TEST(Parallel, ThePoolsThreadsAreReused) {
+  startWorkers();
+  std::mutex mutex;
+  std::set<int> serials;
+  for (int round = 0; round < 20; ++round) {
+    runOnEveryCore(8, [&](size_t) {
+      // Long enough that every thread of the call takes a job (the caller alone would finish
+      // instant jobs before a helper woke).
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      const int serial = threadSerial();
+      std::lock_guard<std::mutex> lock(mutex);
+      serials.insert(serial);
+    });
+  }
+  EXPECT_LE(serials.size(), coreCount());
 }
 
 }  // namespace
