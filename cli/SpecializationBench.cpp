@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <span>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -17,10 +18,16 @@
 #include "cli/MaterialXShader.h"
 #include "cli/OutputSet.h"
 #include "cli/SpecializationReport.h"
+#include "compiler/common/EmbeddedFile.h"
 #include "compiler/driver/Compiler.h"
 #include "compiler/spirv/SpirvCompiler.h"
+#include "runtime/ImageDifference.h"
 #include "runtime/MaterialResources.h"
 #include "runtime/Renderer.h"
+
+namespace mxc {
+std::span<const EmbeddedFile> comparisonDocumentFiles();  // cmake/EmbedFiles.cmake: cli/comparison-documents.txt
+}  // namespace mxc
 
 namespace mxc::cli {
 
@@ -36,18 +43,16 @@ double msSince(Clock::time_point start) {
 void log(const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); }
 
 /// The fixed set: the documents of the side-by-side comparison with MaterialX
-/// (tests/bench/materialx_compare.py), and two plain diffuse presets for the diffuse target.
+/// (cli/comparison-documents.txt, which tests/bench/materialx_compare.py reads too), and two plain
+/// diffuse presets for the diffuse target.
 std::vector<fs::path> fixedSet(const fs::path& corpus) {
-  const fs::path examples = corpus / "materialx" / "examples";
   std::vector<fs::path> files;
-  for (const char* name : {"open_pbr_default", "open_pbr_aluminum_brushed", "open_pbr_carpaint", "open_pbr_glass",
-                           "open_pbr_honey", "open_pbr_ketchup", "open_pbr_lightbulb", "open_pbr_pearl",
-                           "open_pbr_soapbubble", "open_pbr_velvet"}) {
-    files.push_back(examples / "OpenPbr" / (std::string(name) + ".mtlx"));
-  }
-  for (const char* name : {"default", "brass_tiled", "brick_procedural", "carpaint", "chrome", "copper", "glass", "jade",
-                           "marble_solid", "thin_film", "velvet", "wood_tiled"}) {
-    files.push_back(examples / "StandardSurface" / ("standard_surface_" + std::string(name) + ".mtlx"));
+  for (const EmbeddedFile& list : comparisonDocumentFiles()) {
+    std::istringstream lines{std::string(list.contents)};
+    for (std::string line; std::getline(lines, line);) {
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      if (!line.empty() && line[0] != '#') files.push_back(corpus / line);
+    }
   }
   for (const char* name : kDiffuseMaterials) files.push_back(corpus / "openpbr-presets" / name);
   return files;
@@ -55,6 +60,7 @@ std::vector<fs::path> fixedSet(const fs::path& corpus) {
 
 struct Scene {
   std::string name;
+  std::string definition;  // for the report
   rt::RenderSettings settings;
 };
 
@@ -64,9 +70,11 @@ std::vector<Scene> benchScenes(uint32_t size, uint32_t frames) {
   const glm::vec3 key = glm::normalize(glm::vec3(-1.0f, 1.2f, 1.5f));
   std::vector<Scene> scenes(2);
   scenes[0].name = "key light";
+  scenes[0].definition = "one directional light towards (-1, 1.2, 1.5), irradiance 3, no environment";
   scenes[0].settings.environment = rt::Environment::None;
   scenes[0].settings.lights.push_back({rt::Light::Kind::Directional, key, glm::vec3(1.0f), 3.0f});
   scenes[1].name = "sky + key light";
+  scenes[1].definition = "the analytic sky (mxc render's default) and that light at irradiance 2";
   scenes[1].settings.environment = rt::Environment::Sky;
   scenes[1].settings.lights.push_back({rt::Light::Kind::Directional, key, glm::vec3(1.0f), 2.0f});
   for (Scene& s : scenes) {
@@ -193,23 +201,6 @@ std::optional<CompiledShader> compileShader(const lib::LibraryStack& libraries, 
   return out;
 }
 
-/// The mean over pixels either image covers of the largest channel (or coverage) difference,
-/// relative to max(b, 0.05) (tests/corpus/SpecializationTest.cpp's measure).
-double imageDifference(const rt::RgbaImage& a, const rt::RgbaImage& b) {
-  double sum = 0.0;
-  size_t covered = 0;
-  for (size_t p = 0; p + 3 < a.pixels.size() && p + 3 < b.pixels.size(); p += 4) {
-    if (a.pixels[p + 3] <= 0.0f && b.pixels[p + 3] <= 0.0f) continue;
-    double d = std::abs(double(a.pixels[p + 3]) - b.pixels[p + 3]);
-    for (size_t k = 0; k < 3; ++k) {
-      d = std::max(d, std::abs(double(a.pixels[p + k]) - b.pixels[p + k]) / std::max(std::abs(double(b.pixels[p + k])), 0.05));
-    }
-    sum += std::isfinite(d) ? d : 1.0;  // a NaN in one image only counts as a full difference
-    ++covered;
-  }
-  return covered ? sum / double(covered) : NAN;  // covered > 0 to divide
-}
-
 /// What the measurement of the materials needs from the run.
 struct BenchRun {
   const SpecializationBenchOptions& options;
@@ -293,7 +284,7 @@ std::optional<SpecializationRow> measureMaterial(BenchRun& run, const fs::path& 
       figures->scenes.push_back({r.msPerFrame, r.pipelineMs});
       images[k++] = std::move(r.image);
     }
-    row.imageDifference.push_back(imageDifference(images[1], images[0]));
+    row.imageDifference.push_back(rt::compareImages(images[1], images[0]).mean);
   }
   if (const MaterialXEntry* entry = findEntry(run.materialx, file, material)) row.materialx = measureMaterialX(run, *entry);
   return row;
@@ -393,7 +384,7 @@ int runSpecializationBench(const SpecializationBenchOptions& options) {
     const rt::Mesh sphere = rt::makeSphere();
     BenchRun run{options,  *device.context(), textures, renderer, sphere, library.libraries,
                  benchScenes(report.size, report.frames), std::move(materialx)};
-    for (const Scene& s : run.scenes) report.scenes.push_back(s.name);
+    for (const Scene& s : run.scenes) report.scenes.push_back({s.name, s.definition});
     for (size_t i = 0; i < materials.size(); ++i) {
       log(fmt::format("[{}/{}] {} ({})", i + 1, materials.size(), materials[i].second,
                       materials[i].first.filename().string()));
@@ -413,15 +404,10 @@ int runSpecializationBench(const SpecializationBenchOptions& options) {
   if (!error) error = outputs.stage(csv, specializationCsv(report));
   if (!error) error = outputs.commit();
   if (printError(error)) return kOutputFailed;
-  std::vector<double> instructions, frames;
-  for (const SpecializationRow& m : report.materials) {
-    instructions.push_back(double(m.specialized.shader.instructions) / double(std::max<size_t>(m.general.shader.instructions, 1)));
-    frames.push_back(m.specialized.scenes.at(0).msPerFrame / m.general.scenes.at(0).msPerFrame);
-  }
   std::printf("wrote %s and %s (%zu materials on %s)\n", md.string().c_str(), csv.string().c_str(),
               report.materials.size(), report.device.c_str());
-  std::printf("median specialized / general: instructions %.3f, frame time (%s) %.3f\n", medianOf(instructions),
-              report.scenes.at(0).c_str(), medianOf(frames));
+  std::printf("median specialized / general: instructions %.3f, frame time (%s) %.3f\n", medianInstructionRatio(report),
+              report.scenes.at(0).name.c_str(), medianFrameRatio(report, 0));
   return kOk;
 }
 

@@ -57,6 +57,20 @@ double medianOf(std::vector<double> values) {
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);  // n >= 2 when even
 }
 
+double medianInstructionRatio(const SpecializationReport& r) {
+  return medianOver(r, [](const SpecializationRow& m) {
+    return ratio(double(m.specialized.shader.instructions), double(m.general.shader.instructions));
+  });
+}
+
+double medianFrameRatio(const SpecializationReport& r, size_t scene) {
+  return medianOver(r, [scene](const SpecializationRow& m) {
+    return scene < m.specialized.scenes.size() && scene < m.general.scenes.size()
+               ? ratio(m.specialized.scenes[scene].msPerFrame, m.general.scenes[scene].msPerFrame)
+               : NAN;
+  });
+}
+
 std::string specializationMarkdown(const SpecializationReport& r) {
   const size_t scenes = r.scenes.size();
   const bool mx = !r.materialxManifest.empty();
@@ -78,7 +92,7 @@ std::string specializationMarkdown(const SpecializationReport& r) {
                     "first.\n",
                     r.size, r.size, r.frames);
   md += "- Scenes: ";
-  for (size_t s = 0; s < scenes; ++s) md += fmt::format("{}*{}*", s ? ", " : "", r.scenes[s]);
+  for (size_t s = 0; s < scenes; ++s) md += fmt::format("{}*{}*: {}", s ? "; " : "", r.scenes[s].name, r.scenes[s].definition);
   md += ". *image difference*: the mean over covered pixels of the largest channel difference between the two images, "
         "relative to max(general, 0.05) (the proof is tests/corpus/SpecializationTest.cpp).\n";
   if (mx) {
@@ -92,11 +106,9 @@ std::string specializationMarkdown(const SpecializationReport& r) {
   }
 
   md += "\n## Medians\n\n| figure | median |\n|---|---:|\n";
-  md += fmt::format("| instructions, specialized / general | {} |\n", number(medianOver(r, [](const SpecializationRow& m) {
-                      return ratio(double(m.specialized.shader.instructions), double(m.general.shader.instructions));
-                    }), 3));
+  md += fmt::format("| instructions, specialized / general | {} |\n", number(medianInstructionRatio(r), 3));
   for (size_t s = 0; s < scenes; ++s) {
-    md += fmt::format("| -O instructions, specialized / general, {} | {} |\n", r.scenes[s],
+    md += fmt::format("| -O instructions, specialized / general, {} | {} |\n", r.scenes[s].name,
                       number(medianOver(r, [s](const SpecializationRow& m) {
                                return ratio(double(optimizedAt(m.specialized.shader, s)),
                                             double(optimizedAt(m.general.shader, s)));
@@ -106,14 +118,12 @@ std::string specializationMarkdown(const SpecializationReport& r) {
                       return ratio(m.specialized.shader.toSpirvMs, m.general.shader.toSpirvMs);
                     }), 3));
   for (size_t s = 0; s < scenes; ++s) {
-    md += fmt::format("| pipeline time, specialized / general, {} | {} |\n", r.scenes[s],
+    md += fmt::format("| pipeline time, specialized / general, {} | {} |\n", r.scenes[s].name,
                       number(medianOver(r, [s](const SpecializationRow& m) {
                                return ratio(m.specialized.scenes.at(s).pipelineMs, m.general.scenes.at(s).pipelineMs);
                              }), 3));
-    md += fmt::format("| frame time, specialized / general, {} | {} |\n", r.scenes[s],
-                      number(medianOver(r, [s](const SpecializationRow& m) {
-                               return ratio(m.specialized.scenes.at(s).msPerFrame, m.general.scenes.at(s).msPerFrame);
-                             }), 3));
+    md += fmt::format("| frame time, specialized / general, {} | {} |\n", r.scenes[s].name,
+                      number(medianFrameRatio(r, s), 3));
   }
   if (mx) {
     auto against = [&](auto figure) {
@@ -121,19 +131,19 @@ std::string specializationMarkdown(const SpecializationReport& r) {
                       return m.materialx ? figure(m.specialized, *m.materialx) : NAN;
                     }), 3);
     };
-    md += fmt::format("| -O instructions, specialized / MaterialX, {} | {} |\n", r.scenes[0],
+    md += fmt::format("| -O instructions, specialized / MaterialX, {} | {} |\n", r.scenes[0].name,
                       against([](const VariantFigures& a, const VariantFigures& b) {
                         return ratio(double(optimizedAt(a.shader, 0)), double(optimizedAt(b.shader, 0)));
                       }));
-    md += fmt::format("| pipeline time, specialized / MaterialX, {} | {} |\n", r.scenes[0],
+    md += fmt::format("| pipeline time, specialized / MaterialX, {} | {} |\n", r.scenes[0].name,
                       against([](const VariantFigures& a, const VariantFigures& b) {
                         return ratio(a.scenes.at(0).pipelineMs, b.scenes.at(0).pipelineMs);
                       }));
-    md += fmt::format("| frame time, specialized / MaterialX, {} | {} |\n", r.scenes[0],
+    md += fmt::format("| frame time, specialized / MaterialX, {} | {} |\n", r.scenes[0].name,
                       against([](const VariantFigures& a, const VariantFigures& b) {
                         return ratio(a.scenes.at(0).msPerFrame, b.scenes.at(0).msPerFrame);
                       }));
-    md += fmt::format("| frame time, general / MaterialX, {} | {} |\n", r.scenes[0],
+    md += fmt::format("| frame time, general / MaterialX, {} | {} |\n", r.scenes[0].name,
                       number(medianOver(r, [](const SpecializationRow& m) {
                                return m.materialx ? ratio(m.general.scenes.at(0).msPerFrame,
                                                           m.materialx->scenes.at(0).msPerFrame)
@@ -151,7 +161,7 @@ std::string specializationMarkdown(const SpecializationReport& r) {
       return ratio(double(m.specialized.shader.instructions), double(m.general.shader.instructions));
     });
     for (size_t s = 0; s < scenes; ++s) {
-      counts.emplace_back("-O, " + r.scenes[s], [s](const SpecializationRow& m) {
+      counts.emplace_back("-O, " + r.scenes[s].name, [s](const SpecializationRow& m) {
         return ratio(double(optimizedAt(m.specialized.shader, s)), double(optimizedAt(m.general.shader, s)));
       });
     }
@@ -175,13 +185,13 @@ std::string specializationMarkdown(const SpecializationReport& r) {
     const double v = m && m->materialx ? ratio(m->specialized.scenes.at(0).msPerFrame, m->materialx->scenes.at(0).msPerFrame)
                                        : NAN;
     md += fmt::format("| {}: frame time, specialized / MaterialX, at most {} | {} | {} | {} |\n", kMaterialXFrameTarget,
-                      kTargetMaterialXFrameRatio, scenes ? r.scenes[0] : "", number(v, 3),
+                      kTargetMaterialXFrameRatio, scenes ? r.scenes[0].name : "", number(v, 3),
                       verdict(v, kTargetMaterialXFrameRatio));
   }
 
   md += "\n## Shader size and compile time\n\n";
   md += "| material | model | instructions general | specialized | ratio |";
-  for (size_t s = 0; s < scenes; ++s) md += fmt::format(" -O general / specialized, {} | ratio |", r.scenes[s]);
+  for (size_t s = 0; s < scenes; ++s) md += fmt::format(" -O general / specialized, {} | ratio |", r.scenes[s].name);
   md += " to SPIR-V ms general | specialized |";
   if (mx) md += " MaterialX instructions | -O | MaterialX glslang ms |";
   md += "\n|---|---|---:|---:|---:|";
@@ -210,7 +220,7 @@ std::string specializationMarkdown(const SpecializationReport& r) {
   }
 
   for (size_t s = 0; s < scenes; ++s) {
-    md += fmt::format("\n## Frame and pipeline time: {}\n\n", r.scenes[s]);
+    md += fmt::format("\n## Frame and pipeline time: {}\n\n", r.scenes[s].name);
     md += "| material | ms/frame general | specialized | ratio | pipeline ms general | specialized | ratio | image "
           "difference |";
     const bool withMx = mx && s == 0;
@@ -246,7 +256,7 @@ std::string specializationCsv(const SpecializationReport& r) {
     auto rows = [&](const char* shader, const VariantFigures& v, bool difference) {
       for (size_t s = 0; s < r.scenes.size() && s < v.scenes.size(); ++s) {
         csv += fmt::format("{},{},{},{},{},{},{},{:.3f},{:.3f},{:.1f},{}\n", csvText(m.name), csvText(m.source),
-                           csvText(m.model), shader, csvText(r.scenes[s]), v.shader.instructions,
+                           csvText(m.model), shader, csvText(r.scenes[s].name), v.shader.instructions,
                            optimizedAt(v.shader, s), v.shader.toSpirvMs, v.scenes[s].msPerFrame, v.scenes[s].pipelineMs,
                            difference && s < m.imageDifference.size() ? fmt::format("{:.3e}", m.imageDifference[s]) : "");
       }

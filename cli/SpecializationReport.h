@@ -53,12 +53,22 @@ struct SpecializationReport {
   uint32_t size = 0;
   uint32_t frames = 0;
   int repeat = 0;
-  std::vector<std::string> scenes;  ///< the scenes' names; the first is MaterialX's
+  /// A scene of the report: its name in the tables, and what is in it.
+  struct Scene {
+    std::string name;
+    std::string definition;
+  };
+  std::vector<Scene> scenes;  ///< the first is MaterialX's
   std::vector<SpecializationRow> materials;
 };
 
 /// The median of the finite values (NaN when there is none).
 double medianOf(std::vector<double> values);
+
+/// The report's headline medians, specialized / general: SPIR-V instructions as compiled, and
+/// frame time in scene `scene` (NaN where nothing was measured).
+double medianInstructionRatio(const SpecializationReport& r);
+double medianFrameRatio(const SpecializationReport& r, size_t scene);
 
 /// The targets, checked by the report (docs/specialization.md).
 constexpr double kTargetInstructionRatio = 0.5;  ///< median specialized / general instructions

@@ -40,30 +40,14 @@ from pathlib import Path
 MATERIALX_VERSION = "1.39.5"
 ROOT = Path(__file__).resolve().parents[2]
 SHARED = ROOT.parent / "shared"
-DEFAULT_DOCUMENTS = [
-    "materialx/examples/OpenPbr/open_pbr_default.mtlx",
-    "materialx/examples/OpenPbr/open_pbr_aluminum_brushed.mtlx",
-    "materialx/examples/OpenPbr/open_pbr_carpaint.mtlx",
-    "materialx/examples/OpenPbr/open_pbr_glass.mtlx",
-    "materialx/examples/OpenPbr/open_pbr_honey.mtlx",
-    "materialx/examples/OpenPbr/open_pbr_ketchup.mtlx",
-    "materialx/examples/OpenPbr/open_pbr_lightbulb.mtlx",
-    "materialx/examples/OpenPbr/open_pbr_pearl.mtlx",
-    "materialx/examples/OpenPbr/open_pbr_soapbubble.mtlx",
-    "materialx/examples/OpenPbr/open_pbr_velvet.mtlx",
-    "materialx/examples/StandardSurface/standard_surface_default.mtlx",
-    "materialx/examples/StandardSurface/standard_surface_brass_tiled.mtlx",
-    "materialx/examples/StandardSurface/standard_surface_brick_procedural.mtlx",
-    "materialx/examples/StandardSurface/standard_surface_carpaint.mtlx",
-    "materialx/examples/StandardSurface/standard_surface_chrome.mtlx",
-    "materialx/examples/StandardSurface/standard_surface_copper.mtlx",
-    "materialx/examples/StandardSurface/standard_surface_glass.mtlx",
-    "materialx/examples/StandardSurface/standard_surface_jade.mtlx",
-    "materialx/examples/StandardSurface/standard_surface_marble_solid.mtlx",
-    "materialx/examples/StandardSurface/standard_surface_thin_film.mtlx",
-    "materialx/examples/StandardSurface/standard_surface_velvet.mtlx",
-    "materialx/examples/StandardSurface/standard_surface_wood_tiled.mtlx",
-]
+def comparison_documents():
+    """The compared documents, relative to the corpus: cli/comparison-documents.txt, the list
+    `mxc bench specialize` embeds too."""
+    path = ROOT / "cli" / "comparison-documents.txt"
+    return [line.strip() for line in path.read_text().splitlines() if line.strip() and not line.startswith("#")]
+
+
+DEFAULT_DOCUMENTS = comparison_documents()
 
 
 # Image difference tolerance (see the report): above it, the report says why.

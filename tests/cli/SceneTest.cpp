@@ -11,6 +11,7 @@
 #include "cli/Scene.h"
 #include "runtime/ImageIO.h"
 #include "support/CommandSupport.h"
+#include "support/RenderCommandSupport.h"
 
 namespace mxc::test {
 namespace {
@@ -150,18 +151,8 @@ TEST(Scene, MalformedFieldsAreRefusedNamingTheField) {
   EXPECT_NE(error.find("not valid JSON"), std::string::npos) << error;
 }
 
-rt::RgbaImage render(const std::string& arguments, int expectedCode = 0) {
-  const fs::path out = writeTemp("scene.exr", "");
-  fs::remove(out);
-  CommandRun r = mxc("render " + arguments + " -o " + out.string());
-  EXPECT_EQ(r.exitCode, expectedCode) << r.err;
-  auto image = rt::readImage(out);
-  fs::remove(out);
-  return std::holds_alternative<rt::RgbaImage>(image) ? std::get<rt::RgbaImage>(image) : rt::RgbaImage{};
-}
-
 TEST(SceneRender, RendersTheStillLifeExample) {
-  const rt::RgbaImage image = render((sourceDir() / "examples/scenes/still_life.json").string() + " --size 64x40 --spp 2");
+  const rt::RgbaImage image = renderCommand((sourceDir() / "examples/scenes/still_life.json").string() + " --size 64x40 --spp 2");
   ASSERT_EQ(image.width, 64u);
   ASSERT_EQ(image.height, 40u);
   double covered = 0.0;
@@ -194,7 +185,7 @@ TEST(SceneRender, ALookAssignsMaterialsByObjectName) {
   const std::string objects = R"("objects": [{"name": "left", "translate": [-1.2, 0, 0]}, {"name": "right", "translate": [1.2, 0, 0]}],
     "environment": {"type": "white"}, "camera": {"position": [0, 0, 6]}, "render": {"size": [64, 32], "spp": 1}})";
   const fs::path scene = writeTemp("look.json", R"({"mxc_scene": 1, "documents": [")" + document.string() + R"("], "look": "Sides", )" + objects);
-  const rt::RgbaImage image = render(scene.string());
+  const rt::RgbaImage image = renderCommand(scene.string());
   ASSERT_EQ(image.width, 64u);
   // Under a white furnace the left sphere is red, the right one blue. The view spans 2 * 6 *
   // tan(22.5 deg) = 4.97 units over 32 rows: the centres are 1.2 * 6.4 = 7.7 pixels either side.
@@ -224,7 +215,7 @@ TEST(SceneRender, ASpotLightLightsOnlyItsCone) {
     "lights": [{"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "cone_angle": 20, "cone_softness": 2, "intensity": 8}],
     "environment": {"type": "none"}, "camera": {"position": [0, 6, 0], "up": [0, 0, -1], "fov": 45},
     "render": {"size": 64, "spp": 1}})");
-  const rt::RgbaImage image = render(scene.string());
+  const rt::RgbaImage image = renderCommand(scene.string());
   ASSERT_EQ(image.width, 64u);
   // The floor spans 4 units; at distance 6 under 45 degrees the view spans 2 * 6 * tan(22.5) =
   // 4.97 units, 12.9 pixels per unit.

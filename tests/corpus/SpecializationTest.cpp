@@ -10,8 +10,8 @@
 // and, since a lobe of weight 0 is never chosen (mxc_closure.glsl), pick the same lobes; what is
 // left is float rounding (constants the compiler folds on the CPU against the same arithmetic on
 // the device), which can flip a sampling decision in a rare pixel. Tolerance: per covered pixel,
-// the largest channel difference relative to max(value, 0.05); at most 0.5% of the pixels over
-// 1e-3, and the mean under 1e-4. A dropped effect that was visible (a coat, a film, an
+// the largest channel difference relative to max(value, 0.05) (rt::compareImages); at most 0.5%
+// of the pixels over 1e-3, and the mean under 1e-4. A dropped effect that was visible (a coat, a film, an
 // emission, one lobe of a mixture) changes most of the sphere by far more.
 //
 // The test program sets GALLIVM_PERF=nopt before it makes its device: lavapipe then skips LLVM's
@@ -25,6 +25,7 @@
 #include <cstdlib>
 #include <map>
 
+#include "runtime/ImageDifference.h"
 #include "support/MaterialSupport.h"
 
 namespace mxc::test {
@@ -153,32 +154,18 @@ TEST_P(Specialization, SpecializedAndGeneralShadersRenderTheSameImage) {
     EXPECT_EQ(bad, 0u) << specialized.names[i] << ": NaN or infinite pixel values";
     EXPECT_EQ(negative, 0u) << specialized.names[i] << ": negative pixel values";
     EXPECT_GT(a[i].at(20, 20)[3], 0.0f) << specialized.names[i] << ": the sphere does not cover the centre";
-    size_t covered = 0, over = 0;
-    double sum = 0.0, worst = 0.0;
-    for (size_t p = 0; p + 3 < a[i].pixels.size(); p += 4) {
-      if (a[i].pixels[p + 3] <= 0.0f && b[i].pixels[p + 3] <= 0.0f) continue;  // background in both
-      ++covered;
-      double d = std::abs(double(a[i].pixels[p + 3]) - b[i].pixels[p + 3]);  // coverage (opacity)
-      for (size_t k = 0; k < 3; ++k) {
-        const double x = a[i].pixels[p + k], y = b[i].pixels[p + k];
-        d = std::max(d, std::abs(x - y) / std::max(std::abs(y), 0.05));  // 0.05 > 0
-      }
-      if (!std::isfinite(d)) d = 1.0;  // a NaN in one image only
-      over += d > 1e-3 ? 1 : 0;
-      sum += d;
-      worst = std::max(worst, d);
-    }
-    ASSERT_GT(covered, 0u) << specialized.names[i];
-    const double share = double(over) / double(covered);  // covered > 0
-    const double mean = sum / double(covered);
+    const rt::ImageDifference d = rt::compareImages(a[i], b[i]);
+    ASSERT_GT(d.covered, 0u) << specialized.names[i];
+    const double share = d.share();
+    const double mean = d.mean;
     if (const KnownDivergence* known = knownDivergence(specialized.names[i])) {
       EXPECT_TRUE(share > 0.005 || mean > 1e-4)
           << specialized.names[i] << " now renders the same both ways: remove it from kKnownDivergences ("
           << known->cause << ")";
       continue;
     }
-    EXPECT_LE(share, 0.005) << specialized.names[i] << ": " << over << " of " << covered
-                            << " pixels differ by more than 1e-3 (worst " << worst << ")";
+    EXPECT_LE(share, 0.005) << specialized.names[i] << ": " << d.over << " of " << d.covered
+                            << " pixels differ by more than 1e-3 (worst " << d.worst << ")";
     EXPECT_LE(mean, 1e-4) << specialized.names[i] << ": mean relative difference " << mean;
     // The specialized shader is the smaller one.
     EXPECT_LE(specialized.words[i].size(), general.words[i].size()) << specialized.names[i];
