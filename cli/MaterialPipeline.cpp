@@ -27,7 +27,7 @@ bool requestInputs(const MaterialOptions& options, CompileRequest& request) {
 }
 
 
-int MaterialPipeline::run(CompileRequest request, const MaterialOptions& options) {
+int MaterialPipeline::run(CompileRequest request, const MaterialOptions& options, bool nothingIsAnError) {
   if (!requestInputs(options, request)) return kUsage;
   const std::string file = request.document.string();
   const bool libraries = session_.loadLibraries(options.libraries);
@@ -47,7 +47,7 @@ int MaterialPipeline::run(CompileRequest request, const MaterialOptions& options
                  fmt::format("{}", fmt::join(compiler_->materialNames(), ", ")).c_str());
     return kUsage;
   }
-  if (compiler_->materials().empty()) {
+  if (compiler_->materials().empty() && nothingIsAnError) {
     std::fprintf(stderr, "error: %s has no material and no surface shader to compile\n", file.c_str());
     return kInvalidDocument;
   }

@@ -36,8 +36,9 @@ class MaterialPipeline {
   explicit MaterialPipeline(Session& session) : session_(session) {}
   /// Loads the libraries and runs the compiler to the IR stage on `request` (its document, and
   /// the inputs and materials `options` choose). Returns kOk, or the exit code to stop with
-  /// (the diagnostics are printed).
-  int run(CompileRequest request, const MaterialOptions& options);
+  /// (the diagnostics are printed). A document without a material or surface shader is an
+  /// error, unless `nothingIsAnError` is false: then kOk with no materials().
+  int run(CompileRequest request, const MaterialOptions& options, bool nothingIsAnError = true);
   /// A usage error when an output is a file the command reads: the document, an included
   /// document, a library file, or an image file of a material.
   std::optional<std::string> checkOutputsAreNotInputs(const OutputSet& outputs) const;

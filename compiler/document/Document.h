@@ -34,6 +34,12 @@ class Document {
   std::vector<NodeDef> nodedefs;
   std::vector<NodeGraph> nodegraphs;
   std::vector<Node> nodes;  ///< document-level nodes, materials included
+  /// The document is a node graph too (MaterialX 1.39, "Node Graph Elements": elements directly
+  /// under <materialx> form its graph): its own interface inputs (for document-level nodes'
+  /// `interfacename`), outputs and tokens.
+  std::vector<Input> inputs;
+  std::vector<Output> outputs;
+  std::vector<Token> tokens;
   std::vector<Implementation> implementations;
   std::vector<TypeDef> typedefs;
   std::vector<GeomPropDef> geompropdefs;

@@ -204,6 +204,12 @@ PortT Builder::buildPort(const xml::Element& e, const Scope& outer) {
       valueAttribute = d;
     }
   }
+  // An empty value of a type that has no empty literal (a number, a boolean) is no value:
+  // MaterialX reads `default=""` so, and its own library writes it (stdlib_genosl_impl.mtlx).
+  if (valueAttribute && valueAttribute->value.find_first_not_of(" \t\n\r") == std::string::npos && !port.type.empty() &&
+      std::holds_alternative<ValueError>(parseValue(valueTypeOf(port.type), valueAttribute->value))) {
+    valueAttribute = nullptr;
+  }
   if (valueAttribute) {
     port.valueString = valueAttribute->value;
     port.valueLocation = e.document().locationOf(valueAttribute->valueOffset);
@@ -283,7 +289,9 @@ NodeDef Builder::buildNodeDef(const xml::Element& e, const Scope& outer) {
   def.element = e;
   def.location = at(e);
   def.name = requireName(e);
-  def.node = requireAttribute(e, "node", "a nodedef names the node category it defines");
+  // A nodedef without `node` defines no node category: MaterialX reads it so (its test suite's
+  // _options.mtlx keeps settings in one); nothing can instantiate it (NodeLibrary skips it).
+  def.node = e.attributeOr("node", "");
   def.nodegroup = e.attributeOr("nodegroup", "");
   def.version = e.attributeOr("version", "");
   def.isDefaultVersion = parseBool(e, "isdefaultversion");
@@ -419,10 +427,17 @@ void Builder::build() {
       doc_.includes.push_back({*href, valueAt(e, "href"), nullptr});
     } else if (isKeptElement(kind)) {
       doc_.otherElements.push_back(e);
-    } else if (kind == "input" || kind == "output" || kind == "token" || kind == "parameter") {
-      diagnostics_.error(at(e), fmt::format("<{}> must be inside a node, nodedef or node graph, not directly in "
-                                            "<materialx>",
-                                            kind));
+    } else if (kind == "input") {
+      doc_.inputs.push_back(buildPort<Input>(e, scope));
+      names.add(doc_.inputs.back().name, at(e));
+    } else if (kind == "output") {
+      doc_.outputs.push_back(buildPort<Output>(e, scope));
+      names.add(doc_.outputs.back().name, at(e));
+    } else if (kind == "token") {
+      doc_.tokens.push_back(buildToken(e));
+      names.add(doc_.tokens.back().name, at(e));
+    } else if (kind == "parameter") {
+      diagnostics_.error(at(e), "<parameter> is MaterialX 1.37 syntax, and belongs inside a node or nodedef");
     } else {
       doc_.nodes.push_back(buildNode(e, scope));
       names.add(doc_.nodes.back().name, at(e));

@@ -42,9 +42,15 @@ const SourceFile* DocumentLoader::read(const fs::path& path, SourceLocation incl
 
 std::unique_ptr<Document> DocumentLoader::parse(const SourceFile& source) {
   std::unique_ptr<Document> doc;
+  std::vector<Diagnostic> warnings;
+  xml::ParseOptions options = options_;
+  options.warnings = &warnings;  // MaterialX's leniencies, reported (xml::ParseOptions::warnings)
   try {
-    doc = buildDocument(xml::parse(source, options_), diagnostics_);
+    xml::Document xml = xml::parse(source, options);
+    for (Diagnostic& w : warnings) diagnostics_.add(std::move(w));
+    doc = buildDocument(std::move(xml), diagnostics_);
   } catch (const CompileError& e) {
+    for (Diagnostic& w : warnings) diagnostics_.add(std::move(w));
     diagnostics_.add(e.diagnostic());
     return nullptr;
   }

@@ -60,6 +60,21 @@ std::vector<Token> splitComponents(std::string_view text) {
   return out;
 }
 
+/// The numbers of a numeric value: separated by commas, by white space, or both, empty pieces
+/// skipped. MaterialX reads "0.944 0.776 0.373" and "1 1,1" that way (its array separators are
+/// ", "), and documents in the wild write both.
+std::vector<Token> splitNumbers(std::string_view text) {
+  std::vector<Token> out;
+  size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && (text[i] == ',' || isSpace(text[i]))) ++i;
+    const size_t begin = i;
+    while (i < text.size() && text[i] != ',' && !isSpace(text[i])) ++i;
+    if (i > begin) out.push_back({text.substr(begin, i - begin), begin});
+  }
+  return out;
+}
+
 std::optional<float> parseFloat(const Token& token, ValueError& error) {
   std::string_view t = token.text;
   if (t.empty()) {
@@ -106,8 +121,7 @@ std::optional<int32_t> parseInteger(const Token& token, ValueError& error) {
 std::optional<std::vector<float>> parseFloats(std::string_view text, size_t count, bool array, std::string_view name,
                                               ValueError& error) {
   std::vector<float> out;
-  if (array && text.find_first_not_of(" \t\n\r") == std::string_view::npos) return out;
-  std::vector<Token> tokens = splitComponents(text);
+  std::vector<Token> tokens = splitNumbers(text);
   for (const Token& token : tokens) {
     std::optional<float> f = parseFloat(token, error);
     if (!f) return std::nullopt;
@@ -187,7 +201,7 @@ std::variant<Value, ValueError> parseValue(ValueType type, std::string_view text
       return ValueError{t.offset, fmt::format("'{}' is not a boolean (write true or false)", t.text)};
     }
     case ValueType::Integer: {
-      std::vector<Token> tokens = splitComponents(text);
+      std::vector<Token> tokens = splitNumbers(text);
       if (tokens.size() != 1) return ValueError{0, fmt::format("an integer value needs 1 number, found {}", tokens.size())};
       auto i = parseInteger(tokens[0], error);
       if (!i) return fail();
@@ -231,12 +245,10 @@ std::variant<Value, ValueError> parseValue(ValueType type, std::string_view text
     case ValueType::GeomName: return Value(type, std::string(text));
     case ValueType::IntegerArray: {
       std::vector<int32_t> out;
-      if (text.find_first_not_of(" \t\n\r") != std::string_view::npos) {
-        for (const Token& t : splitComponents(text)) {
-          auto i = parseInteger(t, error);
-          if (!i) return fail();
-          out.push_back(*i);
-        }
+      for (const Token& t : splitNumbers(text)) {
+        auto i = parseInteger(t, error);
+        if (!i) return fail();
+        out.push_back(*i);
       }
       return Value(type, std::move(out));
     }

@@ -39,7 +39,7 @@ void NodeLibrary::define(std::unordered_map<std::string_view, const T*>& table, 
 void NodeLibrary::addDocument(const doc::Document& document, Diagnostics& diagnostics) {
   documents_.push_back(&document);
   for (const doc::NodeDef& nd : document.nodedefs) {
-    if (nd.name.empty() || nd.node.empty()) continue;  // already reported by the builder
+    if (nd.name.empty() || nd.node.empty()) continue;  // no name: reported by the builder; no node: no category
     const size_t before = nodedefs_.size();
     define(nodedefs_, nd, "nodedef", diagnostics);
     if (nodedefs_.size() > before) byCategory_[nd.node].push_back(&nd);

@@ -17,10 +17,23 @@ struct Scope {
   ResolvedGraph* resolved = nullptr;
   const doc::NodeGraph* graph = nullptr;  // null at document level
   std::unordered_map<std::string_view, ResolvedNode*> nodes;
+  // The scope's interface inputs, outputs and tokens: its graph's, or at document level those
+  // written directly under <materialx> (the document and its includes).
+  std::vector<const doc::Input*> inputs;
+  std::vector<const doc::Output*> outputs;
+  std::vector<const doc::Token*> tokens;
 
   std::string describe() const {
     return graph ? fmt::format("node graph '{}'", graph->name) : std::string("the document");
   }
+};
+
+/// What a document (with its includes) has at its top level.
+struct TopLevel {
+  std::vector<const doc::Node*> nodes;
+  std::vector<const doc::Input*> inputs;
+  std::vector<const doc::Output*> outputs;
+  std::vector<const doc::Token*> tokens;
 };
 
 /// An input as a nodedef declares it, not yet given a source.
@@ -56,8 +69,8 @@ class Resolver {
   Resolver(const lib::NodeLibrary& library, Diagnostics& diagnostics) : library_(library), diagnostics_(diagnostics) {}
 
   /// Resolves the given document-level nodes and graphs as one document.
-  void resolve(ResolvedGraph& top, const std::vector<const doc::Node*>& topNodes,
-               std::vector<std::unique_ptr<ResolvedGraph>>& graphs, const std::vector<const doc::NodeGraph*>& docGraphs);
+  void resolve(ResolvedGraph& top, const TopLevel& topLevel, std::vector<std::unique_ptr<ResolvedGraph>>& graphs,
+               const std::vector<const doc::NodeGraph*>& docGraphs);
 
  private:
   void createNodes(Scope& scope, const std::vector<const doc::Node*>& nodes);
@@ -123,7 +136,11 @@ void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedIn
                        "the 'channels' attribute is MaterialX 1.38 syntax, removed in 1.39: use <extract>, "
                        "<combine2/3/4> or <convert> nodes");
   }
-  if (!port.nodename.empty()) {
+  // At document level nodes and node graphs share one namespace, and MaterialX finds a graph
+  // by `nodename` too (its test suite: cascade_nodegraphs.mtlx connects outputs so).
+  const bool nodenameIsGraph = !port.nodename.empty() && !scope.graph && !scope.nodes.contains(port.nodename) &&
+                               graphsByName_.contains(port.nodename);
+  if (!port.nodename.empty() && !nodenameIsGraph) {
     auto it = scope.nodes.find(port.nodename);
     if (it == scope.nodes.end()) {
       diagnostics_.error(port.attributeLocation("nodename"),
@@ -164,18 +181,20 @@ void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedIn
     checkConnectionType(port, result);
     return;
   }
-  if (!port.nodegraph.empty()) {
+  if (!port.nodegraph.empty() || nodenameIsGraph) {
+    const std::string_view graphName = nodenameIsGraph ? port.nodename : port.nodegraph;
+    const char* graphAttribute = nodenameIsGraph ? "nodename" : "nodegraph";
     if (scope.graph) {
-      diagnostics_.error(port.attributeLocation("nodegraph"),
+      diagnostics_.error(port.attributeLocation(graphAttribute),
                          fmt::format("'{}' connects to node graph '{}' from inside {}: only document-level elements "
                                      "can connect to a node graph",
-                                     port.name, port.nodegraph, scope.describe()));
+                                     port.name, graphName, scope.describe()));
       return;
     }
-    auto it = graphsByName_.find(port.nodegraph);
+    auto it = graphsByName_.find(graphName);
     if (it == graphsByName_.end()) {
-      diagnostics_.error(port.attributeLocation("nodegraph"),
-                         fmt::format("'{}' connects to node graph '{}', which does not exist", port.name, port.nodegraph));
+      diagnostics_.error(port.attributeLocation(graphAttribute),
+                         fmt::format("'{}' connects to node graph '{}', which does not exist", port.name, graphName));
       return;
     }
     const ResolvedGraph& graph = *it->second->resolved;
@@ -189,7 +208,7 @@ void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedIn
     if (!out) {
       std::vector<std::string> names;
       for (const doc::Output& o : element.outputs) names.emplace_back(o.name);
-      diagnostics_.error(port.attributeLocation(port.output.empty() ? "nodegraph" : "output"),
+      diagnostics_.error(port.attributeLocation(port.output.empty() ? graphAttribute : "output"),
                          port.output.empty()
                              ? fmt::format("node graph '{}' has several outputs ({}); name one with output=\"...\"",
                                            element.name, fmt::join(names, ", "))
@@ -205,12 +224,6 @@ void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedIn
     return;
   }
   if (!port.interfacename.empty()) {
-    if (!scope.graph) {
-      diagnostics_.error(port.attributeLocation("interfacename"),
-                         fmt::format("'{}' uses interfacename=\"{}\" outside a node graph", port.name,
-                                     port.interfacename));
-      return;
-    }
     const ResolvedInput* iface = scope.resolved->findInterface(port.interfacename);
     if (!iface) {
       std::vector<std::string> names;
@@ -238,12 +251,10 @@ void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedIn
     // <token> of the enclosing graph (MaterialX 1.39 "Filename Substitutions").
     if (port.value->type() == doc::ValueType::Filename && !port.value->as<std::string>().empty()) {
       std::string path = std::string(port.fileprefix) + port.value->as<std::string>();
-      if (scope.graph) {
-        for (const doc::Token& token : scope.graph->tokens) {
-          const std::string key = "[" + std::string(token.name) + "]";
-          for (size_t at = path.find(key); at != std::string::npos; at = path.find(key, at + token.value.size())) {
-            path.replace(at, key.size(), token.value);
-          }
+      for (const doc::Token* token : scope.tokens) {
+        const std::string key = "[" + std::string(token->name) + "]";
+        for (size_t at = path.find(key); at != std::string::npos; at = path.find(key, at + token->value.size())) {
+          path.replace(at, key.size(), token->value);
         }
       }
       result.value = doc::Value(doc::ValueType::Filename, std::move(path));
@@ -292,20 +303,21 @@ void Resolver::resolveInterface(Scope& scope) {
     }
     return;
   }
-  for (const doc::Input& declared : scope.graph->inputs) {
+  for (const doc::Input* declared : scope.inputs) {
     ResolvedInput input;
-    input.name = declared.name;
-    input.type = declared.type;
-    input.location = declared.location;
-    if (!library_.isKnownType(declared.type)) {
-      diagnostics_.error(declared.attributeLocation("type"),
-                         fmt::format("interface input '{}' has unknown type '{}'", declared.name, declared.type));
+    input.name = declared->name;
+    input.type = declared->type;
+    input.location = declared->location;
+    if (!library_.isKnownType(declared->type)) {
+      diagnostics_.error(declared->attributeLocation("type"),
+                         fmt::format("interface input '{}' has unknown type '{}'", declared->name, declared->type));
     }
-    // A document-level graph's interface inputs take values, or connections to document-level nodes.
-    resolvePort(top_, declared, input);
-    if (input.source == InputSource::Unset && !declared.defaultgeomprop.empty()) {
+    // A document-level graph's interface inputs (and the document's own) take values, or
+    // connections to document-level nodes.
+    resolvePort(top_, *declared, input);
+    if (input.source == InputSource::Unset && !declared->defaultgeomprop.empty()) {
       input.source = InputSource::GeomProp;
-      input.geomprop = declared.defaultgeomprop;
+      input.geomprop = declared->defaultgeomprop;
     }
     graph.interface.push_back(std::move(input));
   }
@@ -313,15 +325,14 @@ void Resolver::resolveInterface(Scope& scope) {
 
 void Resolver::resolveOutputs(Scope& scope) {
   ResolvedGraph& graph = *scope.resolved;
-  for (const doc::Output& out : scope.graph->outputs) {
+  for (const doc::Output* out : scope.outputs) {
     ResolvedInput output;
-    output.name = out.name;
-    output.type = out.type;
-    output.location = out.location;
-    resolvePort(scope, out, output);
-    if (output.source == InputSource::Unset && !out.isConnected()) {
-      diagnostics_.warning(out.location, fmt::format("output '{}' of node graph '{}' is not connected", out.name,
-                                                     scope.graph->name));
+    output.name = out->name;
+    output.type = out->type;
+    output.location = out->location;
+    resolvePort(scope, *out, output);
+    if (output.source == InputSource::Unset && !out->isConnected()) {
+      diagnostics_.warning(out->location, fmt::format("output '{}' of {} is not connected", out->name, scope.describe()));
     }
     graph.outputs.push_back(std::move(output));
   }
@@ -421,10 +432,12 @@ void Resolver::order(std::vector<Scope*>& scopes) {
   }
 }
 
-void Resolver::resolve(ResolvedGraph& top, const std::vector<const doc::Node*>& topNodes,
-                       std::vector<std::unique_ptr<ResolvedGraph>>& graphs,
+void Resolver::resolve(ResolvedGraph& top, const TopLevel& topLevel, std::vector<std::unique_ptr<ResolvedGraph>>& graphs,
                        const std::vector<const doc::NodeGraph*>& docGraphs) {
   top_.resolved = &top;
+  top_.inputs = topLevel.inputs;
+  top_.outputs = topLevel.outputs;
+  top_.tokens = topLevel.tokens;
   for (const doc::NodeGraph* g : docGraphs) {
     if (g->name.empty()) continue;
     auto resolved = std::make_unique<ResolvedGraph>();
@@ -445,18 +458,23 @@ void Resolver::resolve(ResolvedGraph& top, const std::vector<const doc::Node*>& 
     auto scope = std::make_unique<Scope>();
     scope->resolved = resolved.get();
     scope->graph = g;
+    for (const doc::Input& i : g->inputs) scope->inputs.push_back(&i);
+    for (const doc::Output& o : g->outputs) scope->outputs.push_back(&o);
+    for (const doc::Token& t : g->tokens) scope->tokens.push_back(&t);
     graphsByName_.emplace(g->name, scope.get());
     graphScopes_.push_back(std::move(scope));
     graphs.push_back(std::move(resolved));
   }
-  createNodes(top_, topNodes);
+  createNodes(top_, topLevel.nodes);
   for (auto& scope : graphScopes_) {
     std::vector<const doc::Node*> nodes;
     for (const doc::Node& n : scope->graph->nodes) nodes.push_back(&n);
     createNodes(*scope, nodes);
   }
+  resolveInterface(top_);
   for (auto& scope : graphScopes_) resolveInterface(*scope);
   for (auto& node : top.nodes) resolveNode(top_, *node);
+  resolveOutputs(top_);
   for (auto& scope : graphScopes_) {
     for (auto& node : scope->resolved->nodes) resolveNode(*scope, *node);
     resolveOutputs(*scope);
@@ -488,7 +506,7 @@ ResolvedDocument resolveDocument(const doc::Document& document, const lib::NodeL
 
   // Names at document level must be unique across the document and its includes.
   std::unordered_map<std::string_view, SourceLocation> names;
-  std::vector<const doc::Node*> topNodes;
+  TopLevel topLevel;
   std::vector<const doc::NodeGraph*> graphs;
   auto claim = [&](std::string_view name, SourceLocation location) {
     auto [it, inserted] = names.emplace(name, location);
@@ -500,14 +518,26 @@ ResolvedDocument resolveDocument(const doc::Document& document, const lib::NodeL
   for (const doc::Document* d : result.documents) {
     for (const doc::Node& n : d->nodes) {
       claim(n.name, n.location);
-      topNodes.push_back(&n);
+      topLevel.nodes.push_back(&n);
+    }
+    for (const doc::Input& i : d->inputs) {
+      claim(i.name, i.location);
+      topLevel.inputs.push_back(&i);
+    }
+    for (const doc::Output& o : d->outputs) {
+      claim(o.name, o.location);
+      topLevel.outputs.push_back(&o);
+    }
+    for (const doc::Token& t : d->tokens) {
+      claim(t.name, t.location);
+      topLevel.tokens.push_back(&t);
     }
     for (const doc::NodeGraph& g : d->nodegraphs) {
       claim(g.name, g.location);
       graphs.push_back(&g);
     }
   }
-  Resolver(*result.definitions, diagnostics).resolve(result.top, topNodes, result.graphs, graphs);
+  Resolver(*result.definitions, diagnostics).resolve(result.top, topLevel, result.graphs, graphs);
 
   for (const auto& node : result.top.nodes) {
     if (!node->signature || node->signature->outputType() != "material") continue;

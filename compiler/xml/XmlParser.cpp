@@ -29,6 +29,14 @@ class Parser {
     throw CompileError(Diagnostic{Severity::Error, doc_.locationOf(offsetOf(at)), std::move(message)});
   }
   uint32_t offsetOf(const char* at) const { return static_cast<uint32_t>(at - begin_); }
+  /// A raw '<' in an attribute value, kept (ParseOptions::warnings says why) with a warning.
+  void keepRawLessThan(const char* at, std::string_view attributeName) const {
+    options_.warnings->push_back(Diagnostic{
+        Severity::Warning, doc_.locationOf(offsetOf(at)),
+        fmt::format("'<' in the value of attribute '{}' is not well-formed XML (write '&lt;'); read as written, as "
+                    "MaterialX reads it",
+                    attributeName)});
+  }
   std::string where(const char* at) const {
     LineColumn lc = doc_.source().lineColumn(offsetOf(at));
     return fmt::format("line {}, column {}", lc.line, lc.column);
@@ -222,7 +230,12 @@ std::string_view Parser::parseAttributeValue(std::string_view attributeName, boo
   ++p_;
   const char* start = p_;
   // Fast scan: most values have nothing to decode and stay a view into the source.
-  while (*p_ != quote && *p_ != 0 && *p_ != '<' && *p_ != '&' && *p_ != '\t' && *p_ != '\n' && *p_ != '\r') ++p_;
+  for (;;) {
+    while (*p_ != quote && *p_ != 0 && *p_ != '<' && *p_ != '&' && *p_ != '\t' && *p_ != '\n' && *p_ != '\r') ++p_;
+    if (*p_ != '<' || !options_.warnings) break;
+    keepRawLessThan(p_, attributeName);
+    ++p_;
+  }
   decoded = *p_ != quote && *p_ != 0 && *p_ != '<';
   if (!decoded) {
     if (*p_ == 0) {
@@ -244,7 +257,12 @@ std::string_view Parser::parseAttributeValue(std::string_view attributeName, boo
       fail(open, fmt::format("the value of attribute '{}' is not closed: end of input before the closing {}",
                              attributeName, quote));
     }
-    if (c == '<') fail(p_, fmt::format("'<' is not allowed in the value of attribute '{}'; write '&lt;'", attributeName));
+    if (c == '<') {
+      if (!options_.warnings) {
+        fail(p_, fmt::format("'<' is not allowed in the value of attribute '{}'; write '&lt;'", attributeName));
+      }
+      keepRawLessThan(p_, attributeName);
+    }
     if (c == '&') {
       decodeReference();
       continue;

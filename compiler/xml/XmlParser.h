@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "compiler/common/Diagnostic.h"
 #include "compiler/xml/XmlDocument.h"
@@ -25,6 +26,10 @@ struct ParseOptions {
   uint32_t maxDepth = 256;
   /// Most attributes on one element.
   uint32_t maxAttributes = 4096;
+  /// Where given, a raw '<' inside an attribute value is read as written, with a warning added
+  /// here; otherwise it is an error. It is not well-formed XML (XML 1.0 s. 3.1, AttValue), but
+  /// MaterialX's parser accepts it and MaterialX's documents write it (`grid.<UDIM>.png`).
+  std::vector<Diagnostic>* warnings = nullptr;
 };
 
 /// Parses the whole text of `source`. Throws CompileError, with file, line, column and a

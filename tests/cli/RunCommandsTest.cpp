@@ -122,6 +122,25 @@ TEST(CompileCommand, BadSetIsAnErrorAtTheShadingNode) {
   EXPECT_NE(r.err.find("has no material 'Nope' (it has: Default)"), std::string::npos) << r.err;
 }
 
+// A document of definitions or node graphs only is valid and has nothing to compile: compile
+// says so and succeeds, writing nothing; render, which needs a shader, refuses it.
+TEST(CompileCommand, ADocumentWithoutAShaderHasNothingToCompile) {
+  const fs::path doc = writeTemp("graph_only.mtlx",
+                                 "<materialx version=\"1.39\">\n  <constant name=\"c\" type=\"color3\"/>\n"
+                                 "  <output name=\"out\" type=\"color3\" nodename=\"c\"/>\n</materialx>\n");
+  const fs::path spv = fs::temp_directory_path() / ("mxc_cli_nothing_" + std::to_string(::getpid()) + ".spv");
+  CommandRun r = mxc("compile " + doc.string() + " -o " + spv.string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("nothing to compile: " + doc.string() + " has no material and no surface shader"),
+            std::string::npos)
+      << r.out;
+  EXPECT_FALSE(fs::exists(spv));
+  r = mxc("render " + doc.string() + " -o " + spv.string() + ".png");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("has no material and no surface shader to compile"), std::string::npos) << r.err;
+  fs::remove(doc);
+}
+
 TEST(FurnaceCommand, PrintsAlbedoPerAngleAsJson) {
   CommandRun r = mxc("furnace " + corpus(kDefault) + " --angles 3 --samples 4096 --set base_color=1,1,1");
   ASSERT_EQ(r.exitCode, 0) << r.err;

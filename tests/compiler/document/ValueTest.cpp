@@ -55,6 +55,18 @@ TEST(Value, Arrays) {
   EXPECT_NE(parseError(ValueType::Vector3Array, "1,2,3,4").message.find("multiple of 3"), std::string::npos);
 }
 
+// MaterialX separates a numeric value's components by commas, white space or both, and skips
+// empty pieces (its separators are ", "); documents of its test suite write "0.944 0.776 0.373"
+// and "1 1,1".
+TEST(Value, NumbersAreSeparatedByCommasOrWhiteSpace) {
+  EXPECT_EQ(parse(ValueType::Color3, "0.944 0.776 0.373").as<glm::vec3>(), glm::vec3(0.944f, 0.776f, 0.373f));
+  EXPECT_EQ(parse(ValueType::Vector3, "1 1,1").as<glm::vec3>(), glm::vec3(1.0f));
+  EXPECT_EQ(parse(ValueType::Vector2, "1,,2").as<glm::vec2>(), glm::vec2(1.0f, 2.0f));
+  EXPECT_EQ(parse(ValueType::Vector2, "\t3,\n 4 ").as<glm::vec2>(), glm::vec2(3.0f, 4.0f));
+  EXPECT_EQ(parse(ValueType::IntegerArray, "1 2, 3").as<std::vector<int32_t>>(), (std::vector<int32_t>{1, 2, 3}));
+  EXPECT_EQ(parse(ValueType::FloatArray, " ").as<std::vector<float>>().size(), 0u);
+}
+
 TEST(Value, StringsAreKeptAsWritten) {
   EXPECT_EQ(parse(ValueType::String, " spaced, text ").as<std::string>(), " spaced, text ");
   EXPECT_EQ(parse(ValueType::Filename, "a/b c.png").as<std::string>(), "a/b c.png");
@@ -73,9 +85,11 @@ TEST(Value, ErrorsPointAtTheBadComponent) {
   ValueError e = parseError(ValueType::Color3, "1, x, 3");
   EXPECT_EQ(e.offset, 3u);
   EXPECT_NE(e.message.find("'x' is not a number"), std::string::npos);
-  e = parseError(ValueType::Vector2, "1,,2");
-  EXPECT_EQ(e.offset, 2u);
-  EXPECT_NE(e.message.find("expected a number"), std::string::npos);
+  e = parseError(ValueType::Vector3, "1 2 x");
+  EXPECT_EQ(e.offset, 4u);
+  EXPECT_NE(e.message.find("'x' is not a number"), std::string::npos);
+  EXPECT_NE(parseError(ValueType::Vector2, "1,,2,3").message.find("needs 2 numbers, found 3"), std::string::npos);
+  EXPECT_NE(parseError(ValueType::Float, " ").message.find("needs 1 number, found 0"), std::string::npos);
   EXPECT_NE(parseError(ValueType::Float, "nan").message.find("finite"), std::string::npos);
   EXPECT_NE(parseError(ValueType::Float, "1.0f").message.find("not a number"), std::string::npos);
   EXPECT_NE(parseError(ValueType::Integer, "1.5").message.find("not an integer"), std::string::npos);

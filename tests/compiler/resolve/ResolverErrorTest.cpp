@@ -67,9 +67,9 @@ const Malformed kCases[] = {
           "      <input name=\"in1\" type=\"float\" interfacename=\"gain\"/>\n    </add>\n"
           "    <output name=\"o\" type=\"float\" nodename=\"a\"/>\n  </nodegraph>\n"),
      5, 53, "'in1' refers to interface input 'gain', which node graph 'NG' does not have"},
-    {"InterfaceOutsideGraph",
+    {"InterfaceTheDocumentDoesNotHave",
      mtlx("  <add name=\"a\" type=\"float\">\n    <input name=\"in1\" type=\"float\" interfacename=\"x\"/>\n  </add>\n"), 4,
-     51, "uses interfacename=\"x\" outside a node graph"},
+     51, "refers to interface input 'x', which the document does not have (its interface: empty)"},
     {"InterfaceTypeMismatch",
      mtlx("  <nodegraph name=\"NG\">\n    <input name=\"gain\" type=\"color3\" value=\"1,1,1\"/>\n"
           "    <add name=\"a\" type=\"float\">\n      <input name=\"in1\" type=\"float\" interfacename=\"gain\"/>\n"
@@ -147,8 +147,11 @@ const Malformed kCases[] = {
      5, 5, "duplicate name 'x' in node graph 'NG'"},
     {"Parameter137", mtlx("  <add name=\"a\" type=\"float\">\n    <parameter name=\"in1\" type=\"float\" value=\"1\"/>\n  </add>\n"), 4,
      5, "<parameter> is MaterialX 1.37 syntax"},
-    {"InputAtDocumentLevel", mtlx("  <input name=\"x\" type=\"float\"/>\n"), 3, 3,
-     "<input> must be inside a node, nodedef or node graph"},
+    {"ParameterAtDocumentLevel", mtlx("  <parameter name=\"x\" type=\"float\"/>\n"), 3, 3,
+     "<parameter> is MaterialX 1.37 syntax"},
+    {"DocumentInputNameTakenByANode",
+     mtlx("  <input name=\"x\" type=\"float\" value=\"1\"/>\n  <constant name=\"x\" type=\"float\"/>\n"), 4, 3,
+     "'x'"},
     {"NestedNodeGraph",
      mtlx("  <nodegraph name=\"NG\">\n    <nodegraph name=\"inner\"/>\n    <output name=\"o\" type=\"float\" value=\"1\"/>\n"
           "  </nodegraph>\n"),
@@ -188,8 +191,6 @@ const Malformed kCases[] = {
      mtlx("  <nodedef name=\"ND_x\" node=\"x\">\n    <input name=\"n\" type=\"vector3\" defaultgeomprop=\"Nmodel\"/>\n"
           "    <output name=\"out\" type=\"float\"/>\n  </nodedef>\n"),
      4, 53, "defaults to geometric property 'Nmodel', which no geompropdef defines"},
-    {"NodedefWithoutNode", mtlx("  <nodedef name=\"ND_x\">\n    <output name=\"out\" type=\"float\"/>\n  </nodedef>\n"), 3, 3,
-     "<nodedef name=\"ND_x\"> has no 'node' attribute"},
     {"GraphImplementsMissingNodedef",
      mtlx("  <nodegraph name=\"NG\" nodedef=\"ND_missing\">\n    <output name=\"out\" type=\"float\" value=\"1\"/>\n"
           "  </nodegraph>\n"),

@@ -121,6 +121,50 @@ TEST(Resolver, FilenameTokensAreSubstituted) {
   EXPECT_EQ(r.findGraph("NG")->findNode("img")->findInput("file")->value->as<std::string>(), "wood_2k_2k.png");
 }
 
+// The document is a node graph too (MaterialX 1.39): inputs, outputs and tokens written directly
+// under <materialx> are its interface, outputs and tokens (MaterialX's test suite:
+// top_level_input.mtlx, token_graph_material.mtlx, and about 20 documents with outputs).
+TEST(Resolver, TheDocumentHasItsOwnInterfaceOutputsAndTokens) {
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(mtlx(
+      "  <input name=\"tint\" type=\"color3\" value=\"0, 0, 1\"/>\n"
+      "  <token name=\"size\" type=\"string\" value=\"2k\"/>\n"
+      "  <image name=\"img\" type=\"color3\">\n"
+      "    <input name=\"file\" type=\"filename\" value=\"wood_[size].png\"/>\n  </image>\n"
+      "  <multiply name=\"mul\" type=\"color3\">\n"
+      "    <input name=\"in1\" type=\"color3\" nodename=\"img\"/>\n"
+      "    <input name=\"in2\" type=\"color3\" interfacename=\"tint\"/>\n  </multiply>\n"
+      "  <output name=\"out\" type=\"color3\" nodename=\"mul\"/>\n"));
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  EXPECT_EQ(r.top.findNode("img")->findInput("file")->value->as<std::string>(), "wood_2k.png");
+  const resolve::ResolvedNode* mul = r.top.findNode("mul");
+  EXPECT_EQ(mul->findInput("in2")->source, InputSource::Interface);
+  EXPECT_EQ(r.top.findInterface("tint")->value->as<glm::vec3>(), glm::vec3(0, 0, 1));
+  ASSERT_NE(r.top.findOutput("out"), nullptr);
+  EXPECT_EQ(r.top.findOutput("out")->upstream.node, mul);
+}
+
+// At document level `nodename` may name a node graph, as MaterialX reads it
+// (cascade_nodegraphs.mtlx): the connection is to that graph's output.
+TEST(Resolver, ADocumentOutputsNodenameMayNameAGraph) {
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(mtlx(
+      "  <nodegraph name=\"NG\">\n    <constant name=\"c\" type=\"color3\"/>\n"
+      "    <output name=\"o1\" type=\"color3\" nodename=\"c\"/>\n    <output name=\"o2\" type=\"color3\" nodename=\"c\"/>\n"
+      "  </nodegraph>\n  <output name=\"out\" type=\"color3\" nodename=\"NG\" output=\"o2\"/>\n"));
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  ASSERT_NE(r.top.findOutput("out"), nullptr);
+  EXPECT_EQ(r.top.findOutput("out")->upstream.graph, r.findGraph("NG"));
+  EXPECT_EQ(r.top.findOutput("out")->upstream.output, "o2");
+}
+
+// A nodedef without `node` defines no category (MaterialX's _options.mtlx keeps settings in one).
+TEST(Resolver, ANodedefWithoutANodeDefinesNothing) {
+  Context context;
+  context.resolve(mtlx("  <nodedef name=\"Options\">\n    <input name=\"x\" type=\"float\" value=\"1\"/>\n  </nodedef>\n"));
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+}
+
 TEST(Resolver, ShaderBehindAGraphOutputIsTheMaterialsShader) {
   Context context;
   resolve::ResolvedDocument r = context.resolve(mtlx(

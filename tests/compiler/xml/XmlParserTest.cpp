@@ -79,6 +79,27 @@ TEST(XmlParser, BothQuoteStylesAndQuotesInside) {
   EXPECT_EQ(p.document.root().attribute("y"), "it's");
 }
 
+// A raw '<' in an attribute value is not well-formed, but MaterialX writes and reads it
+// (`grid.<UDIM>.png`): with a place for warnings it is kept as written, each one reported at its
+// line and column, in the fast path (nothing else to decode) and in the decoding one.
+TEST(XmlParser, RawLessThanInAnAttributeIsKeptWithAWarningWhereAsked) {
+  std::vector<Diagnostic> warnings;
+  ParseOptions options;
+  options.warnings = &warnings;
+  Parsed p = parseText("<a x=\"grid.<UDIM>.png\"\n   y=\"&amp;<b>\"/>", options);
+  EXPECT_EQ(p.document.root().attribute("x"), "grid.<UDIM>.png");
+  EXPECT_EQ(p.document.root().attribute("y"), "&<b>");
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0].severity, Severity::Warning);
+  EXPECT_NE(warnings[0].message.find("'<' in the value of attribute 'x'"), std::string::npos) << warnings[0].message;
+  EXPECT_EQ(warnings[0].location.lineColumn().line, 1u);
+  EXPECT_EQ(warnings[0].location.lineColumn().column, 12u);
+  EXPECT_EQ(warnings[1].location.lineColumn().line, 2u);
+  EXPECT_EQ(warnings[1].location.lineColumn().column, 12u);
+  // Without the place, the strict parser's error (XmlMalformed.LessThanInAttribute).
+  EXPECT_THROW(parseText("<a x=\"1<2\"/>"), CompileError);
+}
+
 TEST(XmlParser, CommentsCDataAndProcessingInstructions) {
   Parsed p = parseText(
       "<!-- before --><?pi data?>\n<a><!-- c1 --><![CDATA[<raw> & ]] text]]><?target some data?></a><!-- after -->");
