@@ -90,8 +90,16 @@ void addInputOptions(CLI::App& command, MaterialOptions& options) {
       ->check(CLI::Range(1, 1 << 20));
 }
 
+void addSearchPathOption(CLI::App& command, MaterialOptions& options) {
+  command.add_option("--search-path", options.searchPaths,
+                     "A folder searched for image files not found beside the document, and for --mesh names, before "
+                     "those of MATERIALX_SEARCH_PATH (':'-separated); repeatable (MaterialX's search path: a document "
+                     "of its test suite names resources/Images/..., found under the tree's root)");
+}
+
 void addMaterialOptions(CLI::App& command, MaterialOptions& options) {
   addInputOptions(command, options);
+  addSearchPathOption(command, options);
   command.add_option("--material", options.material, "Only the material of this name (default: every material)");
   addLibraryOptions(command, options.libraries);
 }
@@ -132,6 +140,7 @@ void registerInspect(CLI::App& app, int& exitCode) {
   command->add_flag("--partial", options->partial,
                     "Write the report even when the document has errors (the exit code is still 1)");
   addInputOptions(*command, options->inputs);
+  addSearchPathOption(*command, options->inputs);
   addLibraryOptions(*command, options->libraries);
   command->callback([options, &exitCode] { exitCode = runInspect(*options); });
 }
@@ -226,8 +235,6 @@ void registerRender(CLI::App& app, int& exitCode) {
   command->add_option("--look", options->look,
                       "A look of the document: one image with its material assignments to the mesh's parts (glTF "
                       "nodes, OBJ groups: Preview_Mesh and Calibration_Mesh of the shader ball) or to the mesh");
-  command->add_option("--search-path", options->searchPaths,
-                      "A folder searched for --mesh names, before those of MATERIALX_SEARCH_PATH; repeatable");
   command->add_option("--camera-position", options->cameraPosition,
                       "X,Y,Z (default: framed to fit the mesh, from the front; from above for the plane)");
   command->add_option("--camera-target", options->cameraTarget, "X,Y,Z (default: the centre of the mesh's bounds)");

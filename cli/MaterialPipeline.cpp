@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "cli/ExitCode.h"
+#include "cli/MeshArgument.h"
 
 namespace mxc::cli {
 
@@ -19,6 +20,7 @@ bool requestInputs(const MaterialOptions& options, CompileRequest& request) {
     request.lowering.overrides.emplace_back(s.substr(0, eq), s.substr(eq + 1));
   }
   request.lowering.parameters = options.parameters;
+  request.lowering.imageSearchPaths = searchPaths(options.searchPaths);
   request.material = options.material;
   request.accuracy = options.accuracy;
   request.specialize = !options.noSpecialize;

@@ -22,6 +22,7 @@ struct MaterialOptions {
   Accuracy accuracy = Accuracy::Balanced;  ///< --accuracy TIER
   int referenceSamples = 0;                ///< --reference-samples N (0: the command's default)
   bool noSpecialize = false;               ///< --no-specialize: the general shader (CompileRequest::specialize)
+  std::vector<std::string> searchPaths;    ///< --search-path DIR (repeatable): images, meshes
   LibraryOptions libraries;
 };
 

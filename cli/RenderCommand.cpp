@@ -175,7 +175,7 @@ int runRender(const RenderOptions& options) {
     std::fprintf(stderr, "error: --background %s: expected R,G,B\n", backgroundText.c_str());
     return kUsage;
   }
-  auto chosen = chooseMesh(options.mesh, searchPaths(options.searchPaths));
+  auto chosen = chooseMesh(options.mesh, searchPaths(options.materials.searchPaths));
   if (auto* why = std::get_if<std::string>(&chosen)) {
     std::fprintf(stderr, "error: --mesh %s\n", why->c_str());
     return kInvalidDocument;

@@ -31,7 +31,6 @@ struct RenderOptions {
   std::string mesh = "sphere";  ///< cli/MeshArgument.h
   /// A look of the document: one image of its assignments to the mesh's parts (or the mesh).
   std::string look;
-  std::vector<std::string> searchPaths;
   /// X,Y,Z; empty: framed from the mesh's bounds (runtime/Camera.h).
   std::string cameraPosition;
   std::string cameraTarget;  ///< X,Y,Z; empty: the centre of the mesh's bounds

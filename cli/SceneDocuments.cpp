@@ -8,6 +8,8 @@ namespace mxc::cli {
 
 int SceneDocuments::load(const Scene& scene, MaterialOptions options, glsl::ShaderKind stage, bool optimize) {
   options.material.clear();
+  // The scene's own search paths find its documents' images too, after --search-path's.
+  for (const std::filesystem::path& folder : scene.searchPaths) options.searchPaths.push_back(folder.string());
   if (scene.accuracy) options.accuracy = *scene.accuracy;
   for (const std::filesystem::path& document : scene.documents) {
     pipelines_.push_back(std::make_unique<MaterialPipeline>(session_));

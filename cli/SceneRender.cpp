@@ -114,7 +114,7 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
 
   // Meshes, each file read once however many objects use it.
   std::vector<std::filesystem::path> paths = scene.searchPaths;
-  for (const auto& p : searchPaths(options.searchPaths)) paths.push_back(p);
+  for (const auto& p : searchPaths(options.materials.searchPaths)) paths.push_back(p);
   std::vector<rt::MeshBounds> spheres;
   for (const SceneObjectSpec& object : scene.objects) {
     if (!meshes.count(object.mesh)) {

@@ -1,5 +1,7 @@
 #include "compiler/lower/Context.h"
 
+#include <filesystem>
+
 #include <fmt/format.h>
 
 #include "compiler/common/LargeStack.h"
@@ -223,6 +225,21 @@ std::string Context::stringInput(const NodeRef& n, std::string_view name) {
     return material.exprs.constantValue(v).str();
   }
   return {};
+}
+
+std::string Context::imageFile(const NodeRef& n) {
+  const std::string file = stringInput(n, "file");
+  const std::filesystem::path path(file);
+  if (file.empty() || path.is_absolute() || options.imageSearchPaths.empty()) return file;
+  std::error_code ec;  // an unreadable folder is a folder without the file
+  if (std::filesystem::exists(std::filesystem::path(document.document->path()).parent_path() / path, ec)) return file;
+  for (const std::filesystem::path& folder : options.imageSearchPaths) {
+    if (!std::filesystem::exists(folder / path, ec)) continue;
+    // Absolute: later stages take a relative path as relative to the document's folder.
+    const std::filesystem::path found = std::filesystem::absolute(folder / path, ec);
+    return ec ? (folder / path).string() : found.string();
+  }
+  return file;
 }
 
 ir::ExprId Context::nodeValue(const NodeRef& n, std::string_view output) {

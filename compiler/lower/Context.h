@@ -69,6 +69,10 @@ class Context {
   ir::Param param(const NodeRef& n, std::string_view name);
   /// A uniform string or filename input's value ("" when unset or connected).
   std::string stringInput(const NodeRef& n, std::string_view name);
+  /// The file an image node reads: its `file` input, found relative to the document's folder,
+  /// else in the first of LoweringOptions::imageSearchPaths that has it (then that path); a
+  /// file found nowhere keeps its value, and the renderer reports it missing.
+  std::string imageFile(const NodeRef& n);
   /// The colour space of a filename input, following interface connections to where it is set
   /// ("" when none is given).
   std::string colorspace(const NodeRef& n, std::string_view name);

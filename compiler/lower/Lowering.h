@@ -2,6 +2,7 @@
 /// \file
 /// Lowering: from the resolved graph of a document to IR materials (compiler/ir).
 
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,6 +29,10 @@ struct LoweringOptions {
   /// string) stays variable, as `--param` would keep it, so that no effect of the shading model
   /// is folded away: the general shader a generator that does not specialize makes.
   bool everyInputVariable = false;
+  /// Folders an image file is looked for in when it is not found relative to the document's
+  /// folder (`--search-path`, MATERIALX_SEARCH_PATH): MaterialX's resolution order, the
+  /// document's folder first (its `fileprefix` is part of the file's value already).
+  std::vector<std::filesystem::path> imageSearchPaths;
 };
 
 /// Every material of the document, in document order: each surfacematerial's surface shader.

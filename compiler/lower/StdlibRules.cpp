@@ -228,7 +228,7 @@ ExprId time(Context& c, const NodeRef&, std::string_view, Type type) {
 // --- Textures (MaterialX "Texture Nodes") ---
 
 ExprId sample(Context& c, const NodeRef& n, ExprId uv, Type type, std::string_view uaddress, std::string_view vaddress) {
-  const std::string file = c.stringInput(n, "file");
+  const std::string file = c.imageFile(n);
   c.material.addImage(file, c.origin(n, "file"));
   ExprId texture = c.material.exprs.named(Op::Texture, Type::String, file);
   std::string filter = c.stringInput(n, "filtertype");
@@ -249,7 +249,7 @@ ExprId tiledimage(Context& c, const NodeRef& n, std::string_view, Type type) {
 }
 ExprId hextiledimage(Context& c, const NodeRef& n, std::string_view, Type type) {
   // Hexagonal tiling (Mikkelsen 2022) is done by the shader library; the IR keeps its inputs.
-  const std::string file = c.stringInput(n, "file");
+  const std::string file = c.imageFile(n);
   c.material.addImage(file, c.origin(n, "file"));
   ExprId texture = c.material.exprs.named(Op::Texture, Type::String, file);
   ExprId uv = c.b.mul(in(c, n, "texcoord"), in(c, n, "tiling"));

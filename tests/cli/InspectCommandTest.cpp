@@ -98,6 +98,43 @@ TEST(InspectCommand, EffectsNameTheInputOrSceneFactBehindEachChoice) {
   }
 }
 
+// An image not beside the document is found on the search path (--search-path, then
+// MATERIALX_SEARCH_PATH), as MaterialX finds its test suite's resources/Images/...; the first
+// folder that has it wins, and the IR names the file found (absolute).
+TEST(InspectCommand, ImagesAreFoundOnTheSearchPath) {
+  TempFolder folder("search_path");
+  fs::create_directories(folder / "doc");
+  fs::create_directories(folder / "first/resources/Images");
+  fs::create_directories(folder / "second/resources/Images");
+  writeText(folder / "first/resources/Images/grid.png", "");
+  writeText(folder / "second/resources/Images/grid.png", "");
+  writeText(folder / "doc/d.mtlx",
+            "<materialx version=\"1.39\">\n  <image name=\"img\" type=\"color3\">\n"
+            "    <input name=\"file\" type=\"filename\" value=\"resources/Images/grid.png\"/>\n  </image>\n"
+            "  <surface_unlit name=\"s\" type=\"surfaceshader\">\n"
+            "    <input name=\"emission_color\" type=\"color3\" nodename=\"img\"/>\n  </surface_unlit>\n"
+            "  <surfacematerial name=\"m\" type=\"material\">\n"
+            "    <input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"s\"/>\n  </surfacematerial>\n"
+            "</materialx>\n");
+  const std::string doc = (folder / "doc/d.mtlx").string();
+  CommandRun r = mxc("inspect --ir " + doc, "unset MATERIALX_SEARCH_PATH;");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("texture \"resources/Images/grid.png\""), std::string::npos) << r.out;
+  r = mxc("inspect --ir " + doc + " --search-path " + (folder / "missing").string() + " --search-path " +
+          (folder / "second").string());
+  EXPECT_NE(r.out.find("texture \"" + (folder / "second/resources/Images/grid.png").string() + "\""), std::string::npos)
+      << r.out;
+  r = mxc("inspect --ir " + doc, "MATERIALX_SEARCH_PATH=" + (folder / "first").string() + ":" +
+                                     (folder / "second").string());
+  EXPECT_NE(r.out.find("texture \"" + (folder / "first/resources/Images/grid.png").string() + "\""), std::string::npos)
+      << r.out;
+  // The document's folder comes first.
+  fs::create_directories(folder / "doc/resources/Images");
+  writeText(folder / "doc/resources/Images/grid.png", "");
+  r = mxc("inspect --ir " + doc + " --search-path " + (folder / "second").string());
+  EXPECT_NE(r.out.find("texture \"resources/Images/grid.png\""), std::string::npos) << r.out;
+}
+
 TEST(InspectCommand, DotIsAGraphvizDigraph) {
   CommandRun r = mxc("inspect --dot " + corpus("materialx/examples/StandardSurface/standard_surface_brick_procedural.mtlx"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
