@@ -78,7 +78,13 @@ class Resolver {
   void resolveInterface(Scope& scope);
   void resolveOutputs(Scope& scope);
   /// Resolves what a port is set to (connection, interface, value), checked against `type`.
-  void resolvePort(const Scope& scope, const doc::Port& port, ResolvedInput& result);
+  /// `tokens`: where a filename value's [token]s are looked up, innermost first (the node's own,
+  /// its graph's, the document's); null: the scope's, then the document's.
+  void resolvePort(const Scope& scope, const doc::Port& port, ResolvedInput& result,
+                   const std::vector<const doc::Token*>* tokens = nullptr);
+  /// The tokens a port of `scope` sees, innermost first: `own` (a node's), the scope's, and the
+  /// document's (MaterialX 1.39 "Filename Substitutions": the nearest enclosing token wins).
+  std::vector<const doc::Token*> tokensSeen(const Scope& scope, const std::vector<doc::Token>* own) const;
   void checkConnectionType(const doc::Port& port, ResolvedInput& result);
   void checkEnum(const ResolvedInput& input);
   void order(std::vector<Scope*>& scopes);
@@ -127,7 +133,18 @@ void Resolver::checkConnectionType(const doc::Port& port, ResolvedInput& result)
   }
 }
 
-void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedInput& result) {
+std::vector<const doc::Token*> Resolver::tokensSeen(const Scope& scope, const std::vector<doc::Token>* own) const {
+  std::vector<const doc::Token*> out;
+  if (own) {
+    for (const doc::Token& t : *own) out.push_back(&t);
+  }
+  out.insert(out.end(), scope.tokens.begin(), scope.tokens.end());
+  if (&scope != &top_) out.insert(out.end(), top_.tokens.begin(), top_.tokens.end());
+  return out;
+}
+
+void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedInput& result,
+                           const std::vector<const doc::Token*>* tokens) {
   result.instance = &port;
   result.location = port.location;
   result.channels = port.channels;
@@ -251,11 +268,21 @@ void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedIn
     // <token> of the enclosing graph (MaterialX 1.39 "Filename Substitutions").
     if (port.value->type() == doc::ValueType::Filename && !port.value->as<std::string>().empty()) {
       std::string path = std::string(port.fileprefix) + port.value->as<std::string>();
-      for (const doc::Token* token : scope.tokens) {
-        const std::string key = "[" + std::string(token->name) + "]";
-        for (size_t at = path.find(key); at != std::string::npos; at = path.find(key, at + token->value.size())) {
-          path.replace(at, key.size(), token->value);
+      // Each [name] is replaced by the innermost token of that name.
+      const std::vector<const doc::Token*> seen = tokens ? *tokens : tokensSeen(scope, nullptr);
+      size_t open = path.find('[');
+      while (open != std::string::npos) {
+        const size_t close = path.find(']', open);
+        if (close == std::string::npos) break;
+        const std::string_view name = std::string_view(path).substr(open + 1, close - open - 1);
+        size_t next = open + 1;
+        for (const doc::Token* token : seen) {
+          if (token->name != name) continue;
+          path.replace(open, close - open + 1, token->value);
+          next = open + token->value.size();  // past the value: a token's value is not substituted again
+          break;
         }
+        open = path.find('[', next);
       }
       result.value = doc::Value(doc::ValueType::Filename, std::move(path));
     }
@@ -286,7 +313,10 @@ void Resolver::resolveNode(Scope& scope, ResolvedNode& node) {
   if (!node.signature) return;
   for (const doc::Input* declaration : node.signature->inputs) {
     ResolvedInput input = declaredInput(*declaration);
-    if (const doc::Input* instance = node.node->findInput(declaration->name)) resolvePort(scope, *instance, input);
+    if (const doc::Input* instance = node.node->findInput(declaration->name)) {
+      const std::vector<const doc::Token*> tokens = tokensSeen(scope, &node.node->tokens);
+      resolvePort(scope, *instance, input, &tokens);
+    }
     if (input.source == InputSource::Unset) applyDefault(input, *declaration);
     checkEnum(input);
     node.inputs.push_back(std::move(input));
@@ -314,7 +344,8 @@ void Resolver::resolveInterface(Scope& scope) {
     }
     // A document-level graph's interface inputs (and the document's own) take values, or
     // connections to document-level nodes.
-    resolvePort(top_, *declared, input);
+    const std::vector<const doc::Token*> tokens = tokensSeen(scope, nullptr);  // the graph's own tokens
+    resolvePort(top_, *declared, input, &tokens);
     if (input.source == InputSource::Unset && !declared->defaultgeomprop.empty()) {
       input.source = InputSource::GeomProp;
       input.geomprop = declared->defaultgeomprop;
@@ -461,6 +492,10 @@ void Resolver::resolve(ResolvedGraph& top, const TopLevel& topLevel, std::vector
     for (const doc::Input& i : g->inputs) scope->inputs.push_back(&i);
     for (const doc::Output& o : g->outputs) scope->outputs.push_back(&o);
     for (const doc::Token& t : g->tokens) scope->tokens.push_back(&t);
+    // A graph that implements a nodedef sees the nodedef's tokens (their defaults) after its own.
+    if (resolved->implements) {
+      for (const doc::Token& t : resolved->implements->tokens) scope->tokens.push_back(&t);
+    }
     graphsByName_.emplace(g->name, scope.get());
     graphScopes_.push_back(std::move(scope));
     graphs.push_back(std::move(resolved));

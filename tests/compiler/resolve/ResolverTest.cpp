@@ -121,6 +121,32 @@ TEST(Resolver, FilenameTokensAreSubstituted) {
   EXPECT_EQ(r.findGraph("NG")->findNode("img")->findInput("file")->value->as<std::string>(), "wood_2k_2k.png");
 }
 
+// Tokens are looked up from the innermost element out (MaterialX's token_graph_material.mtlx):
+// a node's own tokens, then its graph's, then the document's; a graph's interface input takes
+// its graph's tokens; an implementation graph sees its nodedef's.
+TEST(Resolver, TheInnermostTokenIsSubstituted) {
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(mtlx(
+      "  <token name=\"ext\" type=\"string\" value=\"jpg\"/>\n"
+      "  <token name=\"res\" type=\"string\" value=\"1k\"/>\n"
+      "  <nodegraph name=\"NG\">\n    <token name=\"name\" type=\"string\" value=\"cloth\"/>\n"
+      "    <input name=\"f\" type=\"filename\" value=\"[name]_[res].[ext]\"/>\n"
+      "    <image name=\"a\" type=\"color3\">\n      <input name=\"file\" type=\"filename\" interfacename=\"f\"/>\n    </image>\n"
+      "    <image name=\"b\" type=\"color3\">\n      <token name=\"ext\" type=\"string\" value=\"png\"/>\n"
+      "      <input name=\"file\" type=\"filename\" value=\"[name].[ext][missing]\"/>\n    </image>\n"
+      "    <output name=\"out\" type=\"color3\" nodename=\"a\"/>\n  </nodegraph>\n"
+      "  <nodedef name=\"ND_tok\" node=\"tok\">\n    <token name=\"name\" type=\"string\" value=\"grid\"/>\n"
+      "    <output name=\"out\" type=\"color3\"/>\n  </nodedef>\n"
+      "  <nodegraph name=\"NG_tok\" nodedef=\"ND_tok\">\n    <image name=\"c\" type=\"color3\">\n"
+      "      <input name=\"file\" type=\"filename\" value=\"[name].[ext]\"/>\n    </image>\n"
+      "    <output name=\"out\" type=\"color3\" nodename=\"c\"/>\n  </nodegraph>\n"));
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  const resolve::ResolvedGraph* g = r.findGraph("NG");
+  EXPECT_EQ(g->findInterface("f")->value->as<std::string>(), "cloth_1k.jpg");
+  EXPECT_EQ(g->findNode("b")->findInput("file")->value->as<std::string>(), "cloth.png[missing]");
+  EXPECT_EQ(r.findGraph("NG_tok")->findNode("c")->findInput("file")->value->as<std::string>(), "grid.jpg");
+}
+
 // The document is a node graph too (MaterialX 1.39): inputs, outputs and tokens written directly
 // under <materialx> are its interface, outputs and tokens (MaterialX's test suite:
 // top_level_input.mtlx, token_graph_material.mtlx, and about 20 documents with outputs).
