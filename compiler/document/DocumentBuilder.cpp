@@ -38,11 +38,13 @@ bool isValidName(std::string_view name) {
 struct Scope {
   std::string_view colorspace;
   std::string_view fileprefix;
+  std::string_view ns;  ///< MaterialX `namespace`, inherited like the other two
 
   Scope enter(const xml::Element& e) const {
     Scope s = *this;
     if (auto cs = e.attribute("colorspace")) s.colorspace = *cs;
     if (auto fp = e.attribute("fileprefix")) s.fileprefix = *fp;
+    if (auto n = e.attribute("namespace")) s.ns = *n;
     return s;
   }
 };
@@ -119,6 +121,13 @@ class Builder {
   Node buildNode(const xml::Element& e, const Scope& scope);
   NodeDef buildNodeDef(const xml::Element& e, const Scope& scope);
   NodeGraph buildNodeGraph(const xml::Element& e, const Scope& scope);
+  /// `name` in the scope's namespace ("ns:name"; MaterialX 1.39 "Namespaces"): the name a
+  /// definition is known by, and the name a reference from inside the namespace means. A name
+  /// already qualified, or outside any namespace, is kept.
+  std::string_view qualified(const Scope& scope, std::string_view name) {
+    if (scope.ns.empty() || name.empty() || name.find(':') != std::string_view::npos) return name;
+    return doc_.own(fmt::format("{}:{}", scope.ns, name));
+  }
   void unexpectedChild(const xml::Element& child, std::string_view parentKind);
 
   Document& doc_;
@@ -288,14 +297,14 @@ NodeDef Builder::buildNodeDef(const xml::Element& e, const Scope& outer) {
   NodeDef def;
   def.element = e;
   def.location = at(e);
-  def.name = requireName(e);
+  def.name = qualified(scope, requireName(e));
   // A nodedef without `node` defines no node category: MaterialX reads it so (its test suite's
   // _options.mtlx keeps settings in one); nothing can instantiate it (NodeLibrary skips it).
-  def.node = e.attributeOr("node", "");
+  def.node = qualified(scope, e.attributeOr("node", ""));
+  def.inherit = qualified(scope, e.attributeOr("inherit", ""));
   def.nodegroup = e.attributeOr("nodegroup", "");
   def.version = e.attributeOr("version", "");
   def.isDefaultVersion = parseBool(e, "isdefaultversion");
-  def.inherit = e.attributeOr("inherit", "");
   def.target = e.attributeOr("target", "");
   NameSet names(diagnostics_, "this nodedef");
   buildPorts(e, scope, def, names, nullptr);
@@ -307,8 +316,8 @@ NodeGraph Builder::buildNodeGraph(const xml::Element& e, const Scope& outer) {
   NodeGraph graph;
   graph.element = e;
   graph.location = at(e);
-  graph.name = requireName(e);
-  graph.nodedef = e.attributeOr("nodedef", "");
+  graph.name = qualified(scope, requireName(e));
+  graph.nodedef = qualified(scope, e.attributeOr("nodedef", ""));
   NameSet names(diagnostics_, fmt::format("node graph '{}'", graph.name));
   std::vector<xml::Element> nodes;
   buildPorts(e, scope, graph, names, &nodes);
@@ -346,11 +355,6 @@ void Builder::build() {
                          fmt::format("MaterialX version {} is not one mxc knows (1.38, 1.39); reading it as 1.39",
                                      doc_.version));
   }
-  if (root.attribute("namespace")) {
-    diagnostics_.error(valueAt(root, "namespace"),
-                       "the 'namespace' attribute is not supported: mxc would resolve names without it and could "
-                       "pick the wrong definitions");
-  }
   Scope scope = Scope().enter(root);
   NameSet names(diagnostics_, "the document");
   const std::vector<xml::Element> children = root.children();
@@ -367,9 +371,10 @@ void Builder::build() {
     } else if (kind == "implementation") {
       Implementation impl;
       impl.location = at(e);
-      impl.name = requireName(e);
-      impl.nodedef = requireAttribute(e, "nodedef", "an implementation names the nodedef it implements");
-      impl.nodegraph = e.attributeOr("nodegraph", "");
+      const Scope inner = scope.enter(e);
+      impl.name = qualified(inner, requireName(e));
+      impl.nodedef = qualified(inner, requireAttribute(e, "nodedef", "an implementation names the nodedef it implements"));
+      impl.nodegraph = qualified(inner, e.attributeOr("nodegraph", ""));
       impl.file = e.attributeOr("file", "");
       impl.function = e.attributeOr("function", "");
       impl.target = e.attributeOr("target", "");

@@ -65,6 +65,15 @@ std::string geomprop(const std::string& name, Type type, const std::string& fall
   else if (name == "Bobject" || name == "Bmodel") v = "g.Bobj";
   else if (name.rfind("UV", 0) == 0) v = "g.uv";
   else if (name.rfind("color", 0) == 0) v = "g.color";
+  // The view direction, from the eye to the shaded point (MaterialX nprlib "viewdirection",
+  // geompropdef Vworld): -wo, wo being the unit direction towards the viewer every stage passes
+  // to mxc_material_closure. In object space through the inverse of the object's transform,
+  // which a singular transform (a zero scale) does not have: then the world direction.
+  else if (name == "Vworld") v = "(-wo)";
+  else if (name == "Vobject" || name == "Vmodel") {
+    v = "(abs(determinant(mat3(g.objectToWorld))) > 1e-30 ? mxc_safe_normalize((inverse(g.objectToWorld) * "
+        "vec4(-wo, 0.0)).xyz, -wo) : -wo)";
+  }
   if (v.empty()) return fallback;  // a named primvar the harness does not provide: its default
   const int n = ir::componentCount(type);
   if (v == "g.uv" && n == 3) return "vec3(g.uv, 0.0)";

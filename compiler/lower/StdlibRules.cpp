@@ -91,6 +91,12 @@ ExprId dotproduct(Context& c, const NodeRef& n, std::string_view, Type) {
 ExprId crossproduct(Context& c, const NodeRef& n, std::string_view, Type) {
   return c.material.exprs.op(Op::Cross, Type::Vec3, {in(c, n, "in1"), in(c, n, "in2")});
 }
+ExprId reflect(Context& c, const NodeRef& n, std::string_view, Type) {
+  // in - 2 dot(N, in) N (MaterialX "reflect"; GLSL reflect()): N is used as given, as there.
+  const ExprId i = in(c, n, "in");
+  const ExprId normal = in(c, n, "normal");
+  return c.b.sub(i, c.b.mul(c.b.mul(c.b.f(2.0f), c.b.dot(normal, i)), normal));
+}
 ExprId invert(Context& c, const NodeRef& n, std::string_view, Type) {
   return c.b.sub(in(c, n, "amount"), in(c, n, "in"));  // amount - in
 }
@@ -207,6 +213,9 @@ ExprId tangent(Context& c, const NodeRef& n, std::string_view, Type type) {
 }
 ExprId bitangent(Context& c, const NodeRef& n, std::string_view, Type type) {
   return c.material.exprs.named(Op::GeomProp, type, spaceName(c, n) == "world" ? "Bworld" : "Bobject");
+}
+ExprId viewdirection(Context& c, const NodeRef& n, std::string_view, Type type) {
+  return c.material.exprs.named(Op::GeomProp, type, spaceName(c, n) == "world" ? "Vworld" : "Vobject");
 }
 ExprId texcoord(Context& c, const NodeRef& n, std::string_view, Type type) {
   return c.material.exprs.named(Op::GeomProp, type, fmt::format("UV{}", intInput(c, n, "index", 0)));
@@ -439,6 +448,7 @@ const RuleTable& rules() {
       {"distance", distance},
       {"dotproduct", dotproduct},
       {"crossproduct", crossproduct},
+      {"reflect", reflect},
       {"invert", invert},
       {"clamp", clamp},
       {"mix", mix},
@@ -467,6 +477,7 @@ const RuleTable& rules() {
       {"separate4", separate},
       {"extract", extract},
       {"position", position},
+      {"viewdirection", viewdirection},
       {"normal", normal},
       {"tangent", tangent},
       {"bitangent", bitangent},

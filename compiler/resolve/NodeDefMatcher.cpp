@@ -93,6 +93,13 @@ const doc::NodeDef* matchNodeDef(const doc::Node& node, const lib::NodeLibrary& 
     std::string suggestion;
     size_t best = 3;  // suggest only close names
     for (std::string_view category : library.categories()) {
+      // The category in a namespace, written without it: say which namespace.
+      const size_t colon = category.rfind(':');
+      if (colon != std::string_view::npos && category.substr(colon + 1) == node.category) {
+        suggestion = fmt::format(" (<{}> is defined in namespace '{}': write <{}>)", node.category,
+                                 category.substr(0, colon), category);
+        break;
+      }
       size_t d = editDistance(category, node.category);
       if (d < best) best = d, suggestion = fmt::format(" (did you mean <{}>?)", category);
     }

@@ -11,6 +11,7 @@
 
 #include "runtime/ImageIO.h"
 #include "support/CommandSupport.h"
+#include "support/RenderCommandSupport.h"
 
 namespace mxc::test {
 namespace {
@@ -138,6 +139,48 @@ TEST(CompileCommand, ADocumentWithoutAShaderHasNothingToCompile) {
   r = mxc("render " + doc.string() + " -o " + spv.string() + ".png");
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("has no material and no surface shader to compile"), std::string::npos) << r.err;
+  fs::remove(doc);
+}
+
+// nprlib's viewdirection (-wo) and stdlib's reflect, read on the device: an unlit sphere whose
+// red is the facing ratio -V.N (1 at the centre, falling to 0 at the rim) and whose green is
+// the z of the view direction reflected about N (for a camera on +z, R = V - 2 (V.N) N: +1 at
+// the centre, where it goes back to the camera, falling towards the rim; stored as (R.z + 1) / 2
+// so it is non-negative).
+TEST(RenderCommand, ViewDirectionAndReflectReachTheShader) {
+  const fs::path doc = writeTemp(
+      "view_direction.mtlx",
+      "<materialx version=\"1.39\">\n"
+      "  <viewdirection name=\"v\" type=\"vector3\"/>\n"
+      "  <normal name=\"n\" type=\"vector3\"><input name=\"space\" type=\"string\" value=\"world\"/></normal>\n"
+      "  <dotproduct name=\"vn\" type=\"float\"><input name=\"in1\" type=\"vector3\" nodename=\"v\"/>"
+      "<input name=\"in2\" type=\"vector3\" nodename=\"n\"/></dotproduct>\n"
+      "  <multiply name=\"facing\" type=\"float\"><input name=\"in1\" type=\"float\" nodename=\"vn\"/>"
+      "<input name=\"in2\" type=\"float\" value=\"-1\"/></multiply>\n"
+      "  <reflect name=\"r\" type=\"vector3\"><input name=\"in\" type=\"vector3\" nodename=\"v\"/></reflect>\n"
+      "  <extract name=\"rz\" type=\"float\"><input name=\"in\" type=\"vector3\" nodename=\"r\"/>"
+      "<input name=\"index\" type=\"integer\" value=\"2\"/></extract>\n"
+      "  <multiply name=\"rz01\" type=\"float\"><input name=\"in1\" type=\"float\" nodename=\"rzp1\"/>"
+      "<input name=\"in2\" type=\"float\" value=\"0.5\"/></multiply>\n"
+      "  <add name=\"rzp1\" type=\"float\"><input name=\"in1\" type=\"float\" nodename=\"rz\"/>"
+      "<input name=\"in2\" type=\"float\" value=\"1\"/></add>\n"
+      "  <combine3 name=\"rgb\" type=\"color3\"><input name=\"in1\" type=\"float\" nodename=\"facing\"/>"
+      "<input name=\"in2\" type=\"float\" nodename=\"rz01\"/></combine3>\n"
+      "  <surface_unlit name=\"s\" type=\"surfaceshader\"><input name=\"emission_color\" type=\"color3\" "
+      "nodename=\"rgb\"/></surface_unlit>\n"
+      "  <surfacematerial name=\"m\" type=\"material\"><input name=\"surfaceshader\" type=\"surfaceshader\" "
+      "nodename=\"s\"/></surfacematerial>\n"
+      "</materialx>\n");
+  const rt::RgbaImage image = renderCommand(doc.string() + " --size 64 --spp 1 --env none --light none");
+  ASSERT_EQ(image.width, 64u);
+  const float* centre = image.at(32, 32);
+  EXPECT_NEAR(centre[0], 1.0f, 0.02f) << "facing ratio at the centre";
+  EXPECT_NEAR(centre[1], 1.0f, 0.02f) << "(R.z + 1) / 2 at the centre: R points back at the camera";
+  // Towards the rim (still on the sphere) the facing ratio falls and R turns away from +z.
+  const float* side = image.at(32 + 18, 32);
+  ASSERT_GT(side[3], 0.0f) << "the sample is on the sphere";
+  EXPECT_LT(side[0], 0.9f * centre[0]);
+  EXPECT_LT(side[1], centre[1] - 0.05f);
   fs::remove(doc);
 }
 

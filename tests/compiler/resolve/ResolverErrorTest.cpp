@@ -210,8 +210,10 @@ const Malformed kCases[] = {
           "      <input name=\"in1\" type=\"float\" nodegraph=\"A\"/>\n    </add>\n"
           "    <output name=\"o\" type=\"float\" nodename=\"a\"/>\n  </nodegraph>\n"),
      8, 49, "only document-level elements can connect to a node graph"},
-    {"NamespaceRefused", "<materialx version=\"1.39\" namespace=\"acme\"/>", 1, 38,
-     "the 'namespace' attribute is not supported"},
+    {"NamespacedCategoryWrittenPlain",
+     mtlx("  <nodedef name=\"ND_t\" node=\"t\" namespace=\"acme\">\n    <output name=\"out\" type=\"float\"/>\n"
+          "  </nodedef>\n  <t name=\"x\" type=\"float\"/>\n"),
+     6, 3, "unknown node category <t>: no nodedef defines it (<t> is defined in namespace 'acme': write <acme:t>)"},
     {"IncludeWithoutHref", mtlx("  <xi:include/>\n"), 3, 3, "<xi:include> has no 'href' attribute"},
     {"IncludeMissingFile", mtlx("  <xi:include href=\"no_such_file.mtlx\"/>\n"), 3, 21,
      "cannot read the included file"},

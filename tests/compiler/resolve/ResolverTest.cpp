@@ -184,6 +184,28 @@ TEST(Resolver, ADocumentOutputsNodenameMayNameAGraph) {
   EXPECT_EQ(r.top.findOutput("out")->upstream.output, "o2");
 }
 
+// MaterialX namespaces: a nodedef, node graph or implementation in a namespace (its own
+// attribute or the document's) is known as "ns:name", defines the category "ns:node", and its
+// references are read in the namespace (toon_shade.mtlx of MaterialX's test suite).
+TEST(Resolver, NamespacesQualifyDefinitionsAndTheirReferences) {
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(mtlx(
+      "  <nodedef name=\"ND_t\" node=\"t\" namespace=\"acme\">\n"
+      "    <input name=\"k\" type=\"float\" value=\"2\"/>\n    <output name=\"out\" type=\"float\"/>\n  </nodedef>\n"
+      "  <nodegraph name=\"NG_t\" nodedef=\"ND_t\" namespace=\"acme\">\n"
+      "    <multiply name=\"m\" type=\"float\"><input name=\"in1\" type=\"float\" interfacename=\"k\"/></multiply>\n"
+      "    <output name=\"out\" type=\"float\" nodename=\"m\"/>\n  </nodegraph>\n"
+      "  <acme:t name=\"x\" type=\"float\"><input name=\"k\" type=\"float\" value=\"3\"/></acme:t>\n"));
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  const resolve::ResolvedNode* x = r.top.findNode("x");
+  ASSERT_NE(x, nullptr);
+  ASSERT_NE(x->nodedef, nullptr);
+  EXPECT_EQ(x->nodedef->name, "acme:ND_t");
+  const doc::NodeGraph* graph = r.definitions->implementationGraph(*x->nodedef);
+  ASSERT_NE(graph, nullptr);
+  EXPECT_EQ(graph->name, "acme:NG_t");
+}
+
 // A nodedef without `node` defines no category (MaterialX's _options.mtlx keeps settings in one).
 TEST(Resolver, ANodedefWithoutANodeDefinesNothing) {
   Context context;
