@@ -100,6 +100,9 @@ struct OpenPbr {
     i.slots.set(Slot::Ior, p("specular_ior"));
     // specular_weight may exceed 1; the evaluator clamps xi to [0, 1/F_s] (eq. modulated_ior).
     i.slots.set(Slot::FresnelScale, nonNegative("specular_weight"));
+    // The dielectric's tint stays in [0, 1] (OpenPBR "Specular": range [0, 1]^3): it scales the
+    // Fresnel factor, which reaches 1 at grazing incidence, so a tint above 1 would reflect more
+    // light than arrives there.
     i.slots.set(Slot::ReflectionTint, clamped("specular_color", 0.0f, 1.0f));
     // At transmission_depth 0 the transmission_color tints the refraction instead of a medium.
     Param depth = nonNegative("transmission_depth");
@@ -123,7 +126,11 @@ struct OpenPbr {
     Param f0 = clamped("base_color", 0.0f, 1.0f);
     f0.value = b.mul(f0.value, clamped("base_weight", 0.0f, 1.0f).value);
     i.slots.set(Slot::F0, f0);
-    i.slots.set(Slot::F82, clamped("specular_color", 0.0f, 1.0f));
+    // The edge tint is not clamped to its UI range [0, 1]: OpenPBR's own metal presets (brass,
+    // potassium, rubidium, sodium) tint above 1, and the spec's bound is physical, on the
+    // reflectance: F82-tint keeps F(mu) in [0, 1] at every angle (mxc_fresnel_f82 clamps it), so
+    // only a negative tint, which has no meaning, is refused.
+    i.slots.set(Slot::F82, nonNegative("specular_color"));
     i.slots.set(Slot::F90, {b.vec(Type::Vec3, 1.0f), at("specular_color")});
     i.slots.set(Slot::Exponent, {b.f(5.0f), at("specular_color")});
     i.slots.set(Slot::FresnelScale, nonNegative("specular_weight"));

@@ -179,6 +179,9 @@ struct StandardSurface {
     metal.scatter = ir::ScatterMode::R;
     metal.origin = c.nodeOrigin(n);
     ExprId reflectivity = b.mul(clamped("base_color", 0.0f, 1.0f).value, clamped("base", 0.0f, 1.0f).value);
+    // Clamped: Gulbrandsen's edge tint g moves n from (1 + sqrt r) / (1 - sqrt r) at g = 0 to
+    // (1 - r) / (1 + r) at g = 1 (Microfacet.cpp, gulbrandsenIor); past 1 it would extrapolate n
+    // below that, towards a negative IOR.
     ExprId edge = b.mul(clamped("specular_color", 0.0f, 1.0f).value, clamped("specular", 0.0f, 1.0f).value);
     auto [ior, extinction] = gulbrandsenIor(b, reflectivity, edge);
     metal.slots.set(Slot::ComplexIor, {ior, at("base_color")});

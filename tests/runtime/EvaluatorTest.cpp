@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -246,6 +247,34 @@ TEST(Furnace, WhiteConductorIsLosslessOnBalanced) {
   std::vector<rt::Albedo> fast = furnace(m, {viewAt(0)}, 65536, {}, Accuracy::Fast);
   ASSERT_EQ(fast.size(), 1u);
   expectNear(fast[0].total().y, 0.30685f, fast[0].reflectedError.y, 2e-3f, "fast tier, roughness 1");
+}
+
+// OpenPBR "Metal": specular_color is the F82 edge tint, and OpenPBR's own metal presets set it
+// above 1 (rubidium: 1.028, 1.041, 1.096). It is used as given: near grazing the blue reflectance
+// of rubidium rises by about 0.08 over an untinted edge; and F-82 keeps the reflectance at or
+// under 1, so even a tint of 2 on a white metal gains no energy at any angle.
+TEST(Furnace, MetalEdgeTintAboveOneIsUsedWithoutEnergyGain) {
+  auto metal = [](const std::string& base, const std::string& tint) {
+    return openPbrDocument(fmt::format("    <input name=\"base_metalness\" type=\"float\" value=\"1\" />\n"
+                                       "    <input name=\"base_color\" type=\"color3\" value=\"{}\" />\n"
+                                       "    <input name=\"specular_color\" type=\"color3\" value=\"{}\" />\n"
+                                       "    <input name=\"specular_roughness\" type=\"float\" value=\"0\" />\n",
+                                       base, tint));
+  };
+  Context tinted, untinted;
+  ir::Material a = single(tinted, metal("0.892, 0.862, 0.764", "1.028, 1.041, 1.096"));
+  ir::Material b = single(untinted, metal("0.892, 0.862, 0.764", "1, 1, 1"));
+  const std::vector<rt::Albedo> ta = furnace(a, {viewAt(81.8f)}, 4096);  // cos = 1/7, F82's angle
+  const std::vector<rt::Albedo> tb = furnace(b, {viewAt(81.8f)}, 4096);
+  ASSERT_EQ(ta.size(), 1u);
+  ASSERT_EQ(tb.size(), 1u);
+  EXPECT_GT(ta[0].total().z - tb[0].total().z, 0.05f) << "the blue edge tint 1.096 is applied, not clamped to 1";
+  EXPECT_LE(ta[0].total().z, 1.0f + 1e-3f);
+  Context white;
+  ir::Material w = single(white, metal("1, 1, 1", "2, 2, 2"));
+  for (const rt::Albedo& x : furnace(w, viewsTo80(), 4096)) {
+    EXPECT_LE(std::max({x.total().x, x.total().y, x.total().z}), 1.0f + 1e-3f) << "white metal, edge tint 2";
+  }
 }
 
 // 2.1: the default OpenPBR dielectric over a white base at every roughness, 0 to 80 degrees,

@@ -26,19 +26,19 @@ layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
 
 // ---- material 'Potassium' ----
 void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
-  vec3 v3 = g.N;
-  vec3 v4 = g.T;
+  vec3 v4 = g.N;
+  vec3 v5 = g.T;
   c.emission = vec3(0.0);
   c.transparency = vec3(0.0);
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_SCHLICK;
   lobe0.mode = 1;
-  lobe0.N = v3;
-  lobe0.T = v4;
+  lobe0.N = v4;
+  lobe0.T = v5;
   lobe0.alpha = vec2(4e-04);
   lobe0.eta = 1.5;
   lobe0.c0 = vec3(0.971, 0.957, 0.914);
-  lobe0.c1 = vec3(1.0);
+  lobe0.c1 = vec3(1.006, 1.01, 1.029);
   lobe0.c2 = vec3(1.0);
   lobe0.p0 = 5.0;
   lobe0.p1 = 1.0;
