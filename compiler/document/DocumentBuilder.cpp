@@ -115,6 +115,10 @@ class Builder {
   Token buildToken(const xml::Element& e);
   /// Reads the <input>/<output>/<token> children of a node, nodedef or graph; other children
   /// go to `other` when given, else are errors.
+  /// Adds `child` to the owner's inputs, outputs or tokens when it is one of those (false
+  /// otherwise): for nodes, nodedefs, node graphs and the document itself.
+  template <typename Owner>
+  bool addPort(const xml::Element& child, const Scope& scope, Owner& owner, NameSet& names);
   template <typename Owner>
   void buildPorts(const xml::Element& e, const Scope& scope, Owner& owner, NameSet& names,
                   std::vector<xml::Element>* other);
@@ -256,20 +260,29 @@ void Builder::unexpectedChild(const xml::Element& child, std::string_view parent
 }
 
 template <typename Owner>
+bool Builder::addPort(const xml::Element& child, const Scope& scope, Owner& owner, NameSet& names) {
+  const std::string_view kind = child.name();
+  if (kind == "input") {
+    owner.inputs.push_back(buildPort<Input>(child, scope));
+    names.add(owner.inputs.back().name, at(child));
+  } else if (kind == "output") {
+    owner.outputs.push_back(buildPort<Output>(child, scope));
+    names.add(owner.outputs.back().name, at(child));
+  } else if (kind == "token") {
+    owner.tokens.push_back(buildToken(child));
+    names.add(owner.tokens.back().name, at(child));
+  } else {
+    return false;
+  }
+  return true;
+}
+
+template <typename Owner>
 void Builder::buildPorts(const xml::Element& e, const Scope& scope, Owner& owner, NameSet& names,
                          std::vector<xml::Element>* other) {
   for (const xml::Element& child : e.children()) {
-    std::string_view kind = child.name();
-    if (kind == "input") {
-      owner.inputs.push_back(buildPort<Input>(child, scope));
-      names.add(owner.inputs.back().name, at(child));
-    } else if (kind == "output") {
-      owner.outputs.push_back(buildPort<Output>(child, scope));
-      names.add(owner.outputs.back().name, at(child));
-    } else if (kind == "token") {
-      owner.tokens.push_back(buildToken(child));
-      names.add(owner.tokens.back().name, at(child));
-    } else if (other) {
+    if (addPort(child, scope, owner, names)) continue;
+    if (other) {
       other->push_back(child);
     } else {
       unexpectedChild(child, e.name());
@@ -432,15 +445,8 @@ void Builder::build() {
       doc_.includes.push_back({*href, valueAt(e, "href"), nullptr});
     } else if (isKeptElement(kind)) {
       doc_.otherElements.push_back(e);
-    } else if (kind == "input") {
-      doc_.inputs.push_back(buildPort<Input>(e, scope));
-      names.add(doc_.inputs.back().name, at(e));
-    } else if (kind == "output") {
-      doc_.outputs.push_back(buildPort<Output>(e, scope));
-      names.add(doc_.outputs.back().name, at(e));
-    } else if (kind == "token") {
-      doc_.tokens.push_back(buildToken(e));
-      names.add(doc_.tokens.back().name, at(e));
+    } else if (addPort(e, scope, doc_, names)) {
+      // the document's own input, output or token (the document is a node graph too)
     } else if (kind == "parameter") {
       diagnostics_.error(at(e), "<parameter> is MaterialX 1.37 syntax, and belongs inside a node or nodedef");
     } else {

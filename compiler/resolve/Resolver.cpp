@@ -550,27 +550,19 @@ ResolvedDocument resolveDocument(const doc::Document& document, const lib::NodeL
                                               name, it->second.str()));
     }
   };
+  // Each document-level element claims its name and joins its list.
+  auto gather = [&](const auto& elements, auto& into) {
+    for (const auto& e : elements) {
+      claim(e.name, e.location);
+      into.push_back(&e);
+    }
+  };
   for (const doc::Document* d : result.documents) {
-    for (const doc::Node& n : d->nodes) {
-      claim(n.name, n.location);
-      topLevel.nodes.push_back(&n);
-    }
-    for (const doc::Input& i : d->inputs) {
-      claim(i.name, i.location);
-      topLevel.inputs.push_back(&i);
-    }
-    for (const doc::Output& o : d->outputs) {
-      claim(o.name, o.location);
-      topLevel.outputs.push_back(&o);
-    }
-    for (const doc::Token& t : d->tokens) {
-      claim(t.name, t.location);
-      topLevel.tokens.push_back(&t);
-    }
-    for (const doc::NodeGraph& g : d->nodegraphs) {
-      claim(g.name, g.location);
-      graphs.push_back(&g);
-    }
+    gather(d->nodes, topLevel.nodes);
+    gather(d->inputs, topLevel.inputs);
+    gather(d->outputs, topLevel.outputs);
+    gather(d->tokens, topLevel.tokens);
+    gather(d->nodegraphs, graphs);
   }
   Resolver(*result.definitions, diagnostics).resolve(result.top, topLevel, result.graphs, graphs);
 
