@@ -110,14 +110,14 @@ void runOnEveryCore(size_t count, const std::function<void(size_t)>& job) {
   batch.count = count;
   batch.job = &job;
   batch.failures.resize(count);
-  if (count > 1 && !pool().tryRun(batch)) {
+  if (count <= 1) {
+    batch.work();
+  } else if (!pool().tryRun(batch)) {
     // The pool is busy (a nested call, or another thread's): threads of this call's own.
     std::vector<std::thread> helpers;
     for (size_t t = 1; t < std::min(count, coreCount()); ++t) helpers.emplace_back([&] { batch.work(); });
     batch.work();
     for (std::thread& helper : helpers) helper.join();
-  } else if (count <= 1) {
-    batch.work();
   }
   for (const std::exception_ptr& failure : batch.failures) {
     if (failure) std::rethrow_exception(failure);

@@ -1,5 +1,6 @@
 #include "compiler/document/DocumentLoader.h"
 
+#include <optional>
 #include <variant>
 
 #include <fmt/format.h>
@@ -41,19 +42,23 @@ const SourceFile* DocumentLoader::read(const fs::path& path, SourceLocation incl
 }
 
 std::unique_ptr<Document> DocumentLoader::parse(const SourceFile& source) {
-  std::unique_ptr<Document> doc;
   std::vector<Diagnostic> warnings;
   xml::ParseOptions options = options_;
   options.warnings = &warnings;  // MaterialX's leniencies, reported (xml::ParseOptions::warnings)
+  std::optional<xml::Document> xml;
+  std::optional<Diagnostic> error;
   try {
-    xml::Document xml = xml::parse(source, options);
-    for (Diagnostic& w : warnings) diagnostics_.add(std::move(w));
-    doc = buildDocument(std::move(xml), diagnostics_);
+    xml.emplace(xml::parse(source, options));
   } catch (const CompileError& e) {
-    for (Diagnostic& w : warnings) diagnostics_.add(std::move(w));
-    diagnostics_.add(e.diagnostic());
+    error = e.diagnostic();
+  }
+  // The warnings come first: they are at positions before the error that stopped the parse.
+  for (Diagnostic& w : warnings) diagnostics_.add(std::move(w));
+  if (error) {
+    diagnostics_.add(std::move(*error));
     return nullptr;
   }
+  std::unique_ptr<Document> doc = buildDocument(std::move(*xml), diagnostics_);
   upgradeTo139(*doc, diagnostics_);
   return doc;
 }

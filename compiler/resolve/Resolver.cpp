@@ -78,10 +78,10 @@ class Resolver {
   void resolveInterface(Scope& scope);
   void resolveOutputs(Scope& scope);
   /// Resolves what a port is set to (connection, interface, value), checked against `type`.
-  /// `tokens`: where a filename value's [token]s are looked up, innermost first (the node's own,
-  /// its graph's, the document's); null: the scope's, then the document's.
+  /// A filename value's [token]s are those tokensSeen(tokenScope, ownTokens) gives: the node's
+  /// own, then those of `tokenScope` (null: `scope`), then the document's.
   void resolvePort(const Scope& scope, const doc::Port& port, ResolvedInput& result,
-                   const std::vector<const doc::Token*>* tokens = nullptr);
+                   const std::vector<doc::Token>* ownTokens = nullptr, const Scope* tokenScope = nullptr);
   /// The tokens a port of `scope` sees, innermost first: `own` (a node's), the scope's, and the
   /// document's (MaterialX 1.39 "Filename Substitutions": the nearest enclosing token wins).
   std::vector<const doc::Token*> tokensSeen(const Scope& scope, const std::vector<doc::Token>* own) const;
@@ -144,7 +144,7 @@ std::vector<const doc::Token*> Resolver::tokensSeen(const Scope& scope, const st
 }
 
 void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedInput& result,
-                           const std::vector<const doc::Token*>* tokens) {
+                           const std::vector<doc::Token>* ownTokens, const Scope* tokenScope) {
   result.instance = &port;
   result.location = port.location;
   result.channels = port.channels;
@@ -269,7 +269,7 @@ void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedIn
     if (port.value->type() == doc::ValueType::Filename && !port.value->as<std::string>().empty()) {
       std::string path = std::string(port.fileprefix) + port.value->as<std::string>();
       // Each [name] is replaced by the innermost token of that name.
-      const std::vector<const doc::Token*> seen = tokens ? *tokens : tokensSeen(scope, nullptr);
+      const std::vector<const doc::Token*> seen = tokensSeen(tokenScope ? *tokenScope : scope, ownTokens);
       size_t open = path.find('[');
       while (open != std::string::npos) {
         const size_t close = path.find(']', open);
@@ -314,8 +314,7 @@ void Resolver::resolveNode(Scope& scope, ResolvedNode& node) {
   for (const doc::Input* declaration : node.signature->inputs) {
     ResolvedInput input = declaredInput(*declaration);
     if (const doc::Input* instance = node.node->findInput(declaration->name)) {
-      const std::vector<const doc::Token*> tokens = tokensSeen(scope, &node.node->tokens);
-      resolvePort(scope, *instance, input, &tokens);
+      resolvePort(scope, *instance, input, &node.node->tokens);
     }
     if (input.source == InputSource::Unset) applyDefault(input, *declaration);
     checkEnum(input);
@@ -344,8 +343,7 @@ void Resolver::resolveInterface(Scope& scope) {
     }
     // A document-level graph's interface inputs (and the document's own) take values, or
     // connections to document-level nodes.
-    const std::vector<const doc::Token*> tokens = tokensSeen(scope, nullptr);  // the graph's own tokens
-    resolvePort(top_, *declared, input, &tokens);
+    resolvePort(top_, *declared, input, nullptr, &scope);  // with the graph's own tokens
     if (input.source == InputSource::Unset && !declared->defaultgeomprop.empty()) {
       input.source = InputSource::GeomProp;
       input.geomprop = declared->defaultgeomprop;
