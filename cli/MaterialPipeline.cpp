@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "cli/ExitCode.h"
-#include "cli/MeshArgument.h"
+#include "cli/SearchPaths.h"
 
 namespace mxc::cli {
 

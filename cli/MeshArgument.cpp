@@ -1,29 +1,10 @@
 #include "cli/MeshArgument.h"
 
-#include <cstdlib>
-
 #include <fmt/format.h>
 
 #include "runtime/MeshFile.h"
 
 namespace mxc::cli {
-
-std::vector<std::filesystem::path> searchPaths(const std::vector<std::string>& fromOptions) {
-  std::vector<std::filesystem::path> paths(fromOptions.begin(), fromOptions.end());
-  if (const char* variable = std::getenv("MATERIALX_SEARCH_PATH")) {
-    std::string part;
-    for (const char* c = variable;; ++c) {
-      if (*c == ':' || *c == ';' || *c == '\0') {
-        if (!part.empty()) paths.emplace_back(part);
-        part.clear();
-        if (*c == '\0') break;
-      } else {
-        part += *c;
-      }
-    }
-  }
-  return paths;
-}
 
 std::variant<MeshChoice, std::string> chooseMesh(const std::string& argument,
                                                  const std::vector<std::filesystem::path>& searchPaths) {

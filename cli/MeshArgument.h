@@ -13,10 +13,6 @@
 
 namespace mxc::cli {
 
-/// The folders searched for resources: `--search-path` folders in order, then those of the
-/// MATERIALX_SEARCH_PATH environment variable (separated by ':' or ';').
-std::vector<std::filesystem::path> searchPaths(const std::vector<std::string>& fromOptions);
-
 struct MeshChoice {
   rt::Mesh mesh;
   std::filesystem::path file;  ///< the file read; empty for a mesh made here

@@ -17,6 +17,7 @@
 #include "cli/OutputSet.h"
 #include "cli/RenderOutput.h"
 #include "cli/Scene.h"
+#include "cli/SearchPaths.h"
 #include "compiler/glsl/Contract.h"
 #include "runtime/EnvironmentMap.h"
 #include "runtime/ImageIO.h"

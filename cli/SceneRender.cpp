@@ -19,6 +19,7 @@
 #include "cli/RenderOutput.h"
 #include "cli/Scene.h"
 #include "cli/SceneDocuments.h"
+#include "cli/SearchPaths.h"
 #include "compiler/document/Document.h"
 #include "runtime/EnvironmentMap.h"
 #include "runtime/Renderer.h"
