@@ -1,5 +1,7 @@
 #include "compiler/document/Document.h"
 
+#include <charconv>
+
 namespace mxc::doc {
 
 namespace {
@@ -38,7 +40,31 @@ Node* NodeGraph::findNode(std::string_view n) { return const_cast<Node*>(findByN
 const Input* NodeGraph::findInput(std::string_view n) const { return findByName(inputs, n); }
 const Output* NodeGraph::findOutput(std::string_view n) const { return findByName(outputs, n); }
 
+std::optional<Version> parseVersion(std::string_view text) {
+  Version v;
+  const char* p = text.data();
+  const char* end = p + text.size();
+  auto number = [&](int& out) {
+    const auto [next, error] = std::from_chars(p, end, out);
+    if (error != std::errc() || out < 0) return false;
+    p = next;
+    return true;
+  };
+  if (!number(v.major) || p == end || *p != '.') return std::nullopt;
+  ++p;
+  if (!number(v.minor)) return std::nullopt;
+  int patch = 0;
+  if (p != end && *p == '.') {
+    ++p;
+    if (!number(patch)) return std::nullopt;
+  }
+  if (p != end) return std::nullopt;
+  return v;
+}
+
 Document::Document(xml::Document xml) : xml_(std::move(xml)) {}
+
+Version Document::versionNumber() const { return parseVersion(version).value_or(Version{1, 39}); }
 
 const Node* Document::findNode(std::string_view n) const { return findByName(nodes, n); }
 const NodeGraph* Document::findNodeGraph(std::string_view n) const { return findByName(nodegraphs, n); }

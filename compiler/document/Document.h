@@ -4,6 +4,7 @@
 
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,6 +14,16 @@
 #include "compiler/xml/XmlDocument.h"
 
 namespace mxc::doc {
+
+/// A MaterialX version, "major.minor", as numbers for comparison.
+struct Version {
+  int major = 0;
+  int minor = 0;
+  auto operator<=>(const Version&) const = default;
+};
+/// The version a `version` attribute names; nullopt when it is not "major.minor" (a patch
+/// number, "1.38.7", is read and ignored).
+std::optional<Version> parseVersion(std::string_view text);
 
 /// One .mtlx file (MaterialX 1.38 or 1.39) as a model. Elements of included files stay in
 /// their own Document; `includes` links them.
@@ -27,6 +38,8 @@ class Document {
   const xml::Document& xml() const { return xml_; }
 
   std::string_view version;     ///< as written ("1.39"); "" when absent
+  /// The version the document is read as: `version`, or 1.39 when absent or malformed.
+  Version versionNumber() const;
   std::string_view colorspace;  ///< document colour space
   std::string_view fileprefix;
   SourceLocation location;  ///< the <materialx> element
@@ -46,6 +59,8 @@ class Document {
   std::vector<UnitDef> unitdefs;
   std::vector<Look> looks;
   std::vector<Include> includes;
+  /// MaterialX 1.37-and-older <material> elements, until upgradeTo138 turns them into nodes.
+  std::vector<LegacyMaterial> legacyMaterials;
   /// Elements the model keeps but does not act on (geominfo, collection, propertyset, ...).
   std::vector<xml::Element> otherElements;
   /// Upgrades applied to bring an older document to 1.39, for reports.

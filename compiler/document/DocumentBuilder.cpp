@@ -125,6 +125,16 @@ class Builder {
   Node buildNode(const xml::Element& e, const Scope& scope);
   NodeDef buildNodeDef(const xml::Element& e, const Scope& scope);
   NodeGraph buildNodeGraph(const xml::Element& e, const Scope& scope);
+  LegacyMaterial buildLegacyMaterial(const xml::Element& e, const Scope& scope);
+  /// A type name as 1.38 writes it: MaterialX 1.22's `vector` is vector3, 1.34's `matrix` is
+  /// matrix44, and 1.37's `color2` is vector2 (MaterialX's upgrade rules); other names are kept.
+  std::string_view currentType(std::string_view type) const {
+    if (!legacy_) return type;
+    if (type == "vector") return "vector3";
+    if (type == "matrix") return "matrix44";
+    if (type == "color2") return "vector2";
+    return type;
+  }
   /// `name` in the scope's namespace ("ns:name"; MaterialX 1.39 "Namespaces"): the name a
   /// definition is known by, and the name a reference from inside the namespace means. A name
   /// already qualified, or outside any namespace, is kept.
@@ -136,6 +146,9 @@ class Builder {
 
   Document& doc_;
   Diagnostics& diagnostics_;
+  /// A MaterialX 1.37-or-older document: its legacy elements (<parameter>, <material>,
+  /// <shaderref>, <shader>, <opgraph>) are read for upgradeTo138 instead of being refused.
+  bool legacy_ = false;
 };
 
 std::string_view Builder::requireName(const xml::Element& e) {
@@ -181,7 +194,7 @@ PortT Builder::buildPort(const xml::Element& e, const Scope& outer) {
   port.element = e;
   port.location = at(e);
   port.name = requireName(e);
-  port.type = requireAttribute(e, "type", "every input and output declares its type");
+  port.type = currentType(requireAttribute(e, "type", "every input and output declares its type"));
   port.nodename = e.attributeOr("nodename", "");
   port.nodegraph = e.attributeOr("nodegraph", "");
   port.output = e.attributeOr("output", "");
@@ -262,8 +275,13 @@ void Builder::unexpectedChild(const xml::Element& child, std::string_view parent
 template <typename Owner>
 bool Builder::addPort(const xml::Element& child, const Scope& scope, Owner& owner, NameSet& names) {
   const std::string_view kind = child.name();
-  if (kind == "input") {
+  if (kind == "input" || (legacy_ && kind == "parameter")) {
+    // A 1.37 <parameter> is an input; on a nodedef it was a uniform one (MaterialX's 1.38
+    // upgrade marks it so).
     owner.inputs.push_back(buildPort<Input>(child, scope));
+    if constexpr (std::is_same_v<Owner, NodeDef>) {
+      if (kind == "parameter") owner.inputs.back().uniform = true;
+    }
     names.add(owner.inputs.back().name, at(child));
   } else if (kind == "output") {
     owner.outputs.push_back(buildPort<Output>(child, scope));
@@ -297,7 +315,7 @@ Node Builder::buildNode(const xml::Element& e, const Scope& outer) {
   node.location = at(e);
   node.category = e.name();
   node.name = requireName(e);
-  node.type = requireAttribute(e, "type", "a node declares its output type");
+  node.type = currentType(requireAttribute(e, "type", "a node declares its output type"));
   node.nodedef = e.attributeOr("nodedef", "");
   node.version = e.attributeOr("version", "");
   NameSet names(diagnostics_, "this node");
@@ -321,6 +339,21 @@ NodeDef Builder::buildNodeDef(const xml::Element& e, const Scope& outer) {
   def.target = e.attributeOr("target", "");
   NameSet names(diagnostics_, "this nodedef");
   buildPorts(e, scope, def, names, nullptr);
+  if (legacy_) {
+    // MaterialX 1.25's <shader shadertype= shaderprogram=> is a surface shader nodedef of the
+    // category `shaderprogram`; up to 1.36 a nodedef gave its output type as a `type`
+    // attribute, for an output named "out".
+    def.legacyShader = e.findAttribute("shadertype") != nullptr;
+    if (e.name() == "shader") def.node = qualified(scope, e.attributeOr("shaderprogram", ""));
+    std::string_view type = def.legacyShader ? "surfaceshader" : currentType(e.attributeOr("type", ""));
+    if (!type.empty() && type != "multioutput" && def.outputs.empty()) {
+      Output out;
+      out.name = "out";
+      out.type = type;
+      out.location = def.location;
+      def.outputs.push_back(out);
+    }
+  }
   return def;
 }
 
@@ -350,6 +383,52 @@ NodeGraph Builder::buildNodeGraph(const xml::Element& e, const Scope& outer) {
   return graph;
 }
 
+LegacyMaterial Builder::buildLegacyMaterial(const xml::Element& e, const Scope& outer) {
+  const Scope scope = outer.enter(e);
+  LegacyMaterial material;
+  material.name = requireName(e);
+  material.location = at(e);
+  NameSet names(diagnostics_, fmt::format("material '{}'", material.name));
+  for (const xml::Element& child : e.children()) {
+    const std::string_view kind = child.name();
+    if (kind == "shaderref") {
+      const Scope inner = scope.enter(child);
+      ShaderRef ref;
+      ref.name = requireName(child);
+      ref.location = at(child);
+      ref.node = qualified(inner, child.attributeOr("node", ""));
+      ref.nodedef = qualified(inner, child.attributeOr("nodedef", ""));
+      ref.type = child.attributeOr("type", child.findAttribute("shadertype") ? "surfaceshader" : "");
+      ref.version = child.attributeOr("version", "");
+      ref.target = child.attributeOr("target", "");
+      names.add(ref.name, ref.location);
+      NameSet bound(diagnostics_, fmt::format("shaderref '{}'", ref.name));
+      for (const xml::Element& binding : child.children()) {
+        const std::string_view bindingKind = binding.name();
+        if (bindingKind == "bindinput" || bindingKind == "bindparam") {
+          ref.bindings.push_back(buildPort<Input>(binding, inner));
+          bound.add(ref.bindings.back().name, at(binding));
+        } else if (bindingKind == "bindtoken") {
+          ref.tokens.push_back(buildToken(binding));
+          bound.add(ref.tokens.back().name, at(binding));
+        } else {
+          unexpectedChild(binding, "shaderref");
+        }
+      }
+      material.shaderrefs.push_back(std::move(ref));
+    } else if (kind == "override") {
+      material.overrides.push_back(buildPort<Input>(child, scope));
+    } else if (kind == "materialinherit") {
+      diagnostics_.warning(at(child), fmt::format("material inheritance (<materialinherit>) is not upgraded: "
+                                                  "material '{}' keeps only its own shader references",
+                                                  material.name));
+    } else {
+      unexpectedChild(child, "material");
+    }
+  }
+  return material;
+}
+
 void Builder::build() {
   xml::Element root = doc_.xml().root();
   doc_.location = at(root);
@@ -361,13 +440,15 @@ void Builder::build() {
   doc_.version = root.attributeOr("version", "");
   doc_.colorspace = root.attributeOr("colorspace", "");
   doc_.fileprefix = root.attributeOr("fileprefix", "");
+  const std::optional<Version> version = parseVersion(doc_.version);
   if (doc_.version.empty()) {
     diagnostics_.warning(at(root), "<materialx> has no version; reading it as MaterialX 1.39");
-  } else if (doc_.version != "1.38" && doc_.version != "1.39") {
+  } else if (!version || *version > Version{1, 39} || *version < Version{1, 22}) {
     diagnostics_.warning(valueAt(root, "version"),
-                         fmt::format("MaterialX version {} is not one mxc knows (1.38, 1.39); reading it as 1.39",
+                         fmt::format("MaterialX version {} is not one mxc knows (1.22 to 1.39); reading it as 1.39",
                                      doc_.version));
   }
+  legacy_ = version && *version >= Version{1, 22} && *version < Version{1, 38};
   Scope scope = Scope().enter(root);
   NameSet names(diagnostics_, "the document");
   const std::vector<xml::Element> children = root.children();
@@ -375,10 +456,13 @@ void Builder::build() {
   doc_.nodes.reserve(children.size());
   for (const xml::Element& e : children) {
     std::string_view kind = e.name();
-    if (kind == "nodedef") {
+    if (kind == "nodedef" || (legacy_ && kind == "shader")) {
       doc_.nodedefs.push_back(buildNodeDef(e, scope));
       names.add(doc_.nodedefs.back().name, at(e));
-    } else if (kind == "nodegraph") {
+    } else if (legacy_ && kind == "material") {
+      doc_.legacyMaterials.push_back(buildLegacyMaterial(e, scope));
+      names.add(doc_.legacyMaterials.back().name, at(e));
+    } else if (kind == "nodegraph" || (legacy_ && kind == "opgraph")) {
       doc_.nodegraphs.push_back(buildNodeGraph(e, scope));
       names.add(doc_.nodegraphs.back().name, at(e));
     } else if (kind == "implementation") {

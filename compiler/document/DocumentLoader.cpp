@@ -59,6 +59,7 @@ std::unique_ptr<Document> DocumentLoader::parse(const SourceFile& source) {
     return nullptr;
   }
   std::unique_ptr<Document> doc = buildDocument(std::move(*xml), diagnostics_);
+  upgradeTo138(*doc, diagnostics_);
   upgradeTo139(*doc, diagnostics_);
   return doc;
 }

@@ -100,9 +100,35 @@ struct NodeDef {
   std::vector<Output> outputs;
   std::vector<Token> tokens;
   const Document* document = nullptr;
+  /// A MaterialX 1.36-and-older shader definition (`<shader>`, or a nodedef with `shadertype`):
+  /// read to upgrade the materials that bind it, then removed, as MaterialX's upgrade does.
+  bool legacyShader = false;
 
   const Input* findInput(std::string_view name) const;
   const Output* findOutput(std::string_view name) const;
+};
+
+/// A <shaderref> of a MaterialX 1.37-and-older <material>: the shader node the material binds,
+/// with its inputs (<bindinput>, <bindparam>) and tokens (<bindtoken>).
+struct ShaderRef {
+  std::string_view name;
+  std::string_view node;     ///< the shader's node category, when given
+  std::string_view nodedef;  ///< the shader's nodedef, when given
+  std::string_view type;     ///< surfaceshader, displacementshader, ...; empty when not given
+  std::string_view version;
+  std::string_view target;
+  SourceLocation location;
+  std::vector<Input> bindings;
+  std::vector<Token> tokens;
+};
+
+/// A MaterialX 1.37-and-older <material> element. upgradeTo138 turns each into shader nodes and
+/// a surfacematerial node, and empties Document::legacyMaterials.
+struct LegacyMaterial {
+  std::string_view name;
+  SourceLocation location;
+  std::vector<ShaderRef> shaderrefs;
+  std::vector<Input> overrides;  ///< 1.35-and-older <override>s of the shader's public names
 };
 
 /// A <nodegraph>: nodes with an interface. With `nodedef` set, it implements that nodedef and

@@ -5,37 +5,11 @@
 
 #include <fmt/format.h>
 
+#include "compiler/document/UpgradeScope.h"
+
 namespace mxc::doc {
 
 namespace {
-
-/// The nodes of one scope (the document level or one graph) with name lookup.
-struct ScopeNodes {
-  std::vector<Node>* nodes;
-  std::vector<Output>* outputs;  // graph outputs; null at document level
-
-  Node* find(std::string_view name) {
-    for (Node& n : *nodes) {
-      if (n.name == name) return &n;
-    }
-    return nullptr;
-  }
-  std::string uniqueName(const std::string& base) {
-    std::string name = base;
-    for (int i = 2; find(name); ++i) name = base + std::to_string(i);
-    return name;
-  }
-  /// Every port in the scope that can name a node: node inputs and graph outputs.
-  template <typename F>
-  void forEachPort(F f) {
-    for (Node& n : *nodes) {
-      for (Input& in : n.inputs) f(in);
-    }
-    if (outputs) {
-      for (Output& out : *outputs) f(out);
-    }
-  }
-};
 
 // MaterialX 1.39 renamed the inputs of atan2 from in1/in2 to iny/inx (same order: y, then x).
 int renameAtan2Inputs(ScopeNodes scope) {
@@ -168,12 +142,10 @@ int foldThinFilmLayers(Document& doc, ScopeNodes scope, Diagnostics& diagnostics
 }  // namespace
 
 void upgradeTo139(Document& doc, Diagnostics& diagnostics) {
-  if (doc.version != "1.38") return;
-  std::vector<ScopeNodes> scopes{{&doc.nodes, nullptr}};
-  for (NodeGraph& g : doc.nodegraphs) scopes.push_back({&g.nodes, &g.outputs});
+  if (doc.versionNumber() >= Version{1, 39}) return;
   int atan2 = 0;
   int radius = 0;
-  for (ScopeNodes scope : scopes) {
+  for (ScopeNodes scope : scopesOf(doc)) {
     atan2 += renameAtan2Inputs(scope);
     radius += convertSubsurfaceRadius(doc, scope);
     foldThinFilmLayers(doc, scope, diagnostics);

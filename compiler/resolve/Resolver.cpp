@@ -148,9 +148,11 @@ void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedIn
   result.instance = &port;
   result.location = port.location;
   result.channels = port.channels;
-  if (!port.channels.empty() && port.element.valid() && port.element.document().root().attributeOr("version", "") != "1.38") {
+  if (!port.channels.empty() && port.element.valid() &&
+      doc::parseVersion(port.element.document().root().attributeOr("version", "")).value_or(doc::Version{1, 39}) >=
+          doc::Version{1, 39}) {
     diagnostics_.error(port.attributeLocation("channels"),
-                       "the 'channels' attribute is MaterialX 1.38 syntax, removed in 1.39: use <extract>, "
+                       "the 'channels' attribute is MaterialX 1.38-and-older syntax, removed in 1.39: use <extract>, "
                        "<combine2/3/4> or <convert> nodes");
   }
   // At document level nodes and node graphs share one namespace, and MaterialX finds a graph

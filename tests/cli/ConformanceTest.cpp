@@ -43,10 +43,6 @@ constexpr KnownFailure kKnownFailures[] = {
     {"resources/Materials/TestSuite/stdlib/convolution/heighttonormal.mtlx", "ir", "heighttonormal has no lowering yet"},
     {"resources/Materials/TestSuite/stdlib/structs/struct_texcoord.mtlx", "inspect",
      "struct literals (\"{0.1;0.1}\") are not read yet"},
-    {"resources/Materials/TestSuite/stdlib/upgrade/syntax_1_25.mtlx", "inspect",
-     "MaterialX 1.25 documents (<shader>, <opgraph>, <parameter>) are not upgraded yet"},
-    {"resources/Materials/TestSuite/stdlib/upgrade/syntax_1_37.mtlx", "inspect",
-     "MaterialX 1.37 <material> with <shaderref> is not upgraded yet"},
 };
 
 const KnownFailure* knownFailure(const std::string& document) {

@@ -96,7 +96,7 @@ const Malformed kCases[] = {
     {"ChannelsIn139",
      mtlx("  <constant name=\"c\" type=\"color3\"/>\n  <add name=\"a\" type=\"float\">\n"
           "    <input name=\"in1\" type=\"float\" nodename=\"c\" channels=\"r\"/>\n  </add>\n"),
-     5, 59, "the 'channels' attribute is MaterialX 1.38 syntax, removed in 1.39"},
+     5, 59, "the 'channels' attribute is MaterialX 1.38-and-older syntax, removed in 1.39"},
     {"ChannelsNotAChannel",
      "<materialx version=\"1.38\">\n  <constant name=\"c\" type=\"color3\"/>\n  <add name=\"a\" type=\"float\">\n"
      "    <input name=\"in1\" type=\"float\" nodename=\"c\" channels=\"q\"/>\n  </add>\n</materialx>\n",
