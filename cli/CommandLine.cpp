@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "cli/AccuracyBench.h"
 #include "cli/SpecializationBench.h"
@@ -20,6 +21,7 @@
 #include "cli/ExitCode.h"
 #include "cli/InspectCommand.h"
 #include "cli/RenderCommand.h"
+#include "compiler/common/ColorSpace.h"
 
 namespace mxc::cli {
 
@@ -160,6 +162,21 @@ void registerCompile(CLI::App& app, int& exitCode) {
       ->check(CLI::IsMember({"frag", "comp", "furnace", "sample"}));
   command->add_flag("-O,--optimize", options->optimize, "Optimise the module with SPIRV-Tools' performance passes");
   command->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");
+  const std::string linear = fmt::format("{}", fmt::join(linearColorSpaceNames(), ", "));
+  command
+      ->add_option("--working-space", options->materials.workingSpace,
+                   fmt::format("The linear colour space the shader computes in: colour values and colour textures "
+                               "tagged with a `colorspace` are converted into it (default: lin_rec709, MaterialX's "
+                               "default target; one of {}). mxc's own renderer works in lin_rec709",
+                               linear))
+      ->type_name("SPACE")
+      ->check(CLI::Validator(
+          [linear](std::string& text) -> std::string {
+            const ColorSpace* space = findColorSpace(text);
+            if (space && space->encoding == Encoding::Linear) return {};
+            return fmt::format("'{}' is not a linear colour space mxc knows ({})", text, linear);
+          },
+          ""));
   addMaterialOptions(*command, options->materials);
   command->callback([options, &exitCode] { exitCode = runCompile(*options); });
 }

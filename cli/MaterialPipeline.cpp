@@ -21,6 +21,7 @@ bool requestInputs(const MaterialOptions& options, CompileRequest& request) {
   }
   request.lowering.parameters = options.parameters;
   request.lowering.imageSearchPaths = searchPaths(options.searchPaths);
+  request.lowering.workingSpace = options.workingSpace;
   request.material = options.material;
   request.accuracy = options.accuracy;
   request.specialize = !options.noSpecialize;

@@ -23,6 +23,7 @@ struct MaterialOptions {
   int referenceSamples = 0;                ///< --reference-samples N (0: the command's default)
   bool noSpecialize = false;               ///< --no-specialize: the general shader (CompileRequest::specialize)
   std::vector<std::string> searchPaths;    ///< --search-path DIR (repeatable): images, meshes
+  std::string workingSpace = "lin_rec709";  ///< --working-space NAME (compile): LoweringOptions::workingSpace
   LibraryOptions libraries;
 };
 

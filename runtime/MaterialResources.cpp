@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "compiler/common/ColorSpace.h"
 #include "compiler/common/InputFile.h"
 #include "runtime/ImageIO.h"
 
@@ -28,8 +29,10 @@ MaterialResources::MaterialResources(VulkanContext& context, const glsl::Materia
       // A FIFO would block and /dev/zero would never end: refused before anything opens them.
       diagnostics.error(t.origin, fmt::format("cannot read image '{}': {}", path.string(), *problem));
     } else {
-      // MaterialX colour space "srgb_texture": sRGB-encoded values, decoded to linear on reading.
-      texture = cache.get(path, t.colorspace == "srgb_texture");
+      // An sRGB-encoded colour space (srgb_texture, srgb_displayp3): the device decodes the
+      // texels; the shader converts the primaries (compiler/lower/StdlibRules.cpp).
+      const ColorSpace* space = findColorSpace(t.colorspace);
+      texture = cache.get(path, space && space->encoding == Encoding::Srgb);
       for (const std::string& w : texture->warnings()) diagnostics.warning(t.origin, w);
       if (!texture->error().empty()) {
         diagnostics.warning(t.origin, texture->error() + ": the image node's default value is used");

@@ -3,7 +3,9 @@
 #include <filesystem>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include "compiler/common/ColorSpace.h"
 #include "compiler/common/LargeStack.h"
 #include "compiler/resolve/Resolver.h"
 
@@ -143,6 +145,13 @@ ir::ExprId Context::value(const ResolvedInput& in, Env& env) {
   if (shaderNode && &in >= shaderNode->inputs.data() && &in < shaderNode->inputs.data() + shaderNode->inputs.size()) {
     v = userInput(in, v);
   }
+  // A colour written as a value is in its element's colour space (MaterialX 1.39, "Color
+  // Spaces": inherited from the enclosing elements); a --set or --param value stands in for it,
+  // in the same space. Connected colours are converted where they were made.
+  if (v != ir::kNoExpr && (in.source == InputSource::Value || in.source == InputSource::Default)) {
+    const doc::Port* port = in.source == InputSource::Value ? in.instance : in.declaration;
+    if (port && !port->colorspace.empty()) v = toWorkingSpace(v, port->colorspace, in.location);
+  }
   return v;
 }
 
@@ -190,24 +199,61 @@ std::string Context::colorspace(const NodeRef& n, std::string_view name) {
   const ResolvedInput* in = n.node->findInput(name);
   Env* env = n.env;
   for (int depth = 0; in && depth < 64; ++depth) {  // interface chains are short; the bound stops a cycle
-    if (in->instance && !in->instance->colorspace.empty()) {
-      std::string space(in->instance->colorspace);
-      // MaterialX colour spaces this compiler converts: sRGB-encoded textures are decoded on load;
-      // the linear Rec.709 primaries are the working space. Any other space would need a
-      // primaries conversion we do not make, so say that its texels are read as they are.
-      // "none" and "raw" mark data textures, which are never converted.
-      if (space != "srgb_texture" && space != "lin_rec709" && space != "lin_srgb" && space != "none" && space != "raw") {
-        diagnostics.warning(in->location,
-                            fmt::format("colorspace '{}' is not supported: the texels are used as linear Rec.709", space));
-      }
-      return space;
-    }
+    if (in->instance && !in->instance->colorspace.empty()) return std::string(in->instance->colorspace);
     if (in->source != InputSource::Interface) break;
     Env* where = nullptr;
     in = interfaceInput(*env, in->interfaceName, where);
     env = where;
   }
   return {};
+}
+
+ir::ExprId Context::toWorkingSpace(ir::ExprId color, std::string_view space, SourceLocation where, bool decodedByDevice) {
+  const ir::Type type = b.type(color);
+  if (isDataSpace(space) || (type != ir::Type::Vec3 && type != ir::Type::Vec4)) return color;
+  const ColorSpace* from = findColorSpace(space);
+  if (!from) {
+    if (reportedSpaces_.insert(std::string(space)).second) {
+      diagnostics.warning(where, fmt::format("colorspace '{}' is not one mxc knows ({}); its colours are used as they are",
+                                             space, fmt::join(colorSpaceNames(), ", ")));
+    }
+    return color;
+  }
+  // The options were checked by the driver; a library caller's unknown name falls back to the default.
+  const ColorSpace* to = findColorSpace(options.workingSpace);
+  if (!to || to->encoding != Encoding::Linear) to = findColorSpace("lin_rec709");
+  ir::ExprId rgb = type == ir::Type::Vec4 ? b.construct(ir::Type::Vec3, {b.extract(color, 0), b.extract(color, 1), b.extract(color, 2)})
+                                          : color;
+  if (!decodedByDevice) {
+    switch (from->encoding) {
+      case Encoding::Linear:
+        break;
+      case Encoding::Srgb: {
+        // IEC 61966-2-1 (MaterialX cmlib srgb_texture_to_lin_rec709): v / 12.92 up to 0.04045,
+        // ((v + 0.055) / 1.055)^2.4 above; max(., 0) keeps the power's base non-negative on the
+        // branch not taken (both are computed).
+        ir::ExprId linear = b.div(rgb, b.f(12.92f));
+        ir::ExprId curved = b.pow(b.max(b.div(b.add(rgb, b.f(0.055f)), b.f(1.055f)), b.f(0.0f)), b.f(2.4f));
+        ir::ExprId above = b.binary(ir::Op::Step, b.vec(ir::Type::Vec3, 0.04045f), rgb);
+        rgb = b.lerp(linear, curved, above);
+        break;
+      }
+      case Encoding::Gamma:
+        // max(v, 0)^gamma: a negative base has no real power (MaterialX's cmlib clamps so too).
+        rgb = b.pow(b.max(rgb, b.f(0.0f)), b.f(from->gamma));
+        break;
+    }
+  }
+  if (from->primaries != to->primaries) {
+    const glm::mat3 m = primariesConversion(from->primaries, to->primaries);
+    std::vector<ir::ExprId> rows;
+    for (int r = 0; r < 3; ++r) {
+      rows.push_back(b.dot(material.exprs.constantVector(ir::Type::Vec3, {m[0][r], m[1][r], m[2][r]}), rgb));
+    }
+    rgb = b.construct(ir::Type::Vec3, rows);
+  }
+  if (type == ir::Type::Vec4) return b.construct(ir::Type::Vec4, {rgb, b.extract(color, 3)});
+  return rgb;
 }
 
 ir::ExprId Context::input(const NodeRef& n, std::string_view name) {

@@ -76,6 +76,13 @@ class Context {
   /// The colour space of a filename input, following interface connections to where it is set
   /// ("" when none is given).
   std::string colorspace(const NodeRef& n, std::string_view name);
+  /// `color` (a color3 or color4 in colour space `space`) in the working space
+  /// (LoweringOptions::workingSpace): decoded, unless the device decodes it already (an
+  /// sRGB-encoded texture read through an sRGB format), then taken to the working primaries;
+  /// alpha is kept. A data space ("", none, raw) is left alone; an unknown one is reported once
+  /// at `where` and used as it is. Constants fold, so a value costs nothing at run time.
+  ir::ExprId toWorkingSpace(ir::ExprId color, std::string_view space, SourceLocation where,
+                            bool decodedByDevice = false);
   /// The value feeding a resolved input (of a node, a graph interface, or a graph output).
   ir::ExprId value(const resolve::ResolvedInput& input, Env& env);
   /// The output of a value-typed node.
@@ -106,6 +113,7 @@ class Context {
   int depth_ = 0;                 ///< nodeValue calls on the stack: the path length from the shading node
   bool tooDeepReported_ = false;  ///< the stack limit is reported once per material
   std::set<std::string> reportedParameters_;  ///< --param inputs reported as connected
+  std::set<std::string> reportedSpaces_;      ///< unknown colour spaces, reported once each
   const resolve::ResolvedInput* interfaceInput(Env& env, std::string_view name, Env*& where);
   /// The value of a shading-node input with `--set` and `--param` applied; kNoExpr when neither
   /// names it.

@@ -33,6 +33,11 @@ struct LoweringOptions {
   /// folder (`--search-path`, MATERIALX_SEARCH_PATH): MaterialX's resolution order, the
   /// document's folder first (its `fileprefix` is part of the file's value already).
   std::vector<std::filesystem::path> imageSearchPaths;
+  /// The colour space the shader computes in (`--working-space`; a linear space of
+  /// compiler/common/ColorSpace.h). Colour values and colour textures tagged with another
+  /// `colorspace` are converted into it, as MaterialX converts toward its target space, whose
+  /// default this is too.
+  std::string workingSpace = "lin_rec709";
 };
 
 /// Every material of the document, in document order: each surfacematerial's surface shader.

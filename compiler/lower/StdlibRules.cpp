@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "compiler/common/ColorSpace.h"
 #include "compiler/lower/Context.h"
 #include "compiler/lower/Microfacet.h"
 
@@ -236,14 +237,28 @@ ExprId time(Context& c, const NodeRef&, std::string_view, Type type) {
 
 // --- Textures (MaterialX "Texture Nodes") ---
 
+/// The colour space a colour image's texels are in ("" for an image of another type: MaterialX
+/// converts colour3 and colour4 images only; float and vector images are data).
+std::string texelSpace(Context& c, const NodeRef& n, Type type) {
+  return type == Type::Vec3 || type == Type::Vec4 ? c.colorspace(n, "file") : std::string();
+}
+/// A sampled colour in the working space. An sRGB-encoded texture is decoded by the device
+/// (the renderer reads it through an sRGB format, runtime/MaterialResources.cpp), so only its
+/// primaries are left to convert here.
+ExprId texelsToWorkingSpace(Context& c, const NodeRef& n, ExprId sampled, const std::string& space) {
+  const ColorSpace* cs = findColorSpace(space);
+  return c.toWorkingSpace(sampled, space, c.origin(n, "file").location, cs && cs->encoding == Encoding::Srgb);
+}
 ExprId sample(Context& c, const NodeRef& n, ExprId uv, Type type, std::string_view uaddress, std::string_view vaddress) {
   const std::string file = c.imageFile(n);
   c.material.addImage(file, c.origin(n, "file"));
   ExprId texture = c.material.exprs.named(Op::Texture, Type::String, file);
   std::string filter = c.stringInput(n, "filtertype");
-  return c.material.exprs.opWithString(
+  const std::string space = texelSpace(c, n, type);
+  ExprId sampled = c.material.exprs.opWithString(
       Op::ImageSample, type, {texture, uv, in(c, n, "default")},
-      fmt::format("{},{},{},{}", uaddress, vaddress, filter.empty() ? "linear" : filter, c.colorspace(n, "file")));
+      fmt::format("{},{},{},{}", uaddress, vaddress, filter.empty() ? "linear" : filter, space));
+  return texelsToWorkingSpace(c, n, sampled, space);
 }
 ExprId image(Context& c, const NodeRef& n, std::string_view, Type type) {
   std::string u = c.stringInput(n, "uaddressmode");
@@ -265,8 +280,9 @@ ExprId hextiledimage(Context& c, const NodeRef& n, std::string_view, Type type) 
   std::vector<ExprId> args{texture, uv, in(c, n, "default"), in(c, n, "rotation"), in(c, n, "rotationrange"),
                            in(c, n, "scale"), in(c, n, "scalerange"), in(c, n, "offset"), in(c, n, "offsetrange"),
                            in(c, n, "falloff"), in(c, n, "falloffcontrast"), in(c, n, "lumacoeffs")};
-  return c.material.exprs.opWithString(Op::ImageSample, type, args,
-                                       fmt::format("hex,hex,linear,{}", c.colorspace(n, "file")));
+  const std::string space = texelSpace(c, n, type);
+  ExprId sampled = c.material.exprs.opWithString(Op::ImageSample, type, args, fmt::format("hex,hex,linear,{}", space));
+  return texelsToWorkingSpace(c, n, sampled, space);
 }
 ExprId place2d(Context& c, const NodeRef& n, std::string_view, Type) {
   // operationorder 0 (SRT): rotate((uv - pivot) / scale) - offset + pivot;

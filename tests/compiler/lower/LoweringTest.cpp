@@ -101,6 +101,45 @@ TEST(OpenPbrLowering, DefaultIsGlossOverDiffuseWithMinimalEffects) {
   EXPECT_EQ(constant(l.only(), diffuse->slots.value(Slot::Color)), (std::vector<float>{0.8f, 0.8f, 0.8f}));
 }
 
+TEST(Lowering, ColourValuesAreConvertedFromTheirColourSpace) {
+  auto diffuseColor = [](const std::string& documentSpace, const std::string& input) {
+    Lowered l = lower("<?xml version=\"1.0\"?>\n<materialx version=\"1.39\"" + documentSpace +
+                      ">\n  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n" + input +
+                      "  </open_pbr_surface>\n  <surfacematerial name=\"M\" type=\"material\"><input "
+                      "name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"s\" /></surfacematerial>\n"
+                      "</materialx>\n");
+    const ir::Interface* diffuse = findInterface(l.only(), ir::InterfaceKind::Diffuse);
+    return diffuse ? constant(l.only(), diffuse->slots.value(Slot::Color)) : std::vector<float>{};
+  };
+  auto expectNear = [](const std::vector<float>& got, std::vector<float> expected) {
+    ASSERT_EQ(got.size(), expected.size());
+    for (size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], expected[i], 1e-5f) << i;
+  };
+  // The example: sRGB-encoded 0.5 is 0.214 linear (IEC 61966-2-1).
+  expectNear(diffuseColor("", "    <input name=\"base_color\" type=\"color3\" value=\"0.5, 0, 0\" "
+                              "colorspace=\"srgb_texture\"/>\n"),
+             {0.214041f, 0.0f, 0.0f});
+  // Inherited from the document: ACEScg to linear Rec.709 by MaterialX's cmlib matrix.
+  expectNear(diffuseColor(" colorspace=\"acescg\"", in("base_color", "color3", "0.5, 0.4, 0.3")),
+             {0.578831f, 0.388029f, 0.282302f});
+  // An input's own colour space wins over the document's; data spaces are never converted.
+  expectNear(diffuseColor(" colorspace=\"acescg\"", "    <input name=\"base_color\" type=\"color3\" "
+                                                     "value=\"0.5, 0.4, 0.3\" colorspace=\"raw\"/>\n"),
+             {0.5f, 0.4f, 0.3f});
+  expectNear(diffuseColor(" colorspace=\"lin_rec709\"", in("base_color", "color3", "0.5, 0.4, 0.3")), {0.5f, 0.4f, 0.3f});
+}
+
+TEST(Lowering, AnUnknownColourSpaceIsReportedOnceAndLeftAlone) {
+  Lowered l = lower(openPbrDocument("    <input name=\"base_color\" type=\"color3\" value=\"0.5, 0.4, 0.3\" "
+                               "colorspace=\"bogus_space\"/>\n    <input name=\"coat_color\" type=\"color3\" "
+                               "value=\"0.5, 0.4, 0.3\" colorspace=\"bogus_space\"/>\n"));
+  int warnings = 0;
+  for (const Diagnostic& d : l.context->diagnostics.all()) {
+    if (d.message.find("colorspace 'bogus_space' is not one mxc knows") != std::string::npos) ++warnings;
+  }
+  EXPECT_EQ(warnings, 1) << l.context->diagnostics.format();
+}
+
 TEST(OpenPbrLowering, GlassIsADielectricOverAMedium) {
   Lowered l = lowerFile("corpus/materialx/examples/OpenPbr/open_pbr_glass.mtlx");
   EXPECT_EQ(ir::structureSignature(l.only()), "slab(dielectric:RT,bulk,-)");
