@@ -405,7 +405,8 @@ void Renderer::renderObjects(const std::vector<SceneObject>& objects, const std:
       st.block.set("normalToWorld", v.normalToWorld);
       st.block.set("worldToClip", v.viewToClip * v.worldToView);
       st.block.set("eye", glm::vec4(v.eye, 1.0f));
-      st.block.set("jitter", glm::vec4(v.jitter, 0.0f, 0.0f));  // added in clip space by mxc_raster.vert
+      // xy added in clip space by mxc_raster.vert; z scales the texture footprint (frames >= 1).
+      st.block.set("jitter", glm::vec4(v.jitter, 1.0f / std::sqrt(float(std::max(s.frames, 1u))), 0.0f));
       st.block.set("counts", glm::ivec4(int(lights), int(environmentCode(s.environment)), int(v.frame),
                                         int(std::max(s.samplesPerFrame, 1u))));
       std::memcpy(st.view.mapped, st.block.bytes().data(), st.block.bytes().size());

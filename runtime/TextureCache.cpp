@@ -33,11 +33,12 @@ std::vector<float> floatTexels(const std::vector<uint8_t>& texels, bool srgb) {
 }
 
 Image uploadTexture(VulkanContext& context, const RgbaImage& pixels, bool srgb) {
-  const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  // Textures carry their mip chain (VulkanContext::createTexture): the fragment shader samples
+  // with the texture coordinate's screen derivatives, so a minified texture is filtered.
   const VkFormat eightBit = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
   if (!pixels.texels.empty()) {
-    Image image = context.createImage(pixels.width, pixels.height,
-                                      context.canSampleLinear(eightBit) ? eightBit : VK_FORMAT_R32G32B32A32_SFLOAT, usage);
+    Image image = context.createTexture(pixels.width, pixels.height,
+                                        context.canSampleLinear(eightBit) ? eightBit : VK_FORMAT_R32G32B32A32_SFLOAT);
     if (image.format == eightBit) {
       context.upload(image, pixels.texels.data(), 4);
     } else {
@@ -47,11 +48,11 @@ Image uploadTexture(VulkanContext& context, const RgbaImage& pixels, bool srgb) 
   }
   if (pixels.eightBit && context.canSampleLinear(eightBit)) {
     const std::vector<uint8_t> texels = eightBitTexels(pixels, srgb);
-    Image image = context.createImage(pixels.width, pixels.height, eightBit, usage);
+    Image image = context.createTexture(pixels.width, pixels.height, eightBit);
     context.upload(image, texels.data(), 4);
     return image;
   }
-  Image image = context.createImage(pixels.width, pixels.height, VK_FORMAT_R32G32B32A32_SFLOAT, usage);
+  Image image = context.createTexture(pixels.width, pixels.height, VK_FORMAT_R32G32B32A32_SFLOAT);
   context.upload(image, pixels.pixels.data());
   return image;
 }

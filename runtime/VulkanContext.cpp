@@ -214,6 +214,28 @@ void VulkanContext::destroy(Buffer& b) {
 
 Image VulkanContext::createImage(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
                                  VkSamplerAddressMode addressU, VkSamplerAddressMode addressV) {
+  return createImageLevels(width, height, format, usage, addressU, addressV, 1);
+}
+
+Image VulkanContext::createTexture(uint32_t width, uint32_t height, VkFormat format) {
+  VkFormatProperties properties{};
+  vkGetPhysicalDeviceFormatProperties(physical_, format, &properties);
+  const VkFormatFeatureFlags blit =
+      VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+  uint32_t levels = 1;
+  if ((properties.optimalTilingFeatures & blit) == blit) {
+    // Down to 1x1: floor(log2(max side)) + 1 levels (Vulkan's full mip chain).
+    for (uint32_t side = std::max(width, height); side > 1; side /= 2) ++levels;
+  }
+  const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                  (levels > 1 ? VkImageUsageFlags{VK_IMAGE_USAGE_TRANSFER_SRC_BIT} : VkImageUsageFlags{0});
+  return createImageLevels(width, height, format, usage, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                           VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, levels);
+}
+
+Image VulkanContext::createImageLevels(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
+                                       VkSamplerAddressMode addressU, VkSamplerAddressMode addressV,
+                                       uint32_t mipLevels) {
   // vkCreateImage with an extent past the device's limit is undefined behaviour (VUID-VkImageCreateInfo-extent-02252).
   if (width == 0 || height == 0 || width > maxImageDimension2D_ || height > maxImageDimension2D_) {
     throw VulkanError(fmt::format("an image of {}x{} is beyond the device's limit of {} per side", width, height,
@@ -223,11 +245,12 @@ Image VulkanContext::createImage(uint32_t width, uint32_t height, VkFormat forma
   img.width = width;
   img.height = height;
   img.format = format;
+  img.mipLevels = mipLevels;
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
   info.extent = {width, height, 1};
-  info.mipLevels = 1;
+  info.mipLevels = mipLevels;
   info.arrayLayers = 1;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -247,17 +270,17 @@ Image VulkanContext::createImage(uint32_t width, uint32_t height, VkFormat forma
   view.format = format;
   const bool depth = format == VK_FORMAT_D32_SFLOAT;
   view.subresourceRange = {static_cast<VkImageAspectFlags>(depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT),
-                           0, 1, 0, 1};
+                           0, mipLevels, 0, 1};
   check(vkCreateImageView(device_, &view, nullptr, &img.view), "vkCreateImageView");
   if (usage & VK_IMAGE_USAGE_SAMPLED_BIT) {
     VkSamplerCreateInfo sampler{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     sampler.magFilter = VK_FILTER_LINEAR;
     sampler.minFilter = VK_FILTER_LINEAR;
-    sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    sampler.mipmapMode = mipLevels > 1 ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
     sampler.addressModeU = addressU;
     sampler.addressModeV = addressV;
     sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    sampler.maxLod = 0.0f;
+    sampler.maxLod = static_cast<float>(mipLevels - 1);
     check(vkCreateSampler(device_, &sampler, nullptr, &img.sampler), "vkCreateSampler");
   }
   return img;
@@ -292,9 +315,32 @@ void VulkanContext::upload(Image& img, const void* texels, size_t bytesPerTexel)
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {img.width, img.height, 1};
     vkCmdCopyBufferToImage(cmd, staging.buffer, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    // Each further level from the one above it: that level becomes a blit source, the blit
+    // halves each side (never below 1).
+    const VkPipelineStageFlags transfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    for (uint32_t level = 1; level < img.mipLevels; ++level) {
+      transition(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                 VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, transfer, transfer, level - 1, 1);
+      if (level == 1) {
+        transition(cmd, img.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+                   VK_ACCESS_TRANSFER_WRITE_BIT, transfer, transfer, 1, img.mipLevels - 1);
+      }
+      auto side = [&](uint32_t full, uint32_t l) { return static_cast<int32_t>(std::max(full >> l, 1u)); };
+      VkImageBlit blit{};
+      blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, 1};
+      blit.srcOffsets[1] = {side(img.width, level - 1), side(img.height, level - 1), 1};
+      blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, 1};
+      blit.dstOffsets[1] = {side(img.width, level), side(img.height, level), 1};
+      vkCmdBlitImage(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     1, &blit, VK_FILTER_LINEAR);
+    }
+    const VkPipelineStageFlags shaders = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    if (img.mipLevels > 1) {
+      transition(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                 VK_ACCESS_TRANSFER_READ_BIT, VK_ACCESS_SHADER_READ_BIT, transfer, shaders, 0, img.mipLevels - 1);
+    }
     transition(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-               VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-               VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+               VK_ACCESS_TRANSFER_WRITE_BIT, VK_ACCESS_SHADER_READ_BIT, transfer, shaders, img.mipLevels - 1, 1);
   });
   destroy(staging);
 }
@@ -346,7 +392,7 @@ void VulkanContext::end(VkCommandBuffer cmd) {
 
 void VulkanContext::transition(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImageLayout to,
                                VkAccessFlags srcAccess, VkAccessFlags dstAccess, VkPipelineStageFlags srcStage,
-                               VkPipelineStageFlags dstStage) {
+                               VkPipelineStageFlags dstStage, uint32_t baseLevel, uint32_t levelCount) {
   VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
   barrier.oldLayout = from;
   barrier.newLayout = to;
@@ -355,7 +401,7 @@ void VulkanContext::transition(VkCommandBuffer cmd, VkImage image, VkImageLayout
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image;
-  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, baseLevel, levelCount, 0, 1};
   vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
 }
 

@@ -48,6 +48,7 @@ struct Image {
   VkFormat format = VK_FORMAT_UNDEFINED;
   uint32_t width = 0;
   uint32_t height = 0;
+  uint32_t mipLevels = 1;
 };
 
 class VulkanContext {
@@ -79,11 +80,17 @@ class VulkanContext {
   Image createImage(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
                     VkSamplerAddressMode addressU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
                     VkSamplerAddressMode addressV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE);
+  /// A sampled texture of a material: with a full mip chain (down to 1x1, filtered trilinearly)
+  /// when the device can blit `format` with linear filtering, else one level. upload() fills
+  /// level 0 and makes the others from it.
+  Image createTexture(uint32_t width, uint32_t height, VkFormat format);
   void destroy(Image& image);
   /// Fills an RGBA32F image created with TRANSFER_DST and SAMPLED usage from `rgba`
   /// (width * height * 4 floats, top row first) and leaves it ready for sampling.
   void upload(Image& image, const float* rgba);
-  /// Any format: `texels` holds width x height texels of `bytesPerTexel` bytes each.
+  /// Any format: `texels` holds width x height texels of `bytesPerTexel` bytes each. An image
+  /// with mip levels gets each by a linear blit of the one above (a 2x2 box filter; for an sRGB
+  /// format the device filters linear values, Vulkan 1.0 "Image Copies with Scaling").
   void upload(Image& image, const void* texels, size_t bytesPerTexel);
   /// Whether images of `format` can be sampled with linear filtering.
   bool canSampleLinear(VkFormat format) const;
@@ -98,13 +105,16 @@ class VulkanContext {
     end(cmd);
   }
 
-  /// An image layout transition barrier on a whole single-mip colour image.
+  /// An image layout transition barrier on mip levels [baseLevel, baseLevel + levelCount) of a
+  /// colour image (by default its only level).
   static void transition(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImageLayout to,
                          VkAccessFlags srcAccess, VkAccessFlags dstAccess, VkPipelineStageFlags srcStage,
-                         VkPipelineStageFlags dstStage);
+                         VkPipelineStageFlags dstStage, uint32_t baseLevel = 0, uint32_t levelCount = 1);
 
  private:
   uint32_t memoryType(uint32_t typeBits, VkMemoryPropertyFlags properties) const;
+  Image createImageLevels(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage,
+                          VkSamplerAddressMode addressU, VkSamplerAddressMode addressV, uint32_t mipLevels);
   VkCommandBuffer begin();
   void end(VkCommandBuffer cmd);
 

@@ -34,7 +34,9 @@ constexpr Member kView[] = {
     {"mat4", "normalToWorld", 0, "inverse transpose of objectToWorld"},
     {"mat4", "worldToClip", 0, ""},
     {"vec4", "eye", 0, "xyz: camera position (world)"},
-    {"vec4", "jitter", 0, "xy: this frame's sub-pixel offset, in normalised device units"},
+    {"vec4", "jitter", 0,
+     "xy: this frame's sub-pixel offset, in normalised device units; z: the width of a pixel one frame's sample "
+     "stands for (1 / sqrt(frames)): textures are filtered over that footprint, the frames' jitter does the rest"},
     {"vec4", "lightVector", kMaxLights,
      "w = 0: xyz points towards a directional light; w = 1: a point light's position; w = 2: a spot light's"},
     {"vec4", "lightSpot", kMaxLights,
@@ -126,6 +128,8 @@ std::string codesHeader() {
   out += fmt::format("const int MXC_ADDRESS_CLAMP = {};\n", int(AddressMode::Clamp));
   out += fmt::format("const int MXC_ADDRESS_PERIODIC = {};\n", int(AddressMode::Periodic));
   out += fmt::format("const int MXC_ADDRESS_MIRROR = {};\n", int(AddressMode::Mirror));
+  out += fmt::format("const int MXC_FILTER_LINEAR = {};\n", int(FilterMode::Linear));
+  out += fmt::format("const int MXC_FILTER_CLOSEST = {};\n", int(FilterMode::Closest));
   out += fmt::format("const int MXC_TRANSFORM_POINT = {};\n", int(TransformKind::Point));
   out += fmt::format("const int MXC_TRANSFORM_VECTOR = {};\n", int(TransformKind::Vector));
   out += fmt::format("const int MXC_TRANSFORM_NORMAL = {};\n", int(TransformKind::Normal));

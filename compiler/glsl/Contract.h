@@ -66,6 +66,11 @@ constexpr uint32_t kEnvironmentSampleOutputBinding = 2;
 
 /// MaterialX texture address modes, as mxc_sample_image takes them (MXC_ADDRESS_*).
 enum class AddressMode : int32_t { Constant = 0, Clamp = 1, Periodic = 2, Mirror = 3 };
+/// MaterialX image `filtertype` as the shader library's codes (MXC_FILTER_*): linear (the
+/// default, trilinear through the mip chain where the stage has derivatives), closest (the
+/// nearest texel of the full-resolution level). "cubic" is sampled as linear, as MaterialX's
+/// GLSL generator does.
+enum class FilterMode : int32_t { Linear = 0, Closest = 1 };
 /// What mxc_transform moves between object and world space (MXC_TRANSFORM_*).
 enum class TransformKind : int32_t { Point = 0, Vector = 1, Normal = 2 };
 

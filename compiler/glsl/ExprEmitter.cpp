@@ -52,6 +52,11 @@ int addressMode(const std::string& mode) {
   return int(AddressMode::Periodic);  // periodic (and hex, sampled periodically)
 }
 
+/// The code of a MaterialX filter type (compiler/glsl/Contract.h, MXC_FILTER_*).
+int filterMode(const std::string& filter) {
+  return int(filter == "closest" ? FilterMode::Closest : FilterMode::Linear);  // cubic is sampled as linear
+}
+
 /// The GLSL of a geometric property, by geompropdef name.
 std::string geomprop(const std::string& name, Type type, const std::string& fallback) {
   std::string v;
@@ -292,9 +297,10 @@ std::string ExprEmitter::emit(ExprId id) {
       // node's default is used instead (MaterialX "image": default "if the file cannot be read").
       size_t k = textures_.size() - 1;
       for (size_t t = 0; t < textures_.size(); ++t) k = textures_[t].name == sampler ? t : k;
-      std::string sample = fmt::format("mxc_sample_image({}, {}, {}, {}, {}, (mxc_params.missing_textures & {}u) != 0u)",
-                                       sampler, a(1), fallback4, addressMode(modes[0]), addressMode(modes[1]),
-                                       1u << (k % 32));
+      std::string sample =
+          fmt::format("mxc_sample_image({}, {}, {}, {}, {}, {}, (mxc_params.missing_textures & {}u) != 0u)", sampler,
+                      a(1), fallback4, addressMode(modes[0]), addressMode(modes[1]), filterMode(modes[2]),
+                      1u << (k % 32));
       value = n == 1 ? sample + ".r" : n == 2 ? sample + ".rg" : n == 3 ? sample + ".rgb" : sample;
       break;
     }

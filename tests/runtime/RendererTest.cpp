@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
+#include "runtime/ImageIO.h"
 #include "support/MaterialSupport.h"
 
 namespace mxc::test {
@@ -94,6 +96,100 @@ TEST(Renderer, RenderEachMatchesRenderingEachAlone) {
   // The three differ (each image is its own material's, not the last one's or a sum).
   EXPECT_NE(each[0].image.pixels, each[1].image.pixels);
   EXPECT_NE(each[1].image.pixels, each[2].image.pixels);
+}
+
+/// A checkerboard of `size` x `size` texels, each 0 or 1, as an EXR in `folder`, and a document
+/// whose unlit surface emits it through an image node (with `imageInputs`) at `tiling`.
+std::string checkerDocument(const fs::path& folder, uint32_t size, const std::string& tiling,
+                            const std::string& imageInputs = "") {
+  rt::RgbaImage checker{size, size, std::vector<float>(size_t{size} * size * 4, 1.0f)};
+  for (uint32_t y = 0; y < checker.height; ++y) {
+    for (uint32_t x = 0; x < checker.width; ++x) {
+      for (int c = 0; c < 3; ++c) checker.at(x, y)[c] = (x + y) % 2 ? 1.0f : 0.0f;
+    }
+  }
+  EXPECT_EQ(rt::writeImage(folder / "checker.exr", checker), std::nullopt);
+  return mtlx("  <texcoord name=\"uv\" type=\"vector2\"/>\n"
+              "  <multiply name=\"tiled\" type=\"vector2\">\n"
+              "    <input name=\"in1\" type=\"vector2\" nodename=\"uv\"/>\n"
+              "    <input name=\"in2\" type=\"vector2\" value=\"" + tiling + "\"/>\n"
+              "  </multiply>\n"
+              "  <image name=\"checker\" type=\"color3\">\n"
+              "    <input name=\"file\" type=\"filename\" value=\"" + (folder / "checker.exr").string() + "\"/>\n"
+              "    <input name=\"texcoord\" type=\"vector2\" nodename=\"tiled\"/>\n" + imageInputs +
+              "  </image>\n"
+              "  <surface_unlit name=\"surf\" type=\"surfaceshader\">\n"
+              "    <input name=\"emission_color\" type=\"color3\" nodename=\"checker\"/>\n"
+              "  </surface_unlit>\n"
+              "  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" type=\"surfaceshader\" "
+              "nodename=\"surf\"/></surfacematerial>\n");
+}
+
+/// The red channel of the 8x8 pixels in the middle of a 48x48 image of the sphere (it spans
+/// about 18 pixels there): covered, and seen head-on.
+std::vector<float> middleOfTheSphere(const rt::RgbaImage& image) {
+  std::vector<float> values;
+  for (uint32_t y = 20; y < 28; ++y) {
+    for (uint32_t x = 20; x < 28; ++x) {
+      EXPECT_GT(image.at(x, y)[3], 0.999f) << x << "," << y;
+      values.push_back(image.at(x, y)[0]);
+    }
+  }
+  return values;
+}
+
+rt::RenderSettings oneSamplePerPixel() {
+  rt::RenderSettings settings;
+  settings.width = settings.height = 48;
+  settings.frames = 1;  // one sample per pixel: the footprint is the whole pixel
+  settings.environment = rt::Environment::None;
+  return settings;
+}
+
+// A texture far smaller on screen than its texels: a one-texel checkerboard tiled 8 times over
+// the sphere puts about 70 texels under a pixel. The mip chain averages them, so every pixel
+// of the sphere's middle is near the average; one texel per sample (no mip chain) would give
+// each pixel a value anywhere between the checker's 0 and 1.
+TEST(Renderer, MinifiedTexturesAreFilteredThroughTheMipChain) {
+  const fs::path folder = fs::temp_directory_path() / ("mxc_test_mip_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  Context context;
+  std::vector<ir::Material> materials = lowerText(context, checkerDocument(folder, 256, "8, 8"));
+  ASSERT_EQ(materials.size(), 1u) << context.diagnostics.format();
+  rt::RgbaImage image = render(materials[0], oneSamplePerPixel(), folder);
+  fs::remove_all(folder);
+  ASSERT_FALSE(image.pixels.empty());
+  const std::vector<float> values = middleOfTheSphere(image);
+  float mean = 0.0f;
+  for (float v : values) mean += v / static_cast<float>(values.size());
+  ASSERT_GT(mean, 0.0f);
+  for (float v : values) EXPECT_NEAR(v / mean, 1.0f, 0.15f);
+}
+
+// MaterialX filtertype "closest": a magnified 2x2 checkerboard shows its texels as they are,
+// every pixel one of the two values; "linear" blends them across each texel boundary.
+TEST(Renderer, ClosestFilteringShowsTexelsAsTheyAre) {
+  const fs::path folder = fs::temp_directory_path() / ("mxc_test_closest_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  auto distinctLevels = [&](const std::string& filter) {
+    Context context;
+    std::vector<ir::Material> materials = lowerText(
+        context, checkerDocument(folder, 2, "1, 1",
+                                 "    <input name=\"filtertype\" type=\"string\" value=\"" + filter + "\"/>\n"));
+    EXPECT_EQ(materials.size(), 1u) << context.diagnostics.format();
+    if (materials.empty()) return -1;
+    rt::RgbaImage image = render(materials[0], oneSamplePerPixel(), folder);
+    float top = 0.0f;
+    for (uint32_t i = 0; i < image.width * image.height; ++i) top = std::max(top, image.pixels[4 * i]);
+    std::set<int> levels;  // covered pixels' red, in 1/100 of the brightest
+    for (uint32_t i = 0; i < image.width * image.height; ++i) {
+      if (image.pixels[4 * i + 3] > 0.999f) levels.insert(static_cast<int>(std::lround(100.0f * image.pixels[4 * i] / top)));
+    }
+    return static_cast<int>(levels.size());
+  };
+  EXPECT_EQ(distinctLevels("closest"), 2);
+  EXPECT_GT(distinctLevels("linear"), 10);
+  fs::remove_all(folder);
 }
 
 }  // namespace

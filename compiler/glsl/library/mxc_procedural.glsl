@@ -117,10 +117,33 @@ bool mxc_address(inout float x, int mode) {
   else x = 1.0 - abs(mod(x, 2.0) - 1.0);
   return true;
 }
-vec4 mxc_sample_image(sampler2D image, vec2 uv, vec4 fallback, int uaddress, int vaddress, bool missing) {
+// The width of a pixel this invocation's sample stands for: 1 for one sample per pixel; a
+// renderer that averages N jittered frames sets 1 / sqrt(N) (mxc_raster.frag), so the texture is
+// filtered over the sample's share of the pixel and the frames' jitter integrates the rest.
+float mxc_texture_footprint = 1.0;
+#define MXC_HAS_TEXTURE_FOOTPRINT
+
+// filtertype: MXC_FILTER_LINEAR or MXC_FILTER_CLOSEST (MaterialX "filtertype").
+vec4 mxc_sample_image(sampler2D image, vec2 uv, vec4 fallback, int uaddress, int vaddress, int filtertype, bool missing) {
   vec2 st = uv;
   if (missing) return fallback;
   if (!mxc_address(st.x, uaddress) || !mxc_address(st.y, vaddress)) return fallback;
   // MaterialX texture coordinates have v up; images are stored top row first.
-  return textureLod(image, vec2(st.x, 1.0 - st.y), 0.0);
+  st.y = 1.0 - st.y;
+  if (filtertype == MXC_FILTER_CLOSEST) {
+    // The centre of the texel st falls in, read at full resolution: the nearest texel.
+    vec2 size = vec2(textureSize(image, 0));
+    return textureLod(image, (min(floor(st * size), size - 1.0) + 0.5) / size, 0.0);
+  }
+#ifdef MXC_STAGE_RASTER
+  // Trilinear through the mip chain. The footprint is the screen derivative of the coordinate
+  // before it was wrapped: fract() and mirroring jump by a whole tile at a seam, which would
+  // read as a huge footprint there. (v was flipped, hence the sign.)
+  vec2 dx = dFdx(uv) * vec2(mxc_texture_footprint, -mxc_texture_footprint);
+  vec2 dy = dFdy(uv) * vec2(mxc_texture_footprint, -mxc_texture_footprint);
+  return textureGrad(image, st, dx, dy);
+#else
+  // Compute stages have no screen footprint: the full-resolution level.
+  return textureLod(image, st, 0.0);
+#endif
 }

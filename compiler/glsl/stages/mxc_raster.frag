@@ -105,6 +105,10 @@ void main() {
   g.frame = mxc_params.frame;
   g.time = mxc_params.time;
   vec3 wo = mxc_safe_normalize(mxc_view.eye.xyz - vPosition, N);
+#ifdef MXC_HAS_TEXTURE_FOOTPRINT
+  mxc_texture_footprint = mxc_view.jitter.z;  // set by the renderer; 0 from a host that leaves it: guarded below
+  if (!(mxc_texture_footprint > 0.0)) mxc_texture_footprint = 1.0;
+#endif
 
   mxc_closure_seed(mxc_pcg(uint(gl_FragCoord.x) ^ mxc_pcg(uint(gl_FragCoord.y) + mxc_pcg(uint(mxc_view.counts.z) + 7u))));
   MxcClosure c;
