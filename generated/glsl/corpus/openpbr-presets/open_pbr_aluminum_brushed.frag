@@ -37,8 +37,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(0.056287806, 0.005628782);
   lobe0.eta = 1.5;
-  lobe0.c0 = vec3(0.918, 0.922, 0.923);
-  lobe0.c1 = vec3(0.921, 0.934, 0.955);
+  lobe0.c0 = vec3(0.9150964, 0.9225105, 0.92324895);
+  lobe0.c1 = vec3(0.9100859, 0.93547195, 0.95852435);
   lobe0.c2 = vec3(1.0);
   lobe0.p0 = 5.0;
   lobe0.p1 = 1.0;

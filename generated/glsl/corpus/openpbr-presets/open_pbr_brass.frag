@@ -37,8 +37,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(4e-04);
   lobe0.eta = 1.5;
-  lobe0.c0 = vec3(0.844, 0.782, 0.473);
-  lobe0.c1 = vec3(0.963, 0.977, 1.013);
+  lobe0.c0 = vec3(0.9134401, 0.7771836, 0.42424333);
+  lobe0.c1 = vec3(0.9501319, 0.97844386, 1.018843);
   lobe0.c2 = vec3(1.0);
   lobe0.p0 = 5.0;
   lobe0.p1 = 1.0;

@@ -47,7 +47,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
-  vec3 dark2 = mxc_coat_darkening(1.6, vec3(0.1, 0.6, 0.9), 1.0, 1.0, dot(wo, lobe0.N));
+  vec3 dark2 = mxc_coat_darkening(1.6, vec3(0.0, 0.66196376, 0.9578934), 1.0, 1.0, dot(wo, lobe0.N));
   vec3 w3 = ((vec3(1.0) - e1) * dark2);
   MxcLobe lobe4;
   lobe4.kind = MXC_LOBE_DIELECTRIC;
@@ -73,7 +73,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe7.T = g.T;
   lobe7.alpha = vec2(0.0);
   lobe7.eta = 1.5;
-  lobe7.c0 = vec3(0.1, 0.6, 0.9);
+  lobe7.c0 = vec3(0.0, 0.66196376, 0.9578934);
   lobe7.c1 = vec3(1.0);
   lobe7.c2 = vec3(1.0);
   lobe7.p0 = 0.0;

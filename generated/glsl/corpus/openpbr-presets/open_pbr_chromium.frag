@@ -37,8 +37,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(4e-04);
   lobe0.eta = 1.5;
-  lobe0.c0 = vec3(0.666, 0.682, 0.698);
-  lobe0.c1 = vec3(0.706, 0.726, 0.788);
+  lobe0.c0 = vec3(0.65338707, 0.6839154, 0.7008316);
+  lobe0.c1 = vec3(0.6867368, 0.7279512, 0.7979643);
   lobe0.c2 = vec3(1.0);
   lobe0.p0 = 5.0;
   lobe0.p1 = 1.0;

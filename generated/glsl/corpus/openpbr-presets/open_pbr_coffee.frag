@@ -46,7 +46,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.film = vec3(0.0);
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
-  lobe0.c1 *= exp(-vec3(11.363141, 18.708027, 29.374632) * MXC_BULK_PATH);
+  lobe0.c1 *= exp(-vec3(8.048552, 20.150589, 33.949795) * MXC_BULK_PATH);
   lobe0.weight = vec3(1.0);
   c.lobes[0] = lobe0;
   c.count = 1;

@@ -27,19 +27,19 @@ layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
 
 // ---- material 'Default' ----
 void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
-  vec3 v5 = g.N;
-  vec3 v6 = g.T;
+  vec3 v6 = g.N;
+  vec3 v7 = g.T;
   c.emission = vec3(0.0);
   c.transparency = vec3(0.0);
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;
-  lobe0.N = v5;
-  lobe0.T = v6;
+  lobe0.N = v6;
+  lobe0.T = v7;
   lobe0.alpha = vec2(0.09);
   lobe0.eta = 1.5;
-  lobe0.c0 = vec3(1.0);
-  lobe0.c1 = vec3(1.0);
+  lobe0.c0 = vec3(0.99999994, 1.0, 0.99999994);
+  lobe0.c1 = vec3(0.99999994, 1.0, 0.99999994);
   lobe0.c2 = vec3(1.0);
   lobe0.p0 = 0.0;
   lobe0.p1 = 1.0;
@@ -51,11 +51,11 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   MxcLobe lobe3;
   lobe3.kind = MXC_LOBE_EON;
   lobe3.mode = 1;
-  lobe3.N = v5;
+  lobe3.N = v6;
   lobe3.T = g.T;
   lobe3.alpha = vec2(0.0);
   lobe3.eta = 1.5;
-  lobe3.c0 = vec3(0.8);
+  lobe3.c0 = vec3(0.79999995, 0.8000001, 0.79999995);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);
   lobe3.p0 = 0.0;

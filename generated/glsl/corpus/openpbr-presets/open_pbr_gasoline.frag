@@ -39,7 +39,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 1.43;
   lobe0.c0 = vec3(1.0);
-  lobe0.c1 = vec3(0.972, 0.967, 0.664);
+  lobe0.c1 = vec3(1.0, 0.96954495, 0.6175293);
   lobe0.c2 = vec3(1.0);
   lobe0.p0 = 0.0;
   lobe0.p1 = 1.0;

@@ -54,7 +54,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe2.T = lobe0.T;
   lobe2.alpha = vec2(0.0);
   lobe2.eta = 1.5;
-  lobe2.c0 = vec3(0.103, 0.017, 0.006);
+  lobe2.c0 = vec3(0.16455023, 0.005913982, 0.0022530137);
   lobe2.c1 = vec3(1.0);
   lobe2.c2 = vec3(1.0);
   lobe2.p0 = 0.0;

@@ -37,8 +37,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(4e-04);
   lobe0.eta = 1.5;
-  lobe0.c0 = vec3(0.633, 0.64, 0.686);
-  lobe0.c1 = vec3(0.765, 0.772, 0.795);
+  lobe0.c0 = vec3(0.62423474, 0.64042664, 0.6932047);
+  lobe0.c1 = vec3(0.7581496, 0.77266926, 0.7986864);
   lobe0.c2 = vec3(1.0);
   lobe0.p0 = 5.0;
   lobe0.p1 = 1.0;

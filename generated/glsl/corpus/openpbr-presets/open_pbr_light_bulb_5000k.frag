@@ -31,7 +31,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec3 v6 = g.T;
   c.emission = vec3(0.0);
   c.transparency = vec3(0.0);
-  c.emission += vec3(9120.0, 8040.0, 6540.0);
+  c.emission += vec3(10006.343, 7915.1465, 6284.617);
   MxcLobe lobe0;
   lobe0.kind = MXC_LOBE_DIELECTRIC;
   lobe0.mode = 1;

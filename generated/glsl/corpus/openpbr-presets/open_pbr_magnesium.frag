@@ -37,8 +37,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(4e-04);
   lobe0.eta = 1.5;
-  lobe0.c0 = vec3(0.955, 0.953, 0.951);
-  lobe0.c1 = vec3(0.958, 0.963, 0.975);
+  lobe0.c0 = vec3(0.95657665, 0.9527606, 0.950646);
+  lobe0.c1 = vec3(0.95347565, 0.96352476, 0.9769556);
   lobe0.c2 = vec3(1.0);
   lobe0.p0 = 5.0;
   lobe0.p1 = 1.0;

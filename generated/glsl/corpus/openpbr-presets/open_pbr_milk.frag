@@ -54,7 +54,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe2.T = lobe0.T;
   lobe2.alpha = vec2(0.0);
   lobe2.eta = 1.5;
-  lobe2.c0 = vec3(0.808, 0.811, 0.699);
+  lobe2.c0 = vec3(0.8152099, 0.8125722, 0.68193907);
   lobe2.c1 = vec3(1.0);
   lobe2.c2 = vec3(1.0);
   lobe2.p0 = 0.0;

@@ -37,8 +37,8 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(4e-04);
   lobe0.eta = 1.5;
-  lobe0.c0 = vec3(0.357, 0.368, 0.418);
-  lobe0.c1 = vec3(0.711, 0.702, 0.669);
+  lobe0.c0 = vec3(0.34508148, 0.36890543, 0.42591265);
+  lobe0.c1 = vec3(0.720093, 0.7011758, 0.66373587);
   lobe0.c2 = vec3(1.0);
   lobe0.p0 = 5.0;
   lobe0.p1 = 1.0;

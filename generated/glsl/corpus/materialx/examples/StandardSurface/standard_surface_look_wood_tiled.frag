@@ -25,15 +25,15 @@ layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
 } mxc_params;
-layout(set = 0, binding = 5) uniform sampler2D mxc_texture_0;  // ../../../Images/wood_roughness.jpg (lin_rec709)
+layout(set = 0, binding = 5) uniform sampler2D mxc_texture_0;  // ../../../Images/wood_roughness.jpg
 layout(set = 0, binding = 6) uniform sampler2D mxc_texture_1;  // ../../../Images/wood_color.jpg (srgb_texture)
 
 // ---- material 'Tiled_Wood' ----
 void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec2 v2 = g.uv;
   vec2 v3 = v2 * vec2(4.0);
-  float v6 = mxc_sample_image(mxc_texture_0, v3, vec4(0.0), 2, 2, (mxc_params.missing_textures & 1u) != 0u).r;
-  vec3 v11 = mxc_sample_image(mxc_texture_1, v3, vec4(vec3(0.0), 1.0), 2, 2, (mxc_params.missing_textures & 2u) != 0u).rgb;
+  float v6 = mxc_sample_image(mxc_texture_0, v3, vec4(0.0), 2, 2, 0, (mxc_params.missing_textures & 1u) != 0u).r;
+  vec3 v11 = mxc_sample_image(mxc_texture_1, v3, vec4(vec3(0.0), 1.0), 2, 2, 0, (mxc_params.missing_textures & 2u) != 0u).rgb;
   vec3 v12 = max(v11, vec3(0.0));
   vec3 v14 = g.N;
   float v17 = v6 * v6;
@@ -145,7 +145,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec2 v8 = mxc_rotate2d(v7, 0.0);
   vec2 v9 = v8 - vec2(-1.66, -0.49);
   vec2 v10 = v9 + vec2(0.5);
-  vec3 v13 = mxc_sample_image(mxc_texture_0, v10, vec4(vec3(0.0), 1.0), 1, 1, (mxc_params.missing_textures & 1u) != 0u).rgb;
+  vec3 v13 = mxc_sample_image(mxc_texture_0, v10, vec4(vec3(0.0), 1.0), 1, 1, 0, (mxc_params.missing_textures & 1u) != 0u).rgb;
   vec3 v14 = max(v13, vec3(0.0));
   vec3 v16 = g.N;
   vec3 v19 = g.T;

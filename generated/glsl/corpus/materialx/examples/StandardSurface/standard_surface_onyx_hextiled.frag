@@ -32,9 +32,9 @@ layout(set = 0, binding = 6) uniform sampler2D mxc_texture_1;  // ../../../Image
 void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec2 v3 = g.uv;
   vec2 v4 = v3 * vec2(4.0);
-  vec3 v13 = mxc_sample_image(mxc_texture_0, v4, vec4(vec3(0.0), 1.0), 2, 2, (mxc_params.missing_textures & 1u) != 0u).rgb;
+  vec3 v13 = mxc_sample_image(mxc_texture_0, v4, vec4(vec3(0.0), 1.0), 2, 2, 0, (mxc_params.missing_textures & 1u) != 0u).rgb;
   float v14 = v13[0];
-  vec3 v17 = mxc_sample_image(mxc_texture_1, v4, vec4(vec3(0.0), 1.0), 2, 2, (mxc_params.missing_textures & 2u) != 0u).rgb;
+  vec3 v17 = mxc_sample_image(mxc_texture_1, v4, vec4(vec3(0.0), 1.0), 2, 2, 0, (mxc_params.missing_textures & 2u) != 0u).rgb;
   vec3 v18 = max(v17, vec3(0.0));
   vec3 v20 = g.N;
   float v23 = v14 * v14;
