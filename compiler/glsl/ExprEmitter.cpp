@@ -304,6 +304,10 @@ std::string ExprEmitter::emit(ExprId id) {
       value = n == 1 ? sample + ".r" : n == 2 ? sample + ".rg" : n == 3 ? sample + ".rgb" : sample;
       break;
     }
+    case Op::HeightToNormal:
+      procedural_ = true;
+      value = fmt::format("mxc_heighttonormal({}, {}, {})", a(0), a(1), a(2));
+      break;
     case Op::NormalMap:
       procedural_ = true;
       value = fmt::format("mxc_normalmap({}, {}, {}, {}, {})", a(0), a(1), a(2), a(3), a(4));

@@ -179,6 +179,9 @@ std::optional<Constant> evaluateUnchecked(Op op, Type type, const std::vector<Co
       float x = at(a[0], 0), y = at(a[0], 1);
       return Constant{Type::Vec2, {c * x - s * y, s * x + c * y}};
     }
+    case Op::HeightToNormal:
+      // A constant height has no gradient: the flat normal, (0, 0, 1) encoded.
+      return Constant{Type::Vec3, {0.5f, 0.5f, 1.0f}};
     case Op::Rotate3D: {
       glm::vec3 axis = vec3Of(a[2]);
       if (glm::length(axis) <= 1e-8f) return std::nullopt;

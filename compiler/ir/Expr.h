@@ -59,6 +59,7 @@ enum class Op : uint8_t {
   Noise2D, Noise3D, Fractal3D, CellNoise2D, CellNoise3D, WorleyNoise2D, WorleyNoise3D,
   ImageSample,  ///< (texture, texcoord, default) with payload "uaddress,vaddress,filter"
   NormalMap,    ///< (tangent-space sample, scale, normal, tangent, bitangent)
+  HeightToNormal,  ///< (height, scale, texcoord): the height field's tangent-space normal, encoded in [0, 1]
   Rotate3D,     ///< (vector, degrees, axis)
   Rotate2D,     ///< (vector, degrees)
   TransformPoint, TransformVector, TransformNormal,  ///< payload: "fromspace,tospace"

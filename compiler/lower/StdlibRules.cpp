@@ -306,6 +306,19 @@ ExprId normalmap(Context& c, const NodeRef& n, std::string_view, Type) {
                              {in(c, n, "in"), scale, in(c, n, "normal"), in(c, n, "tangent"), in(c, n, "bitangent")});
 }
 
+ExprId heighttonormal(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.material.exprs.op(Op::HeightToNormal, Type::Vec3, {in(c, n, "in"), in(c, n, "scale"), in(c, n, "texcoord")});
+}
+ExprId bump(Context& c, const NodeRef& n, std::string_view, Type) {
+  // MaterialX's definition (NG_bump_vector3): normalmap(heighttonormal(height), scale, N, T, B),
+  // the height's own scale being 1 and its texture coordinate UV0.
+  ExprId encoded = c.material.exprs.op(Op::HeightToNormal, Type::Vec3,
+                                       {in(c, n, "height"), c.b.f(1.0f), c.material.exprs.named(Op::GeomProp, Type::Vec2, "UV0")});
+  return c.material.exprs.op(Op::NormalMap, Type::Vec3,
+                             {encoded, c.b.splat(in(c, n, "scale"), Type::Vec2), in(c, n, "normal"), in(c, n, "tangent"),
+                              in(c, n, "bitangent")});
+}
+
 // --- Procedural (MaterialX "Procedural Nodes") ---
 
 /// amplitude * noise + pivot, with the noise of the output's type.
@@ -508,6 +521,8 @@ const RuleTable& rules() {
       {"hextiledimage", hextiledimage},
       {"place2d", place2d},
       {"normalmap", normalmap},
+      {"heighttonormal", heighttonormal},
+      {"bump", bump},
       {"noise2d", noise2d},
       {"noise3d", noise3d},
       {"fractal3d", fractal3d},

@@ -192,5 +192,44 @@ TEST(Renderer, ClosestFilteringShowsTexelsAsTheyAre) {
   fs::remove_all(folder);
 }
 
+// heighttonormal of h = u (u the texture coordinate) with scale 2: dh/du = 1, dh/dv = 0 wherever
+// the sphere is seen, so every pixel has the normal normalize(-2, 0, 1), encoded in [0, 1] — recovered from
+// screen derivatives through the texture coordinate's own (the chain rule), whatever the
+// sphere's parameterisation does to them.
+TEST(Renderer, HeightToNormalIsTheGradientWithRespectToTheTextureCoordinate) {
+  Context context;
+  std::vector<ir::Material> materials = lowerText(
+      context, mtlx("  <texcoord name=\"uv\" type=\"vector2\"/>\n"
+                    "  <extract name=\"u\" type=\"float\">\n"
+                    "    <input name=\"in\" type=\"vector2\" nodename=\"uv\"/>\n"
+                    "    <input name=\"index\" type=\"integer\" value=\"0\"/>\n"
+                    "  </extract>\n"
+                    "  <heighttonormal name=\"n\" type=\"vector3\">\n"
+                    "    <input name=\"in\" type=\"float\" nodename=\"u\"/>\n"
+                    "    <input name=\"scale\" type=\"float\" value=\"2\"/>\n"
+                    "  </heighttonormal>\n"
+                    "  <convert name=\"c\" type=\"color3\">\n"
+                    "    <input name=\"in\" type=\"vector3\" nodename=\"n\"/>\n"
+                    "  </convert>\n"
+                    "  <surface_unlit name=\"surf\" type=\"surfaceshader\">\n"
+                    "    <input name=\"emission_color\" type=\"color3\" nodename=\"c\"/>\n"
+                    "  </surface_unlit>\n"
+                    "  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
+                    "type=\"surfaceshader\" nodename=\"surf\"/></surfacematerial>\n"));
+  ASSERT_EQ(materials.size(), 1u) << context.diagnostics.format();
+  rt::RgbaImage image = render(materials[0], oneSamplePerPixel());
+  ASSERT_FALSE(image.pixels.empty());
+  const glm::vec3 expected = glm::normalize(glm::vec3(-2.0f, 0.0f, 1.0f)) * 0.5f + 0.5f;
+  for (uint32_t y = 20; y < 28; ++y) {
+    for (uint32_t x = 20; x < 28; ++x) {
+      const float* p = image.at(x, y);
+      ASSERT_GT(p[3], 0.999f);
+      // Ratios: the unlit surface's emission scale multiplies all three channels alike.
+      EXPECT_NEAR(p[0] / p[2], expected.x / expected.z, 1e-3f) << x << "," << y;
+      EXPECT_NEAR(p[1] / p[2], expected.y / expected.z, 1e-3f) << x << "," << y;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace mxc::test

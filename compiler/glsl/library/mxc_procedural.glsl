@@ -108,6 +108,32 @@ vec3 mxc_normalmap(vec3 sampleValue, vec2 scale, vec3 N, vec3 T, vec3 B) {
   return mxc_safe_normalize(T * v.x + B * v.y + N * v.z, N);
 }
 
+// MaterialX "heighttonormal": the tangent-space normal of the height field h(texcoord), its
+// deflection `scale` times the gradient of h with respect to the texture coordinate, encoded in
+// [0, 1] as a normal map is. The gradient comes from the screen derivatives by the chain rule
+// (the use of screen derivatives for bump mapping: Mikkelsen 2010, "Bump Mapping Unparametrized
+// Surfaces on the GPU"): (dh/dx, dh/dy) = M (dh/du, dh/dv) with M = [du/dx dv/dx; du/dy dv/dy],
+// so any graph computing h works, not only a texture. Compute stages have no derivatives, and a
+// texture coordinate that does not change across the pixel (det M = 0) has no gradient: there
+// the normal is flat.
+vec3 mxc_heighttonormal(float h, float scale, vec2 uv) {
+#ifdef MXC_STAGE_RASTER
+  vec2 dhdxy = vec2(dFdx(h), dFdy(h));
+  vec2 duvdx = dFdx(uv);
+  vec2 duvdy = dFdy(uv);
+  float det = duvdx.x * duvdy.y - duvdx.y * duvdy.x;
+  if (abs(det) > 1e-20) {
+    // M^-1 (dh/dx, dh/dy); the division is guarded above, and the gradient clamped so that the
+    // vector below stays finite (a slope of 1e6 is horizontal to float precision already).
+    vec2 gradient = vec2(duvdy.y * dhdxy.x - duvdx.y * dhdxy.y, duvdx.x * dhdxy.y - duvdy.x * dhdxy.x) / det;
+    gradient = clamp(gradient, vec2(-1e6), vec2(1e6));
+    // Its z is 1, so the length is at least 1: the normalize is safe.
+    return normalize(vec3(-scale * gradient, 1.0)) * 0.5 + 0.5;
+  }
+#endif
+  return vec3(0.5, 0.5, 1.0);
+}
+
 // MaterialX address modes along one axis (MXC_ADDRESS_*): constant (outside: use the default),
 // clamp, periodic, mirror. Returns false when the coordinate is outside in constant mode.
 bool mxc_address(inout float x, int mode) {
