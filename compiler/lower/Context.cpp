@@ -1,5 +1,7 @@
 #include "compiler/lower/Context.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -286,6 +288,63 @@ std::string Context::imageFile(const NodeRef& n) {
     return ec ? (folder / path).string() : found.string();
   }
   return file;
+}
+
+std::vector<Context::UdimTile> Context::udimTiles(const NodeRef& n) {
+  namespace fs = std::filesystem;
+  const std::string file = stringInput(n, "file");
+  const bool udim = file.find("<UDIM>") != std::string::npos;
+  const std::string token = udim ? "<UDIM>" : "<UVTILE>";
+  const size_t at = file.find(token);
+  if (at == std::string::npos) return {};
+  const fs::path pattern(file);
+  const std::string name = pattern.filename().string();
+  const size_t nameAt = name.find(token);
+  if (nameAt == std::string::npos) return {};  // a token in a folder name is not a tile set
+  const std::string prefix = name.substr(0, nameAt);
+  const std::string suffix = name.substr(nameAt + token.size());
+  // The tile number a file name gives, or 0: <UDIM> is four digits 1001-9999; <UVTILE> is
+  // u<U>_v<V>, both from 1 (MaterialX: the u index 1-10 and v index from 1).
+  auto tileOf = [&](const std::string& entry) -> int {
+    if (entry.size() <= prefix.size() + suffix.size() || entry.compare(0, prefix.size(), prefix) != 0 ||
+        entry.compare(entry.size() - suffix.size(), suffix.size(), suffix) != 0) {
+      return 0;
+    }
+    const std::string middle = entry.substr(prefix.size(), entry.size() - prefix.size() - suffix.size());
+    if (udim) {
+      if (middle.size() != 4 || middle.find_first_not_of("0123456789") != std::string::npos) return 0;
+      const int number = std::stoi(middle);
+      return number >= 1001 ? number : 0;
+    }
+    int u = 0, v = 0;
+    char tail = 0;
+    if (std::sscanf(middle.c_str(), "u%d_v%d%c", &u, &v, &tail) != 2 || u < 1 || u > 10 || v < 1 || v > 899) return 0;
+    return 1000 + u + 10 * (v - 1);
+  };
+  std::vector<fs::path> folders;
+  const fs::path relativeFolder = pattern.parent_path();
+  if (pattern.is_absolute()) {
+    folders.push_back(relativeFolder);
+  } else {
+    folders.push_back(fs::path(document.document->path()).parent_path() / relativeFolder);
+    for (const fs::path& folder : options.imageSearchPaths) folders.push_back(folder / relativeFolder);
+  }
+  for (const fs::path& folder : folders) {
+    std::error_code ec;  // an unreadable folder is a folder without tiles
+    std::vector<UdimTile> tiles;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string entry = it->path().filename().string();
+      if (int number = tileOf(entry)) {
+        const fs::path found = fs::absolute(it->path(), ec);
+        tiles.push_back({number, (ec ? it->path() : found).string()});
+      }
+    }
+    if (!tiles.empty()) {
+      std::sort(tiles.begin(), tiles.end(), [](const UdimTile& x, const UdimTile& y) { return x.number < y.number; });
+      return tiles;
+    }
+  }
+  return {};
 }
 
 ir::ExprId Context::nodeValue(const NodeRef& n, std::string_view output) {

@@ -73,6 +73,17 @@ class Context {
   /// else in the first of LoweringOptions::imageSearchPaths that has it (then that path); a
   /// file found nowhere keeps its value, and the renderer reports it missing.
   std::string imageFile(const NodeRef& n);
+  /// A tile of a UDIM image set: its number (1001 + u + 10 v, for the tile [u, u+1] x [v, v+1])
+  /// and its file.
+  struct UdimTile {
+    int number;
+    std::string file;
+  };
+  /// The tiles of an image node whose `file` names a tile set with `<UDIM>` (1001, 1002, ...)
+  /// or `<UVTILE>` (u1_v1, u2_v1, ...; MaterialX 1.39 "Filename Substitutions"): the files of
+  /// the first folder that has any (the document's, then LoweringOptions::imageSearchPaths),
+  /// by tile number. Empty when `file` names no tile set, or none of its tiles exists.
+  std::vector<UdimTile> udimTiles(const NodeRef& n);
   /// The colour space of a filename input, following interface connections to where it is set
   /// ("" when none is given).
   std::string colorspace(const NodeRef& n, std::string_view name);

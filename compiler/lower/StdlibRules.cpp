@@ -249,7 +249,38 @@ ExprId texelsToWorkingSpace(Context& c, const NodeRef& n, ExprId sampled, const 
   const ColorSpace* cs = findColorSpace(space);
   return c.toWorkingSpace(sampled, space, c.origin(n, "file").location, cs && cs->encoding == Encoding::Srgb);
 }
+/// A UDIM tile set (Context::udimTiles): each tile sampled over its own unit square of texture
+/// space (clamped there: tile edges are the set's seams), the one under `uv` chosen; outside
+/// every tile, the node's default.
+ExprId sampleTiles(Context& c, const NodeRef& n, ExprId uv, Type type, const std::vector<Context::UdimTile>& tiles,
+                   const std::string& filter, const std::string& space) {
+  ExprId tileU = c.b.unary(Op::Floor, c.b.extract(uv, 0));
+  ExprId tileV = c.b.unary(Op::Floor, c.b.extract(uv, 1));
+  ExprId local = c.b.sub(uv, c.b.construct(Type::Vec2, {tileU, tileV}));
+  ExprId fallback = in(c, n, "default");
+  ExprId result = fallback;
+  for (const Context::UdimTile& tile : tiles) {
+    c.material.addImage(tile.file, c.origin(n, "file"));
+    ExprId texture = c.material.exprs.named(Op::Texture, Type::String, tile.file);
+    ExprId sampled = c.material.exprs.opWithString(Op::ImageSample, type, {texture, local, fallback},
+                                                   fmt::format("clamp,clamp,{},{}", filter, space));
+    // 1001 + u + 10 v (MaterialX "Filename Substitutions"): u in 0..9, v from 0.
+    const int u = (tile.number - 1001) % 10;
+    const int v = (tile.number - 1001) / 10;
+    ExprId here = c.material.exprs.op(Op::And, Type::Bool,
+                                      {c.material.exprs.op(Op::Equal, Type::Bool, {tileU, c.b.f(float(u))}),
+                                       c.material.exprs.op(Op::Equal, Type::Bool, {tileV, c.b.f(float(v))})});
+    result = c.b.select(here, sampled, result);
+  }
+  return result;
+}
 ExprId sample(Context& c, const NodeRef& n, ExprId uv, Type type, std::string_view uaddress, std::string_view vaddress) {
+  if (std::vector<Context::UdimTile> tiles = c.udimTiles(n); !tiles.empty()) {
+    const std::string filter = c.stringInput(n, "filtertype");
+    const std::string space = texelSpace(c, n, type);
+    return texelsToWorkingSpace(c, n, sampleTiles(c, n, uv, type, tiles, filter.empty() ? "linear" : filter, space),
+                                space);
+  }
   const std::string file = c.imageFile(n);
   c.material.addImage(file, c.origin(n, "file"));
   ExprId texture = c.material.exprs.named(Op::Texture, Type::String, file);

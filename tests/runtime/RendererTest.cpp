@@ -3,6 +3,7 @@
 // corpus document renders to a finite image is checked by tests/corpus/SpecializationTest.cpp,
 // which renders each of them.)
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -190,6 +191,44 @@ TEST(Renderer, ClosestFilteringShowsTexelsAsTheyAre) {
   EXPECT_EQ(distinctLevels("closest"), 2);
   EXPECT_GT(distinctLevels("linear"), 10);
   fs::remove_all(folder);
+}
+
+// A UDIM set of two tiles, 1001 (u in [0, 1]) holding 0.25 and 1002 (u in [1, 2]) holding 0.75:
+// the tile under the texture coordinate is the one read, and the default outside both.
+TEST(Renderer, UdimTilesAreChosenByTheTextureCoordinate) {
+  const fs::path folder = fs::temp_directory_path() / ("mxc_test_udim_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  for (auto [tile, value] : {std::pair{1001, 0.25f}, std::pair{1002, 0.75f}}) {
+    rt::RgbaImage texel{1, 1, {value, value, value, 1.0f}};
+    ASSERT_EQ(rt::writeImage(folder / fmt::format("tiles.{}.exr", tile), texel), std::nullopt);
+  }
+  auto brightness = [&](const std::string& texcoord) {
+    Context context;
+    std::vector<ir::Material> materials = lowerText(
+        context, mtlx("  <image name=\"tiles\" type=\"color3\">\n"
+                      "    <input name=\"file\" type=\"filename\" value=\"" + (folder / "tiles.&lt;UDIM&gt;.exr").string() +
+                      "\"/>\n"
+                      "    <input name=\"texcoord\" type=\"vector2\" value=\"" + texcoord + "\"/>\n"
+                      "    <input name=\"default\" type=\"color3\" value=\"0.5, 0.5, 0.5\"/>\n"
+                      "  </image>\n"
+                      "  <surface_unlit name=\"surf\" type=\"surfaceshader\">\n"
+                      "    <input name=\"emission_color\" type=\"color3\" nodename=\"tiles\"/>\n"
+                      "  </surface_unlit>\n"
+                      "  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
+                      "type=\"surfaceshader\" nodename=\"surf\"/></surfacematerial>\n"));
+    EXPECT_EQ(materials.size(), 1u) << context.diagnostics.format();
+    if (materials.empty()) return 0.0f;
+    rt::RgbaImage image = render(materials[0], oneSamplePerPixel(), folder);
+    return image.pixels.empty() ? 0.0f : image.at(24, 24)[0];
+  };
+  const float first = brightness("0.5, 0.5");
+  const float second = brightness("1.5, 0.5");
+  const float outside = brightness("2.5, 0.5");
+  fs::remove_all(folder);
+  ASSERT_GT(first, 0.0f);
+  // Ratios: the unlit surface's emission scale multiplies all alike.
+  EXPECT_NEAR(second / first, 3.0f, 1e-3f);
+  EXPECT_NEAR(outside / first, 2.0f, 1e-3f);
 }
 
 // heighttonormal of h = u (u the texture coordinate) with scale 2: dh/du = 1, dh/dv = 0 wherever
