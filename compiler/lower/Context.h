@@ -152,5 +152,6 @@ ClosureRule findClosureRule(std::string_view category);
 /// StandardSurfaceLowering.cpp); each returns the root of the material's scattering tree.
 ir::Index lowerOpenPbrSurface(Context& c, const NodeRef& n);
 ir::Index lowerStandardSurface(Context& c, const NodeRef& n);
+ir::Index lowerUsdPreviewSurface(Context& c, const NodeRef& n);
 
 }  // namespace mxc::lower

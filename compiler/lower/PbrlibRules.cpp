@@ -332,13 +332,17 @@ Closure surfaceUnlit(Context& c, const NodeRef& n, std::string_view) {
 
 Closure shadingModel(Context& c, const NodeRef& n, std::string_view output) {
   // mxc's own lowering of the shading models, unless the user asked for their node graphs.
+  const std::string_view category = n.node->category();
   if (c.options.useShadingModelGraphs) {
-    c.material.thinWalled = c.param(n, n.node->category() == "open_pbr_surface" ? "geometry_thin_walled" : "thin_walled");
+    if (category != "UsdPreviewSurface") {
+      c.material.thinWalled = c.param(n, category == "open_pbr_surface" ? "geometry_thin_walled" : "thin_walled");
+    }
     if (Env* inner = c.inlineImplementation(n)) {
       if (const resolve::ResolvedInput* out = c.implementationOutput(*inner, output)) return c.closure(*out, *inner);
     }
   }
-  if (n.node->category() == "open_pbr_surface") return scatter(lowerOpenPbrSurface(c, n));
+  if (category == "open_pbr_surface") return scatter(lowerOpenPbrSurface(c, n));
+  if (category == "UsdPreviewSurface") return scatter(lowerUsdPreviewSurface(c, n));
   return scatter(lowerStandardSurface(c, n));
 }
 
@@ -367,6 +371,7 @@ const RuleTable& rules() {
       {"surface_unlit", surfaceUnlit},
       {"open_pbr_surface", shadingModel},
       {"standard_surface", shadingModel},
+      {"UsdPreviewSurface", shadingModel},
   };
   return table;
 }

@@ -1080,6 +1080,41 @@ def build_open_pbr():
     return L
 
 
+def build_usd_preview_surface():
+    L = Library(header(
+        'UsdPreviewSurface (nodedef only)', 'libraries/bxdf/usd_preview_surface.mtlx', [
+            '',
+            'No nodegraph: mxc lowers UsdPreviewSurface to closures in C++',
+            '(compiler/lower/UsdPreviewSurfaceLowering.cpp).',
+            'Source: the UsdPreviewSurface specification, version 2.6 (OpenUSD documentation,',
+            '"UsdPreviewSurface Specification"), section "Preview Surface": input names, types',
+            'and fallback values; opacityMode (2.6) is 0 for transparent, 1 for presence.']))
+    L.section('UsdPreviewSurface')
+    inputs = [
+        i('diffuseColor', 'color3', '0.18, 0.18, 0.18'),
+        i('emissiveColor', 'color3', '0, 0, 0'),
+        i('useSpecularWorkflow', 'integer', '0', uimin='0', uimax='1'),
+        i('specularColor', 'color3', '0, 0, 0'),
+        i('metallic', 'float', '0', uimin='0.0', uimax='1.0'),
+        i('roughness', 'float', '0.5', uimin='0.0', uimax='1.0'),
+        i('clearcoat', 'float', '0', uimin='0.0', uimax='1.0'),
+        i('clearcoatRoughness', 'float', '0.01', uimin='0.0', uimax='1.0'),
+        i('opacity', 'float', '1', uimin='0.0', uimax='1.0'),
+        i('opacityMode', 'integer', '0', enum='transparent,presence', enumvalues='0,1'),
+        i('opacityThreshold', 'float', '0', uimin='0.0', uimax='1.0'),
+        i('ior', 'float', '1.5'),
+        i('normal', 'vector3', '0, 0, 1'),
+        i('displacement', 'float', '0'),
+        i('occlusion', 'float', '1', uimin='0.0', uimax='1.0'),
+    ]
+    L.elem('nodedef', {'name': 'ND_UsdPreviewSurface_surfaceshader', 'node': 'UsdPreviewSurface', 'nodegroup': 'pbr',
+                       'version': '2.6', 'isdefaultversion': 'true',
+                       'doc': 'UsdPreviewSurface, version 2.6.'},
+           inputs + [('output', {'name': 'out', 'type': SS})])
+    L.count += 1
+    return L
+
+
 # ==========================================================================
 
 OUTPUTS = [
@@ -1090,6 +1125,7 @@ OUTPUTS = [
     ('lights/lights_defs.mtlx', build_lights),
     ('bxdf/standard_surface.mtlx', build_standard_surface),
     ('bxdf/open_pbr_surface.mtlx', build_open_pbr),
+    ('bxdf/usd_preview_surface.mtlx', build_usd_preview_surface),
 ]
 
 

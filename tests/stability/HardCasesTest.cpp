@@ -44,7 +44,7 @@ bool lossless(Energy energy, Accuracy accuracy) {
 
 struct HardCase {
   const char* name;
-  const char* model;   ///< "openpbr", "standard" (shading node with `inputs`) or "document" (`inputs` is the body)
+  const char* model;   ///< "openpbr", "standard", "usd" (shading node with `inputs`) or "document" (`inputs` is the body)
   const char* inputs;  ///< <input> elements, or a document body
   Energy energy;
   const char* why;     ///< the expectation and the section of the spec or paper behind it
@@ -143,12 +143,21 @@ const HardCase kCases[] = {
    "the sheen distribution's 1/r exponent at r = 0 (Estevez & Kulla 2017; r clamped to 0.01)"},
   {"ss_diffuse_roughness_1", "standard", R"(<input name="diffuse_roughness" type="float" value="1" /><input name="base_color" type="color3" value="1, 1, 1" /><input name="specular" type="float" value="0" />)", Energy::Bounded,
    "Oren-Nayar at full roughness loses energy without compensation (physics notes 2.1)"},
+  {"usd_roughness_0_white", "usd", R"(<input name="roughness" type="float" value="0" /><input name="diffuseColor" type="color3" value="1, 1, 1" />)", Energy::Bounded,
+   "UsdPreviewSurface: a mirror dielectric over a white Lambertian base (alpha = roughness^2 = 0: the delta lobe)"},
+  {"usd_ior_1_glass", "usd", R"(<input name="ior" type="float" value="1" /><input name="opacity" type="float" value="0" />)", Energy::Bounded,
+   "UsdPreviewSurface transparent mode at IOR 1: the interface vanishes, light passes straight through"},
+  {"usd_metal_white_edge", "usd", R"(<input name="metallic" type="float" value="1" /><input name="diffuseColor" type="color3" value="1, 1, 1" /><input name="roughness" type="float" value="1" />)", Energy::Bounded,
+   "UsdPreviewSurface metal of F0 = 1: Schlick is 1 at every angle, a rough GGX lobe loses energy but never gains"},
+  {"usd_specular_workflow_coat", "usd", R"(<input name="useSpecularWorkflow" type="integer" value="1" /><input name="specularColor" type="color3" value="1, 1, 1" /><input name="clearcoat" type="float" value="1" /><input name="clearcoatRoughness" type="float" value="0" />)", Energy::Bounded,
+   "UsdPreviewSurface specular workflow of F0 = 1 under a mirror coat of IOR 1.5"},
 };
 // clang-format on
 
 std::string document(const HardCase& c) {
   if (std::string(c.model) == "document") return mtlx(c.inputs);
-  const std::string node = std::string(c.model) == "openpbr" ? "open_pbr_surface" : "standard_surface";
+  const std::string model = c.model;
+  const std::string node = model == "openpbr" ? "open_pbr_surface" : model == "usd" ? "UsdPreviewSurface" : "standard_surface";
   return mtlx(fmt::format("  <{0} name=\"s\" type=\"surfaceshader\">\n    {1}\n  </{0}>\n"
                           "  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
                           "type=\"surfaceshader\" nodename=\"s\" /></surfacematerial>\n",

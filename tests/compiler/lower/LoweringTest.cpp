@@ -69,6 +69,7 @@ std::string in(const std::string& name, const std::string& type, const std::stri
 }
 
 std::vector<float> constant(const ir::Material& m, ir::ExprId e) {
+  if (e == ir::kNoExpr) return {};  // an absent slot
   std::optional<ir::Constant> c = ir::evaluateExpr(m.exprs, e);
   return c ? c->v : std::vector<float>{};
 }
@@ -138,6 +139,60 @@ TEST(Lowering, AnUnknownColourSpaceIsReportedOnceAndLeftAlone) {
     if (d.message.find("colorspace 'bogus_space' is not one mxc knows") != std::string::npos) ++warnings;
   }
   EXPECT_EQ(warnings, 1) << l.context->diagnostics.format();
+}
+
+std::string usdDocument(const std::string& inputs) {
+  return mtlx("  <UsdPreviewSurface name=\"s\" type=\"surfaceshader\">\n" + inputs +
+              "  </UsdPreviewSurface>\n  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
+              "type=\"surfaceshader\" nodename=\"s\" /></surfacematerial>\n");
+}
+
+TEST(UsdPreviewSurfaceLowering, EachWorkflowAndModeHasItsStructure) {
+  // Metalness workflow, opaque: the dielectric of `ior` over the Lambertian base.
+  Lowered plastic = lower(usdDocument(in("diffuseColor", "color3", "0.2, 0.4, 0.6")));
+  EXPECT_EQ(ir::structureSignature(plastic.only()), "slab(dielectric:RT,-,slab(diffuse,-,-))");
+  const ir::Interface* diffuse = findInterface(plastic.only(), ir::InterfaceKind::Diffuse);
+  ASSERT_NE(diffuse, nullptr);
+  EXPECT_EQ(constant(plastic.only(), diffuse->slots.value(Slot::Color)), (std::vector<float>{0.2f, 0.4f, 0.6f}));
+  // GGX alpha = roughness^2 (the default roughness 0.5).
+  const ir::Interface* spec = findInterface(plastic.only(), ir::InterfaceKind::Dielectric);
+  ASSERT_NE(spec, nullptr);
+  EXPECT_EQ(constant(plastic.only(), spec->slots.value(Slot::Alpha)), (std::vector<float>{0.25f, 0.25f}));
+  // metallic 1: the Schlick reflection from diffuseColor to a white edge, nothing else.
+  Lowered metal = lower(usdDocument(in("metallic", "float", "1") + in("diffuseColor", "color3", "0.9, 0.6, 0.3")));
+  EXPECT_EQ(ir::structureSignature(metal.only()), "slab(schlick:R,-,-)");
+  const ir::Interface* schlick = findInterface(metal.only(), ir::InterfaceKind::Schlick);
+  ASSERT_NE(schlick, nullptr);
+  EXPECT_EQ(constant(metal.only(), schlick->slots.value(Slot::F0)), (std::vector<float>{0.9f, 0.6f, 0.3f}));
+  // A white edge: F90 1, which the passes leave absent (its slotDefault).
+  EXPECT_EQ(schlick->slots.value(Slot::F90), ir::kNoExpr);
+  EXPECT_EQ(ir::slotDefault(Slot::F90), 1.0f);
+  // Transparent mode, opacity 0: the dielectric over a body of its IOR (glass still reflects).
+  Lowered glass = lower(usdDocument(in("opacity", "float", "0") + in("ior", "float", "1.52")));
+  EXPECT_EQ(ir::structureSignature(glass.only()), "slab(dielectric:RT,bulk,-)");
+  EXPECT_EQ(glass.only().nodes[glass.only().root].kind, ir::ScatterKind::Slab);  // refracts; nothing is cut out
+  // Specular workflow: the specular colour's Schlick reflection over the diffuse base.
+  Lowered specular = lower(usdDocument(in("useSpecularWorkflow", "integer", "1") +
+                                      in("specularColor", "color3", "0.05, 0.05, 0.05")));
+  EXPECT_EQ(ir::structureSignature(specular.only()), "slab(schlick:R,-,slab(diffuse,-,-))");
+  // Presence mode: opacity is the coverage (a mix with nothing), not refraction.
+  auto coverage = [](const Lowered& l) {
+    // A mix with nothing weighs the surface; a coverage of 0 or 1 leaves nothing or the surface.
+    const ir::ScatterNode& root = l.only().nodes[l.only().root];
+    if (root.kind == ir::ScatterKind::Mix) return constant(l.only(), root.weight.value);
+    return std::vector<float>{root.kind == ir::ScatterKind::Ambient ? 0.0f : 1.0f};
+  };
+  Lowered presence = lower(usdDocument(in("opacityMode", "integer", "1") + in("opacity", "float", "0.25")));
+  EXPECT_EQ(ir::structureSignature(presence.only()), "mix(ambient,slab(dielectric:RT,-,slab(diffuse,-,-)))");
+  EXPECT_EQ(coverage(presence), std::vector<float>{0.25f});
+  // A threshold cuts out: opacity 0.25 below a threshold of 0.5 covers nothing, 0.75 everything.
+  Lowered cutout = lower(usdDocument(in("opacity", "float", "0.25") + in("opacityThreshold", "float", "0.5")));
+  EXPECT_EQ(coverage(cutout), std::vector<float>{0.0f});
+  Lowered kept = lower(usdDocument(in("opacity", "float", "0.75") + in("opacityThreshold", "float", "0.5")));
+  EXPECT_EQ(coverage(kept), std::vector<float>{1.0f});
+  // A clear coat: a dielectric of IOR 1.5 over the rest.
+  Lowered coated = lower(usdDocument(in("clearcoat", "float", "1")));
+  EXPECT_EQ(ir::structureSignature(coated.only()), "slab(dielectric:RT,-,slab(dielectric:RT,-,slab(diffuse,-,-)))");
 }
 
 TEST(OpenPbrLowering, GlassIsADielectricOverAMedium) {
