@@ -153,5 +153,6 @@ ClosureRule findClosureRule(std::string_view category);
 ir::Index lowerOpenPbrSurface(Context& c, const NodeRef& n);
 ir::Index lowerStandardSurface(Context& c, const NodeRef& n);
 ir::Index lowerUsdPreviewSurface(Context& c, const NodeRef& n);
+ir::Index lowerGltfPbr(Context& c, const NodeRef& n);
 
 }  // namespace mxc::lower

@@ -334,7 +334,7 @@ Closure shadingModel(Context& c, const NodeRef& n, std::string_view output) {
   // mxc's own lowering of the shading models, unless the user asked for their node graphs.
   const std::string_view category = n.node->category();
   if (c.options.useShadingModelGraphs) {
-    if (category != "UsdPreviewSurface") {
+    if (category == "open_pbr_surface" || category == "standard_surface") {
       c.material.thinWalled = c.param(n, category == "open_pbr_surface" ? "geometry_thin_walled" : "thin_walled");
     }
     if (Env* inner = c.inlineImplementation(n)) {
@@ -343,6 +343,7 @@ Closure shadingModel(Context& c, const NodeRef& n, std::string_view output) {
   }
   if (category == "open_pbr_surface") return scatter(lowerOpenPbrSurface(c, n));
   if (category == "UsdPreviewSurface") return scatter(lowerUsdPreviewSurface(c, n));
+  if (category == "gltf_pbr") return scatter(lowerGltfPbr(c, n));
   return scatter(lowerStandardSurface(c, n));
 }
 
@@ -372,6 +373,7 @@ const RuleTable& rules() {
       {"open_pbr_surface", shadingModel},
       {"standard_surface", shadingModel},
       {"UsdPreviewSurface", shadingModel},
+      {"gltf_pbr", shadingModel},
   };
   return table;
 }

@@ -1115,6 +1115,56 @@ def build_usd_preview_surface():
     return L
 
 
+def build_gltf_pbr():
+    L = Library(header(
+        'glTF PBR (nodedef only)', 'libraries/bxdf/gltf_pbr.mtlx', [
+            '',
+            'No nodegraph: mxc lowers gltf_pbr to closures in C++ (compiler/lower/GltfPbrLowering.cpp).',
+            'Source: the glTF 2.0 specification, "Metallic-Roughness Material" and Appendix B,',
+            'and the Khronos extensions KHR_materials_specular, _ior, _transmission, _volume,',
+            '_clearcoat, _sheen, _iridescence, _emissive_strength, _anisotropy and _dispersion:',
+            'their factors, with the defaults the extensions give. attenuation_distance has no',
+            'default: absent, the volume does not absorb (the extension\'s infinity).']))
+    L.section('glTF PBR')
+    inputs = [
+        i('base_color', 'color3', '1, 1, 1', uimin='0, 0, 0', uimax='1, 1, 1'),
+        i('metallic', 'float', '1', uimin='0', uimax='1'),
+        i('roughness', 'float', '1', uimin='0', uimax='1'),
+        i('normal', 'vector3', g='Nworld'),
+        i('tangent', 'vector3', g='Tworld'),
+        i('occlusion', 'float', '1', uimin='0', uimax='1'),
+        i('transmission', 'float', '0', uimin='0', uimax='1'),
+        i('specular', 'float', '1', uimin='0', uimax='1'),
+        i('specular_color', 'color3', '1, 1, 1', uimin='0, 0, 0', uisoftmax='1, 1, 1'),
+        i('ior', 'float', '1.5', u=True, uimin='1', uisoftmax='3'),
+        i('alpha', 'float', '1', uimin='0', uimax='1'),
+        i('alpha_mode', 'integer', '0', u=True, enum='OPAQUE, MASK, BLEND', enumvalues='0, 1, 2'),
+        i('alpha_cutoff', 'float', '0.5', u=True, uimin='0', uimax='1'),
+        i('iridescence', 'float', '0', uimin='0', uimax='1'),
+        i('iridescence_ior', 'float', '1.3', u=True, uimin='1', uisoftmax='3'),
+        i('iridescence_thickness', 'float', '100', uimin='0', uisoftmin='100', uisoftmax='400'),
+        i('sheen_color', 'color3', '0, 0, 0', uimin='0, 0, 0', uimax='1, 1, 1'),
+        i('sheen_roughness', 'float', '0', uimin='0', uimax='1'),
+        i('clearcoat', 'float', '0', uimin='0', uimax='1'),
+        i('clearcoat_roughness', 'float', '0', uimin='0', uimax='1'),
+        i('clearcoat_normal', 'vector3', g='Nworld'),
+        i('emissive', 'color3', '0, 0, 0', uimin='0, 0, 0', uimax='1, 1, 1'),
+        i('emissive_strength', 'float', '1', u=True, uimin='0'),
+        i('thickness', 'float', '0', uimin='0'),
+        i('attenuation_distance', 'float', u=True, uimin='0'),
+        i('attenuation_color', 'color3', '1, 1, 1', u=True, uimin='0, 0, 0', uimax='1, 1, 1'),
+        i('anisotropy_strength', 'float', '0', uimin='0', uimax='1'),
+        i('anisotropy_rotation', 'float', '0', uimin='0', uimax='6.283185'),
+        i('dispersion', 'float', '0', uimin='0', uisoftmax='1.0'),
+    ]
+    inputs = [(tag, {k: v for k, v in attrs.items() if v is not None}) for tag, attrs in inputs]
+    L.elem('nodedef', {'name': 'ND_gltf_pbr_surfaceshader', 'node': 'gltf_pbr', 'nodegroup': 'pbr',
+                       'version': '2.0.1', 'isdefaultversion': 'true', 'doc': 'glTF PBR, version 2.0.1.'},
+           inputs + [('output', {'name': 'out', 'type': SS})])
+    L.count += 1
+    return L
+
+
 # ==========================================================================
 
 OUTPUTS = [
@@ -1126,6 +1176,7 @@ OUTPUTS = [
     ('bxdf/standard_surface.mtlx', build_standard_surface),
     ('bxdf/open_pbr_surface.mtlx', build_open_pbr),
     ('bxdf/usd_preview_surface.mtlx', build_usd_preview_surface),
+    ('bxdf/gltf_pbr.mtlx', build_gltf_pbr),
 ]
 
 

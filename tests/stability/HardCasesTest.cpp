@@ -44,7 +44,7 @@ bool lossless(Energy energy, Accuracy accuracy) {
 
 struct HardCase {
   const char* name;
-  const char* model;   ///< "openpbr", "standard", "usd" (shading node with `inputs`) or "document" (`inputs` is the body)
+  const char* model;   ///< "openpbr", "standard", "usd", "gltf" (shading node with `inputs`) or "document" (`inputs` is the body)
   const char* inputs;  ///< <input> elements, or a document body
   Energy energy;
   const char* why;     ///< the expectation and the section of the spec or paper behind it
@@ -151,13 +151,22 @@ const HardCase kCases[] = {
    "UsdPreviewSurface metal of F0 = 1: Schlick is 1 at every angle, a rough GGX lobe loses energy but never gains"},
   {"usd_specular_workflow_coat", "usd", R"(<input name="useSpecularWorkflow" type="integer" value="1" /><input name="specularColor" type="color3" value="1, 1, 1" /><input name="clearcoat" type="float" value="1" /><input name="clearcoatRoughness" type="float" value="0" />)", Energy::Bounded,
    "UsdPreviewSurface specular workflow of F0 = 1 under a mirror coat of IOR 1.5"},
+  {"gltf_metal_roughness_0_white", "gltf", R"(<input name="roughness" type="float" value="0" />)", Energy::Bounded,
+   "glTF's default metal of F0 = 1 as a mirror (alpha = roughness^2 = 0): a delta lobe, no NaN"},
+  {"gltf_everything", "gltf", R"(<input name="metallic" type="float" value="0" /><input name="transmission" type="float" value="1" /><input name="thickness" type="float" value="1" /><input name="clearcoat" type="float" value="1" /><input name="sheen_color" type="color3" value="1, 1, 1" /><input name="iridescence" type="float" value="1" /><input name="anisotropy_strength" type="float" value="1" /><input name="dispersion" type="float" value="1" />)", Energy::Bounded,
+   "glTF with every extension at full strength: transmission through a dispersive volume, iridescence, sheen, coat, alpha_t = 1"},
+  {"gltf_ior_1_specular_0", "gltf", R"(<input name="metallic" type="float" value="0" /><input name="ior" type="float" value="1" /><input name="specular" type="float" value="0" /><input name="base_color" type="color3" value="1, 1, 1" />)", Energy::Bounded,
+   "KHR_materials_ior at 1 and KHR_materials_specular at 0: no specular reflection over a white base"},
 };
 // clang-format on
 
 std::string document(const HardCase& c) {
   if (std::string(c.model) == "document") return mtlx(c.inputs);
   const std::string model = c.model;
-  const std::string node = model == "openpbr" ? "open_pbr_surface" : model == "usd" ? "UsdPreviewSurface" : "standard_surface";
+  const std::string node = model == "openpbr" ? "open_pbr_surface"
+                           : model == "usd"   ? "UsdPreviewSurface"
+                           : model == "gltf"  ? "gltf_pbr"
+                                              : "standard_surface";
   return mtlx(fmt::format("  <{0} name=\"s\" type=\"surfaceshader\">\n    {1}\n  </{0}>\n"
                           "  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
                           "type=\"surfaceshader\" nodename=\"s\" /></surfacematerial>\n",

@@ -195,6 +195,46 @@ TEST(UsdPreviewSurfaceLowering, EachWorkflowAndModeHasItsStructure) {
   EXPECT_EQ(ir::structureSignature(coated.only()), "slab(dielectric:RT,-,slab(dielectric:RT,-,slab(diffuse,-,-)))");
 }
 
+std::string gltfDocument(const std::string& inputs) {
+  return mtlx("  <gltf_pbr name=\"s\" type=\"surfaceshader\">\n" + inputs +
+              "  </gltf_pbr>\n  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
+              "type=\"surfaceshader\" nodename=\"s\" /></surfacematerial>\n");
+}
+
+TEST(GltfPbrLowering, EachExtensionHasItsPlaceInTheTree) {
+  // The defaults (metallic 1, roughness 1): Appendix B's metal, Schlick from base_color.
+  Lowered metal = lower(gltfDocument(""));
+  EXPECT_EQ(ir::structureSignature(metal.only()), "slab(schlick:R,-,-)");
+  // A dielectric: the interface of `ior` over the Lambertian base, alpha = roughness^2.
+  Lowered plastic = lower(gltfDocument(in("metallic", "float", "0") + in("roughness", "float", "0.5")));
+  EXPECT_EQ(ir::structureSignature(plastic.only()), "slab(dielectric:RT,-,slab(diffuse,-,-))");
+  const ir::Interface* spec = findInterface(plastic.only(), ir::InterfaceKind::Dielectric);
+  ASSERT_NE(spec, nullptr);
+  EXPECT_EQ(constant(plastic.only(), spec->slots.value(Slot::Alpha)), (std::vector<float>{0.25f, 0.25f}));
+  // KHR_materials_transmission without a volume (thickness 0): thin-walled.
+  Lowered thin = lower(gltfDocument(in("metallic", "float", "0") + in("transmission", "float", "1")));
+  EXPECT_EQ(ir::structureSignature(thin.only()), "slab(dielectric:RT,thin_wall,-)");
+  // With KHR_materials_volume: a bulk absorbing mu_a = -ln(attenuation_color) / attenuation_distance.
+  Lowered volume = lower(gltfDocument(in("metallic", "float", "0") + in("transmission", "float", "1") +
+                                      in("thickness", "float", "1") + in("attenuation_distance", "float", "2") +
+                                      in("attenuation_color", "color3", "0.5, 0.5, 0.5")));
+  EXPECT_EQ(ir::structureSignature(volume.only()), "slab(dielectric:RT,bulk,-)");
+  const ir::Medium* bulk = findMedium(volume.only(), ir::Medium::Extent::Bulk);
+  ASSERT_NE(bulk, nullptr);
+  EXPECT_NEAR(constant(volume.only(), bulk->slots.value(Slot::Absorption))[0], -std::log(0.5f) / 2.0f, 1e-6f);
+  // KHR_materials_clearcoat over KHR_materials_sheen over the base.
+  Lowered layered = lower(gltfDocument(in("metallic", "float", "0") + in("clearcoat", "float", "1") +
+                                       in("sheen_color", "color3", "0.5, 0.5, 0.5")));
+  EXPECT_EQ(ir::structureSignature(layered.only()),
+            "slab(dielectric:RT,-,slab(sheen,-,slab(dielectric:RT,-,slab(diffuse,-,-))))");
+  // KHR_materials_iridescence: a film on the base interface.
+  Lowered film = lower(gltfDocument(in("iridescence", "float", "1") + in("iridescence_thickness", "float", "400")));
+  EXPECT_NE(film.effect("thin_film"), nullptr);
+  // alpha_mode MASK: alpha below the cutoff covers nothing.
+  Lowered masked = lower(gltfDocument(in("alpha_mode", "integer", "1") + in("alpha", "float", "0.25")));
+  EXPECT_EQ(masked.only().nodes[masked.only().root].kind, ir::ScatterKind::Ambient);
+}
+
 TEST(OpenPbrLowering, GlassIsADielectricOverAMedium) {
   Lowered l = lowerFile("corpus/materialx/examples/OpenPbr/open_pbr_glass.mtlx");
   EXPECT_EQ(ir::structureSignature(l.only()), "slab(dielectric:RT,bulk,-)");
