@@ -25,6 +25,7 @@
 #include "compiler/lower/Context.h"
 #include "compiler/lower/Media.h"
 #include "compiler/lower/Microfacet.h"
+#include "compiler/lower/ShadingModel.h"
 
 namespace mxc::lower {
 
@@ -36,25 +37,7 @@ using ir::Type;
 
 namespace {
 
-struct GltfPbr {
-  Context& c;
-  const NodeRef& n;
-  ir::ExprBuilder& b;
-
-  Param p(std::string_view name) { return c.param(n, name); }
-  Param clamped01(std::string_view name) {
-    Param x = p(name);
-    x.value = b.clamp01(x.value);
-    return x;
-  }
-  Param nonNegative(std::string_view name) {
-    Param x = p(name);
-    x.value = b.nonNegative(x.value);
-    return x;
-  }
-  ir::Origin at(std::string_view input) { return c.origin(n, input); }
-  bool isConstant(const Param& x, float value) { return c.material.exprs.isConstantEqual(x.value, value); }
-
+struct GltfPbr : ShadingModelInputs {
   /// GGX alpha (alpha_t, alpha_b) from roughness^2; KHR_materials_anisotropy stretches alpha_t
   /// towards 1 by strength^2.
   Param specularAlpha() {
@@ -228,7 +211,7 @@ struct GltfPbr {
 }  // namespace
 
 Index lowerGltfPbr(Context& c, const NodeRef& n) {
-  GltfPbr model{c, n, c.b};
+  GltfPbr model{{c, n, c.b}};
   return model.lower();
 }
 

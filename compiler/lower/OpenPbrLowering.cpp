@@ -18,6 +18,7 @@
 #include "compiler/lower/Layering.h"
 #include "compiler/lower/Media.h"
 #include "compiler/lower/Microfacet.h"
+#include "compiler/lower/ShadingModel.h"
 
 namespace mxc::lower {
 
@@ -29,27 +30,8 @@ using ir::Type;
 
 namespace {
 
-struct OpenPbr {
-  Context& c;
-  const NodeRef& n;
-  ir::ExprBuilder& b;
-
-  Param p(std::string_view name) { return c.param(n, name); }
-  /// A parameter clamped to its specified range [lo, hi] (OpenPBR "Parameter reference").
-  Param clamped(std::string_view name, float lo, float hi) {
-    Param x = p(name);
-    x.value = b.clamp(x.value, b.f(lo), b.f(hi));
-    return x;
-  }
-  Param nonNegative(std::string_view name) {
-    Param x = p(name);
-    x.value = b.nonNegative(x.value);
-    return x;
-  }
-  ir::Origin at(std::string_view input) { return c.origin(n, input); }
-
-  bool isConstant(const Param& x, float value) { return c.material.exprs.isConstantEqual(x.value, value); }
-
+// The input ranges clamped to are OpenPBR's "Parameter reference".
+struct OpenPbr : ShadingModelInputs {
   /// OpenPBR "Darkening" needs two properties of the base under the coat, estimated from the
   /// parameters. E_b, its albedo at normal incidence: the metal's F0 = base_weight * base_color,
   /// else the dielectric's diffuse albedo (base_weight * base_color, or subsurface_color as
@@ -299,7 +281,7 @@ struct OpenPbr {
 }  // namespace
 
 Index lowerOpenPbrSurface(Context& c, const NodeRef& n) {
-  OpenPbr model{c, n, c.b};
+  OpenPbr model{{c, n, c.b}};
   return model.lower();
 }
 

@@ -19,6 +19,7 @@
 #include "compiler/lower/Context.h"
 #include "compiler/lower/Media.h"
 #include "compiler/lower/Microfacet.h"
+#include "compiler/lower/ShadingModel.h"
 
 namespace mxc::lower {
 
@@ -30,25 +31,7 @@ using ir::Type;
 
 namespace {
 
-struct StandardSurface {
-  Context& c;
-  const NodeRef& n;
-  ir::ExprBuilder& b;
-
-  Param p(std::string_view name) { return c.param(n, name); }
-  Param clamped(std::string_view name, float lo, float hi) {
-    Param x = p(name);
-    x.value = b.clamp(x.value, b.f(lo), b.f(hi));
-    return x;
-  }
-  Param nonNegative(std::string_view name) {
-    Param x = p(name);
-    x.value = b.nonNegative(x.value);
-    return x;
-  }
-  ir::Origin at(std::string_view input) { return c.origin(n, input); }
-  bool isConstant(const Param& x, float value) { return c.material.exprs.isConstantEqual(x.value, value); }
-
+struct StandardSurface : ShadingModelInputs {
   /// The coat's effect on the colours under it (Standard Surface "Coating"): colours are
   /// raised to the power 1 + coat_affect_color * coat; max(colour, 0) keeps pow defined.
   ExprId coatAffected(std::string_view color) {
@@ -247,7 +230,7 @@ struct StandardSurface {
 }  // namespace
 
 Index lowerStandardSurface(Context& c, const NodeRef& n) {
-  StandardSurface model{c, n, c.b};
+  StandardSurface model{{c, n, c.b}};
   return model.lower();
 }
 

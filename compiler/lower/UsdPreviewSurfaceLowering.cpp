@@ -23,6 +23,7 @@
 #include "compiler/lower/Context.h"
 #include "compiler/lower/Media.h"
 #include "compiler/lower/Microfacet.h"
+#include "compiler/lower/ShadingModel.h"
 
 namespace mxc::lower {
 
@@ -34,20 +35,8 @@ using ir::Type;
 
 namespace {
 
-struct UsdPreviewSurface {
-  Context& c;
-  const NodeRef& n;
-  ir::ExprBuilder& b;
+struct UsdPreviewSurface : ShadingModelInputs {
   Param normal;  // the shading normal, from the tangent-space `normal` input
-
-  Param p(std::string_view name) { return c.param(n, name); }
-  Param clamped01(std::string_view name) {
-    Param x = p(name);
-    x.value = b.clamp01(x.value);
-    return x;
-  }
-  ir::Origin at(std::string_view input) { return c.origin(n, input); }
-  bool isConstant(const Param& x, float value) { return c.material.exprs.isConstantEqual(x.value, value); }
 
   /// GGX alpha = roughness^2, isotropic (the spec's squaring; burleyAlpha with no anisotropy).
   Param alpha(std::string_view roughness) { return {burleyAlpha(b, clamped01(roughness).value, b.f(0.0f)), at(roughness)}; }
@@ -197,7 +186,7 @@ struct UsdPreviewSurface {
 }  // namespace
 
 Index lowerUsdPreviewSurface(Context& c, const NodeRef& n) {
-  UsdPreviewSurface model{c, n, c.b, {}};
+  UsdPreviewSurface model{{c, n, c.b}, {}};
   return model.lower();
 }
 
