@@ -337,6 +337,36 @@ ExprId normalmap(Context& c, const NodeRef& n, std::string_view, Type) {
                              {in(c, n, "in"), scale, in(c, n, "normal"), in(c, n, "tangent"), in(c, n, "bitangent")});
 }
 
+// --- Procedural 2D shapes and waves (MaterialX 1.39 "Procedural Nodes"; each formula is that
+// of MaterialX's own definition, libraries/stdlib/stdlib_ng.mtlx) ---
+
+ExprId ramp4(Context& c, const NodeRef& n, std::string_view, Type) {
+  // Bilinear in the texture coordinate clamped to [0, 1]^2: s from left to right, t from
+  // bottom to top.
+  ExprId st = c.b.clamp(in(c, n, "texcoord"), c.b.f(0.0f), c.b.f(1.0f));
+  ExprId s = c.b.extract(st, 0);
+  ExprId t = c.b.extract(st, 1);
+  ExprId top = c.b.lerp(in(c, n, "valuetl"), in(c, n, "valuetr"), s);
+  ExprId bottom = c.b.lerp(in(c, n, "valuebl"), in(c, n, "valuebr"), s);
+  return c.b.lerp(bottom, top, t);
+}
+ExprId line(Context& c, const NodeRef& n, std::string_view, Type) {
+  // 1 within `radius` of the segment point1-point2 (about `center`), else 0: the distance to
+  // the segment is |p - a - (b - a) h|, h the clamped projection. A zero-length segment has
+  // |b - a|^2 = 0: the division is guarded (h then 0, the distance to the point).
+  ExprId p = c.b.sub(in(c, n, "texcoord"), in(c, n, "center"));
+  ExprId pa = c.b.sub(p, in(c, n, "point1"));
+  ExprId ba = c.b.sub(in(c, n, "point2"), in(c, n, "point1"));
+  ExprId h = c.b.clamp(c.b.safeDiv(c.b.dot(pa, ba), c.b.dot(ba, ba), 1e-12f), c.b.f(0.0f), c.b.f(1.0f));
+  ExprId distance = c.material.exprs.op(Op::Length, Type::Float, {c.b.sub(pa, c.b.mul(ba, h))});
+  return c.b.select(c.b.greater(distance, in(c, n, "radius")), c.b.f(0.0f), c.b.f(1.0f));
+}
+ExprId trianglewave(Context& c, const NodeRef& n, std::string_view, Type) {
+  // Period 1, 0 at the integers and 0.5 half-way: 0.5 - |mod(|x|, 1) - 0.5|.
+  ExprId x = c.b.mod(c.b.abs(in(c, n, "in")), c.b.f(1.0f));
+  return c.b.sub(c.b.f(0.5f), c.b.abs(c.b.sub(x, c.b.f(0.5f))));
+}
+
 ExprId heighttonormal(Context& c, const NodeRef& n, std::string_view, Type) {
   return c.material.exprs.op(Op::HeightToNormal, Type::Vec3, {in(c, n, "in"), in(c, n, "scale"), in(c, n, "texcoord")});
 }
@@ -553,6 +583,9 @@ const RuleTable& rules() {
       {"place2d", place2d},
       {"normalmap", normalmap},
       {"heighttonormal", heighttonormal},
+      {"ramp4", ramp4},
+      {"line", line},
+      {"trianglewave", trianglewave},
       {"bump", bump},
       {"noise2d", noise2d},
       {"noise3d", noise3d},

@@ -1,0 +1,87 @@
+// Value-node rules (compiler/lower/StdlibRules.cpp) against the formulas of MaterialX's own
+// definitions (libraries/stdlib/stdlib_ng.mtlx): each node's output, for constant inputs, folds
+// to the value the definition gives.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "compiler/ir/Evaluate.h"
+#include "compiler/driver/Compiler.h"
+#include "support/TestSupport.h"
+
+namespace mxc::test {
+namespace {
+
+/// The colour a value node `node` (its elements, the node named "v") gives, seen through an
+/// unlit surface's emission colour (a float result converted to color3).
+std::vector<float> valueOf(const std::string& node, const std::string& type) {
+  const std::string convert = type == "color3" ? "" :
+      "  <convert name=\"c\" type=\"color3\"><input name=\"in\" type=\"" + type + "\" nodename=\"v\"/></convert>\n";
+  const std::string source = type == "color3" ? "v" : "c";
+  Context context;
+  CompileRequest request;
+  request.document = "test.mtlx";
+  request.text = mtlx(node + convert + "  <surface_unlit name=\"surf\" type=\"surfaceshader\">\n"
+                    "    <input name=\"emission_color\" type=\"color3\" nodename=\"" + source + "\"/>\n"
+                    "  </surface_unlit>\n  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
+                    "type=\"surfaceshader\" nodename=\"surf\"/></surfacematerial>\n");
+  Compiler compiler(context, std::move(request));
+  std::vector<ir::Material> materials = std::move(compiler.materials());
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  if (materials.empty()) return {};
+  const ir::Material& m = materials[0];
+  // A black emission is removed by the passes (dark emission): the value was 0.
+  if (m.emissions.empty()) return {0.0f, 0.0f, 0.0f};
+  std::optional<ir::Constant> c = ir::evaluateExpr(m.exprs, m.emissions[0].slots.value(ir::Slot::Color));
+  return c ? c->v : std::vector<float>{};
+}
+
+float floatOf(const std::string& node) {
+  std::vector<float> v = valueOf(node, "float");
+  return v.empty() ? NAN : v[0];
+}
+
+TEST(StdlibRules, TriangleWaveHasPeriodOneAndPeaksAtTheHalves) {
+  auto wave = [](float x) {
+    return floatOf("  <trianglewave name=\"v\" type=\"float\"><input name=\"in\" type=\"float\" value=\"" +
+                   std::to_string(x) + "\"/></trianglewave>\n");
+  };
+  EXPECT_NEAR(wave(0.0f), 0.0f, 1e-6f);
+  EXPECT_NEAR(wave(0.25f), 0.25f, 1e-6f);
+  EXPECT_NEAR(wave(0.5f), 0.5f, 1e-6f);
+  EXPECT_NEAR(wave(1.25f), 0.25f, 1e-6f);
+  EXPECT_NEAR(wave(-0.25f), 0.25f, 1e-6f);  // |x|: symmetric about 0
+}
+
+TEST(StdlibRules, Ramp4IsBilinearInTheClampedTextureCoordinate) {
+  auto ramp = [](const std::string& texcoord) {
+    return floatOf("  <ramp4 name=\"v\" type=\"float\">\n"
+                   "    <input name=\"valuetl\" type=\"float\" value=\"1\"/><input name=\"valuetr\" type=\"float\" value=\"2\"/>\n"
+                   "    <input name=\"valuebl\" type=\"float\" value=\"3\"/><input name=\"valuebr\" type=\"float\" value=\"4\"/>\n"
+                   "    <input name=\"texcoord\" type=\"vector2\" value=\"" + texcoord + "\"/>\n  </ramp4>\n");
+  };
+  EXPECT_NEAR(ramp("0, 1"), 1.0f, 1e-6f);   // top left
+  EXPECT_NEAR(ramp("1, 1"), 2.0f, 1e-6f);   // top right
+  EXPECT_NEAR(ramp("0, 0"), 3.0f, 1e-6f);   // bottom left
+  EXPECT_NEAR(ramp("1, 0"), 4.0f, 1e-6f);   // bottom right
+  EXPECT_NEAR(ramp("0.5, 0.5"), 2.5f, 1e-6f);
+  EXPECT_NEAR(ramp("2, -1"), 4.0f, 1e-6f);  // clamped to the square
+}
+
+TEST(StdlibRules, LineIsOneWithinTheRadiusOfTheSegment) {
+  auto line = [](const std::string& texcoord, const std::string& point2 = "0.75, 0.75") {
+    return floatOf("  <line name=\"v\" type=\"float\">\n"
+                   "    <input name=\"texcoord\" type=\"vector2\" value=\"" + texcoord + "\"/>\n"
+                   "    <input name=\"point2\" type=\"vector2\" value=\"" + point2 + "\"/>\n  </line>\n");
+  };
+  EXPECT_EQ(line("0.5, 0.5"), 1.0f);    // on the segment from (0.25, 0.25) to (0.75, 0.75)
+  EXPECT_EQ(line("0.55, 0.5"), 1.0f);   // 0.035 from it, within the radius 0.1
+  EXPECT_EQ(line("0.7, 0.5"), 0.0f);    // 0.14 from it
+  EXPECT_EQ(line("0.9, 0.9"), 0.0f);    // beyond the end point: 0.21 from it
+  EXPECT_EQ(line("0.8, 0.8"), 1.0f);    // beyond the end point: 0.07 from it
+  EXPECT_EQ(line("0.3, 0.25", "0.25, 0.25"), 1.0f);  // a segment of length 0: a disc about the point
+}
+
+}  // namespace
+}  // namespace mxc::test
