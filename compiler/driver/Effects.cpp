@@ -12,7 +12,8 @@ using ir::Effect;
 
 /// The inputs of a shading model that switch an effect on: when the effect is dropped, their
 /// values say why. The models' own specifications name them (OpenPBR 1.1 "Parameters";
-/// Autodesk Standard Surface 1.0 "Parameters").
+/// Autodesk Standard Surface 1.0 "Parameters"; UsdPreviewSurface 2.6 "Preview Surface"; glTF 2.0
+/// and its KHR material extensions).
 struct EffectInputs {
   std::string_view shader;
   Effect effect;
@@ -48,6 +49,26 @@ constexpr EffectInputs kEffectInputs[] = {
     {"standard_surface", Effect::Emission, {"emission", "emission_color"}},
     {"standard_surface", Effect::Opacity, {"opacity"}},
     {"standard_surface", Effect::ThinWalled, {"thin_walled"}},
+    {"UsdPreviewSurface", Effect::Diffuse, {"metallic", "useSpecularWorkflow", "opacity"}},
+    {"UsdPreviewSurface", Effect::Metal, {"metallic", "useSpecularWorkflow"}},
+    {"UsdPreviewSurface", Effect::Specular, {"metallic", "useSpecularWorkflow"}},
+    {"UsdPreviewSurface", Effect::Transmission, {"opacity", "opacityMode", "opacityThreshold"}},
+    {"UsdPreviewSurface", Effect::Coat, {"clearcoat"}},
+    {"UsdPreviewSurface", Effect::Emission, {"emissiveColor"}},
+    {"UsdPreviewSurface", Effect::Opacity, {"opacity", "opacityMode", "opacityThreshold"}},
+    {"gltf_pbr", Effect::Diffuse, {"metallic", "transmission"}},
+    {"gltf_pbr", Effect::Metal, {"metallic"}},
+    {"gltf_pbr", Effect::Specular, {"specular", "metallic"}},
+    {"gltf_pbr", Effect::Anisotropy, {"anisotropy_strength"}},
+    {"gltf_pbr", Effect::Transmission, {"transmission"}},
+    {"gltf_pbr", Effect::Volume, {"thickness", "attenuation_distance", "attenuation_color"}},
+    {"gltf_pbr", Effect::Dispersion, {"dispersion"}},
+    {"gltf_pbr", Effect::Coat, {"clearcoat"}},
+    {"gltf_pbr", Effect::Sheen, {"sheen_color"}},
+    {"gltf_pbr", Effect::ThinFilm, {"iridescence"}},
+    {"gltf_pbr", Effect::Emission, {"emissive", "emissive_strength"}},
+    {"gltf_pbr", Effect::Opacity, {"alpha_mode", "alpha"}},
+    {"gltf_pbr", Effect::ThinWalled, {"thickness"}},
 };
 
 const EffectInputs* effectInputs(std::string_view shader, Effect effect) {
