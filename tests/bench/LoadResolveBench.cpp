@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
   const double brick = reporter.seconds("BM_ResolveBrickProcedural");
   if (builtin > 0 && materialx > 0 && openpbr > 0) {
     std::printf("\nsummary:\n");
-    std::printf("  load built-in library (774 nodedefs)        %8.2f ms\n", builtin * 1e3);
+    std::printf("  load built-in library (776 nodedefs)        %8.2f ms\n", builtin * 1e3);
     std::printf("  load MaterialX library folder (36 files)    %8.2f ms   (%.2fx the built-in load)\n", materialx * 1e3,
                 materialx / builtin);
     std::printf("  open_pbr_default: load + resolve            %8.1f us   (%.3fx the library load)\n", openpbr * 1e6,
