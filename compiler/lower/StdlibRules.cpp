@@ -361,6 +361,36 @@ ExprId line(Context& c, const NodeRef& n, std::string_view, Type) {
   ExprId distance = c.material.exprs.op(Op::Length, Type::Float, {c.b.sub(pa, c.b.mul(ba, h))});
   return c.b.select(c.b.greater(distance, in(c, n, "radius")), c.b.f(0.0f), c.b.f(1.0f));
 }
+ExprId circle(Context& c, const NodeRef& n, std::string_view, Type) {
+  // 1 inside the disc of `radius` about `center`: |p - center|^2 <= radius^2.
+  ExprId d = c.b.sub(in(c, n, "texcoord"), in(c, n, "center"));
+  ExprId radius = in(c, n, "radius");
+  return c.b.select(c.b.greater(c.b.dot(d, d), c.b.mul(radius, radius)), c.b.f(0.0f), c.b.f(1.0f));
+}
+ExprId checkerboard(Context& c, const NodeRef& n, std::string_view, Type) {
+  // color1 on the cells where floor(u') + floor(v') is odd, color2 on the others, for
+  // (u', v') = texcoord * uvtiling - uvoffset.
+  ExprId uv = c.b.sub(c.b.mul(in(c, n, "texcoord"), in(c, n, "uvtiling")), in(c, n, "uvoffset"));
+  ExprId cells = c.b.unary(Op::Floor, uv);
+  ExprId odd = c.b.mod(c.b.add(c.b.extract(cells, 0), c.b.extract(cells, 1)), c.b.f(2.0f));
+  return c.b.lerp(in(c, n, "color2"), in(c, n, "color1"), odd);
+}
+ExprId grid(Context& c, const NodeRef& n, std::string_view, Type) {
+  // Lines of width `thickness` (in cell units) on the cell edges of texcoord * uvtiling -
+  // uvoffset: a coordinate is on a line where |2 mod(x, 1) - 1| > 1 - thickness. Staggered rows
+  // (odd ones, mod(y, 2) > 1) shift by half a cell along x.
+  ExprId uv = c.b.sub(c.b.mul(in(c, n, "texcoord"), in(c, n, "uvtiling")), in(c, n, "uvoffset"));
+  ExprId x = c.b.extract(uv, 0);
+  ExprId y = c.b.extract(uv, 1);
+  ExprId shift = c.b.select(c.b.greater(c.b.mod(y, c.b.f(2.0f)), c.b.f(1.0f)), c.b.f(0.5f), c.b.f(0.0f));
+  x = c.b.select(in(c, n, "staggered"), c.b.add(x, shift), x);
+  ExprId limit = c.b.sub(c.b.f(1.0f), in(c, n, "thickness"));
+  auto onLine = [&](ExprId t) {
+    ExprId edge = c.b.abs(c.b.sub(c.b.mul(c.b.mod(t, c.b.f(1.0f)), c.b.f(2.0f)), c.b.f(1.0f)));
+    return c.b.select(c.b.greater(edge, limit), c.b.f(1.0f), c.b.f(0.0f));
+  };
+  return c.b.splat(c.b.max(onLine(x), onLine(y)), Type::Vec3);
+}
 ExprId trianglewave(Context& c, const NodeRef& n, std::string_view, Type) {
   // Period 1, 0 at the integers and 0.5 half-way: 0.5 - |mod(|x|, 1) - 0.5|.
   ExprId x = c.b.mod(c.b.abs(in(c, n, "in")), c.b.f(1.0f));
@@ -586,6 +616,9 @@ const RuleTable& rules() {
       {"ramp4", ramp4},
       {"line", line},
       {"trianglewave", trianglewave},
+      {"circle", circle},
+      {"checkerboard", checkerboard},
+      {"grid", grid},
       {"bump", bump},
       {"noise2d", noise2d},
       {"noise3d", noise3d},

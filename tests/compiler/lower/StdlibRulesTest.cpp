@@ -83,5 +83,45 @@ TEST(StdlibRules, LineIsOneWithinTheRadiusOfTheSegment) {
   EXPECT_EQ(line("0.3, 0.25", "0.25, 0.25"), 1.0f);  // a segment of length 0: a disc about the point
 }
 
+TEST(StdlibRules, CircleAndCheckerboard) {
+  auto circle = [](const std::string& texcoord) {
+    return floatOf("  <circle name=\"v\" type=\"float\">\n"
+                   "    <input name=\"texcoord\" type=\"vector2\" value=\"" + texcoord + "\"/>\n"
+                   "    <input name=\"center\" type=\"vector2\" value=\"0.5, 0.5\"/>\n"
+                   "    <input name=\"radius\" type=\"float\" value=\"0.25\"/>\n  </circle>\n");
+  };
+  EXPECT_EQ(circle("0.5, 0.5"), 1.0f);
+  EXPECT_EQ(circle("0.7, 0.5"), 1.0f);
+  EXPECT_EQ(circle("0.7, 0.7"), 0.0f);  // 0.28 from the centre
+  auto checker = [](const std::string& texcoord) {
+    return valueOf("  <checkerboard name=\"v\" type=\"color3\">\n"
+                   "    <input name=\"color1\" type=\"color3\" value=\"1, 0.5, 0.25\"/>\n"
+                   "    <input name=\"color2\" type=\"color3\" value=\"0.1, 0.1, 0.1\"/>\n"
+                   "    <input name=\"texcoord\" type=\"vector2\" value=\"" + texcoord + "\"/>\n  </checkerboard>\n",
+                   "color3");
+  };
+  // The default tiling is 8 cells per unit: (0.01, 0.01) is in cell (0, 0), (0.13, 0.01) in (1, 0).
+  EXPECT_EQ(checker("0.01, 0.01"), (std::vector<float>{0.1f, 0.1f, 0.1f}));
+  EXPECT_EQ(checker("0.13, 0.01"), (std::vector<float>{1.0f, 0.5f, 0.25f}));
+  EXPECT_EQ(checker("0.13, 0.13"), (std::vector<float>{0.1f, 0.1f, 0.1f}));
+}
+
+TEST(StdlibRules, GridLinesOnTheCellEdgesAndStaggeredRows) {
+  auto grid = [](const std::string& texcoord, bool staggered) {
+    return valueOf(std::string("  <grid name=\"v\" type=\"color3\">\n") +
+                       "    <input name=\"texcoord\" type=\"vector2\" value=\"" + texcoord + "\"/>\n" +
+                       "    <input name=\"staggered\" type=\"boolean\" value=\"" + (staggered ? "true" : "false") +
+                       "\"/>\n  </grid>\n",
+                   "color3")[0];
+  };
+  // thickness 0.05: a line where |2 mod(x, 1) - 1| > 0.95, i.e. within 0.025 of a cell edge.
+  EXPECT_EQ(grid("0.5, 0.5", false), 0.0f);
+  EXPECT_EQ(grid("0.99, 0.5", false), 1.0f);
+  EXPECT_EQ(grid("0.5, 0.01", false), 1.0f);
+  // Row 1 (1 < v < 2) is shifted by half a cell when staggered: u = 0.49 lands on an edge.
+  EXPECT_EQ(grid("0.49, 1.5", false), 0.0f);
+  EXPECT_EQ(grid("0.49, 1.5", true), 1.0f);
+}
+
 }  // namespace
 }  // namespace mxc::test
