@@ -31,8 +31,7 @@ MaterialResources::MaterialResources(VulkanContext& context, const glsl::Materia
     } else {
       // An sRGB-encoded colour space (srgb_texture, srgb_displayp3): the device decodes the
       // texels; the shader converts the primaries (compiler/lower/StdlibRules.cpp).
-      const ColorSpace* space = findColorSpace(t.colorspace);
-      texture = cache.get(path, space && space->encoding == Encoding::Srgb);
+      texture = cache.get(path, deviceDecodes(t.colorspace));
       for (const std::string& w : texture->warnings()) diagnostics.warning(t.origin, w);
       if (!texture->error().empty()) {
         diagnostics.warning(t.origin, texture->error() + ": the image node's default value is used");

@@ -1,7 +1,6 @@
 #include "compiler/common/ColorSpace.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include <glm/glm.hpp>
 
@@ -135,18 +134,9 @@ glm::mat3 primariesConversion(Primaries from, Primaries to) {
   return glm::mat3(glm::inverse(rgbToXyz(to)) * toXyz);
 }
 
-float decodeComponent(const ColorSpace& space, float value) {
-  switch (space.encoding) {
-    case Encoding::Linear: return value;
-    case Encoding::Srgb:
-      // IEC 61966-2-1: linear below 0.04045 (negative values too); the power branch's base is
-      // above (0.04045 + 0.055) / 1.055 > 0 there.
-      return value <= 0.04045f ? value / 12.92f : std::pow((value + 0.055f) / 1.055f, 2.4f);
-    case Encoding::Gamma:
-      // max(v, 0): a power of a negative base is undefined; MaterialX's cmlib clamps the same way.
-      return std::pow(std::max(value, 0.0f), space.gamma);
-  }
-  return value;
+bool deviceDecodes(std::string_view name) {
+  const ColorSpace* space = findColorSpace(name);
+  return space && space->encoding == Encoding::Srgb;
 }
 
 }  // namespace mxc

@@ -46,7 +46,9 @@ std::vector<std::string_view> linearColorSpaceNames();
 /// points differ (as ACES and MaterialX's cmlib convert between D60 and D65).
 glm::mat3 primariesConversion(Primaries from, Primaries to);
 
-/// Linear light of one encoded component (the decoding of `space`'s encoding).
-float decodeComponent(const ColorSpace& space, float value);
+/// True when the texels of a colour texture in the space named `name` are decoded by the device
+/// (an sRGB-encoded space, read through an sRGB format): the renderer picks the format and the
+/// lowering leaves the decoding out of the shader by this one rule.
+bool deviceDecodes(std::string_view name);
 
 }  // namespace mxc

@@ -246,8 +246,7 @@ std::string texelSpace(Context& c, const NodeRef& n, Type type) {
 /// (the renderer reads it through an sRGB format, runtime/MaterialResources.cpp), so only its
 /// primaries are left to convert here.
 ExprId texelsToWorkingSpace(Context& c, const NodeRef& n, ExprId sampled, const std::string& space) {
-  const ColorSpace* cs = findColorSpace(space);
-  return c.toWorkingSpace(sampled, space, c.origin(n, "file").location, cs && cs->encoding == Encoding::Srgb);
+  return c.toWorkingSpace(sampled, space, c.origin(n, "file").location, deviceDecodes(space));
 }
 /// A UDIM tile set (Context::udimTiles): each tile sampled over its own unit square of texture
 /// space (clamped there: tile edges are the set's seams), the one under `uv` chosen; outside

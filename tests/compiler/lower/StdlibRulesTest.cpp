@@ -1,6 +1,6 @@
 // Value-node rules (compiler/lower/StdlibRules.cpp) against the formulas of MaterialX's own
 // definitions (libraries/stdlib/stdlib_ng.mtlx): each node's output, for constant inputs, folds
-// to the value the definition gives.
+// to the value the definition gives; and the colour spaces of the values they read.
 
 #include <gtest/gtest.h>
 
@@ -121,6 +121,29 @@ TEST(StdlibRules, GridLinesOnTheCellEdgesAndStaggeredRows) {
   // Row 1 (1 < v < 2) is shifted by half a cell when staggered: u = 0.49 lands on an edge.
   EXPECT_EQ(grid("0.49, 1.5", false), 0.0f);
   EXPECT_EQ(grid("0.49, 1.5", true), 1.0f);
+}
+
+// The encodings of colour values, decoded by the lowering and folded at compile time
+// (compiler/lower/Context.cpp, toWorkingSpace). Grey stays grey through a primaries conversion
+// (white maps to white), so each channel is the decoded value.
+TEST(StdlibRules, ColourValuesAreDecodedFromTheirEncoding) {
+  auto decoded = [](const std::string& value, const std::string& space, float plus = 0.0f) {
+    std::vector<float> v = valueOf("  <add name=\"v\" type=\"color3\">\n"
+                                   "    <input name=\"in1\" type=\"color3\" value=\"" + value + ", " + value + ", " +
+                                       value + "\" colorspace=\"" + space + "\"/>\n"
+                                   "    <input name=\"in2\" type=\"float\" value=\"" + std::to_string(plus) +
+                                       "\"/>\n  </add>\n",
+                                   "color3");
+    return v.size() == 3 ? v[0] : NAN;
+  };
+  // IEC 61966-2-1: 0.5 encodes 0.21404 linear; the linear segment below 0.04045.
+  EXPECT_NEAR(decoded("0.5", "srgb_texture"), 0.214041f, 1e-5f);
+  EXPECT_NEAR(decoded("0.02", "srgb_texture"), 0.02f / 12.92f, 1e-7f);
+  EXPECT_NEAR(decoded("1", "srgb_texture"), 1.0f, 1e-6f);
+  // Adobe RGB's exponent 563/256 (MaterialX cmlib), clamped at 0 before the power: -0.5 is 0,
+  // seen as 1 after adding 1 (a power of -0.5 would not fold, and the value would be missing).
+  EXPECT_NEAR(decoded("0.5", "adobergb"), std::pow(0.5f, 563.0f / 256.0f), 1e-5f);
+  EXPECT_NEAR(decoded("-0.5", "adobergb", 1.0f), 1.0f, 1e-6f);
 }
 
 }  // namespace
