@@ -41,7 +41,8 @@ struct GltfPbr : ShadingModelInputs {
   /// GGX alpha (alpha_t, alpha_b) from roughness^2; KHR_materials_anisotropy stretches alpha_t
   /// towards 1 by strength^2.
   Param specularAlpha() {
-    ExprId alpha = b.mul(clamped01("roughness").value, clamped01("roughness").value);
+    const ExprId roughness = clamped01("roughness").value;
+    ExprId alpha = b.mul(roughness, roughness);
     Param strength = clamped01("anisotropy_strength");
     if (isConstant(p("anisotropy_strength"), 0.0f)) return {b.construct(Type::Vec2, {alpha, alpha}), at("roughness")};
     ExprId alphaT = b.lerp(alpha, b.f(1.0f), b.mul(strength.value, strength.value));
@@ -193,7 +194,8 @@ struct GltfPbr : ShadingModelInputs {
     coat.origin = c.nodeOrigin(n);
     coat.iorReference = ir::IorReference::Ambient;
     coat.slots.set(Slot::Ior, {b.f(1.5f), at("clearcoat")});
-    ExprId coatAlpha = b.mul(clamped01("clearcoat_roughness").value, clamped01("clearcoat_roughness").value);
+    const ExprId coatRoughness = clamped01("clearcoat_roughness").value;
+    ExprId coatAlpha = b.mul(coatRoughness, coatRoughness);
     coat.slots.set(Slot::Alpha, {b.construct(Type::Vec2, {coatAlpha, coatAlpha}), at("clearcoat_roughness")});
     coat.slots.set(Slot::Normal, p("clearcoat_normal"));
     Index coated = c.material.slab(c.material.addInterface(std::move(coat)), ir::kNone, emitting, clamped01("clearcoat"),

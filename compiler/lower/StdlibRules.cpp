@@ -274,20 +274,17 @@ ExprId sampleTiles(Context& c, const NodeRef& n, ExprId uv, Type type, const std
   return result;
 }
 ExprId sample(Context& c, const NodeRef& n, ExprId uv, Type type, std::string_view uaddress, std::string_view vaddress) {
+  std::string filter = c.stringInput(n, "filtertype");
+  if (filter.empty()) filter = "linear";
+  const std::string space = texelSpace(c, n, type);
   if (std::vector<Context::UdimTile> tiles = c.udimTiles(n); !tiles.empty()) {
-    const std::string filter = c.stringInput(n, "filtertype");
-    const std::string space = texelSpace(c, n, type);
-    return texelsToWorkingSpace(c, n, sampleTiles(c, n, uv, type, tiles, filter.empty() ? "linear" : filter, space),
-                                space);
+    return texelsToWorkingSpace(c, n, sampleTiles(c, n, uv, type, tiles, filter, space), space);
   }
   const std::string file = c.imageFile(n);
   c.material.addImage(file, c.origin(n, "file"));
   ExprId texture = c.material.exprs.named(Op::Texture, Type::String, file);
-  std::string filter = c.stringInput(n, "filtertype");
-  const std::string space = texelSpace(c, n, type);
-  ExprId sampled = c.material.exprs.opWithString(
-      Op::ImageSample, type, {texture, uv, in(c, n, "default")},
-      fmt::format("{},{},{},{}", uaddress, vaddress, filter.empty() ? "linear" : filter, space));
+  ExprId sampled = c.material.exprs.opWithString(Op::ImageSample, type, {texture, uv, in(c, n, "default")},
+                                                 fmt::format("{},{},{},{}", uaddress, vaddress, filter, space));
   return texelsToWorkingSpace(c, n, sampled, space);
 }
 ExprId image(Context& c, const NodeRef& n, std::string_view, Type type) {
