@@ -239,7 +239,9 @@ PortT Builder::buildPort(const xml::Element& e, const Scope& outer) {
   if (valueAttribute) {
     port.valueString = valueAttribute->value;
     port.valueLocation = e.document().locationOf(valueAttribute->valueOffset);
-    if (!port.type.empty()) {
+    // A value of a typedef'd type is a struct literal: read by the resolver, which knows the
+    // typedef's members (the typedef may come from a library).
+    if (!port.type.empty() && isStandardTypeName(port.type)) {
       ValueError error;
       port.value = tryParseValue(valueTypeOf(port.type), valueAttribute->value, &error);
       if (!port.value) {
@@ -475,11 +477,26 @@ void Builder::build() {
       impl.file = e.attributeOr("file", "");
       impl.function = e.attributeOr("function", "");
       impl.target = e.attributeOr("target", "");
+      impl.sourcecode = e.attributeOr("sourcecode", "");
       doc_.implementations.push_back(impl);
       names.add(impl.name, at(e));
     } else if (kind == "typedef") {
-      TypeDef t{requireName(e), e.attributeOr("semantic", ""), e.attributeOr("context", ""), at(e)};
-      doc_.typedefs.push_back(t);
+      TypeDef t{requireName(e), e.attributeOr("semantic", ""), e.attributeOr("context", ""), at(e), {}};
+      NameSet members(diagnostics_, fmt::format("typedef '{}'", t.name));
+      for (const xml::Element& child : e.children()) {
+        if (child.name() != "member") {
+          unexpectedChild(child, "typedef");
+          continue;
+        }
+        TypeDef::Member m;
+        m.location = at(child);
+        m.name = requireName(child);
+        m.type = requireAttribute(child, "type", "a struct member declares its type");
+        m.valueString = child.attribute("value");
+        members.add(m.name, m.location);
+        t.members.push_back(m);
+      }
+      doc_.typedefs.push_back(std::move(t));
       names.add(t.name, at(e));
     } else if (kind == "geompropdef") {
       GeomPropDef g;

@@ -158,15 +158,27 @@ struct Implementation {
   std::string_view file;
   std::string_view function;
   std::string_view target;
+  /// Inline source code for `target` (MaterialX 1.39 "Implementation Elements"): an expression
+  /// in which {{name}} stands for input `name`.
+  std::string_view sourcecode;
   SourceLocation location;
 };
 
-/// A <typedef>: declares a type name (MaterialX "Custom Data Types").
+/// A <typedef>: declares a type name (MaterialX "Custom Data Types"). A typedef with
+/// <member>s is a struct; its values are written "{member;member;...}", nested for members
+/// that are structs themselves.
 struct TypeDef {
+  struct Member {
+    std::string_view name;
+    std::string_view type;
+    std::optional<std::string_view> valueString;  ///< the member's default, as written
+    SourceLocation location;
+  };
   std::string_view name;
   std::string_view semantic;
   std::string_view context;
   SourceLocation location;
+  std::vector<Member> members;
 };
 
 /// A <geompropdef>: a named geometric property (Nworld, UV0, ...) that inputs can default to.

@@ -49,6 +49,7 @@ json valueJson(const doc::Value& value) {
 json inputJson(const ResolvedInput& in) {
   json j{{"name", in.name}, {"type", in.type}, {"source", resolve::inputSourceName(in.source)}};
   if (in.value) j["value"] = valueJson(*in.value);
+  if (!in.structValue.empty()) j["value"] = in.structLiteral();
   if (in.source == InputSource::GeomProp) j["geomprop"] = in.geomprop;
   if (in.source == InputSource::Interface) j["interface"] = in.interfaceName;
   if (in.source == InputSource::Connection) {

@@ -91,8 +91,10 @@ void TextReport::input(const ResolvedInput& i, const ResolvedGraph* scope, int i
   if (label.empty()) label = std::string(i.name);
   std::string text;
   switch (i.source) {
-    case InputSource::Value: text = "= " + (i.value ? valueText(*i.value) : std::string()); break;
-    case InputSource::Default: text = "= " + (i.value ? valueText(*i.value) : std::string()) + " (default)"; break;
+    case InputSource::Value: text = "= " + (i.value ? valueText(*i.value) : std::string(i.structLiteral())); break;
+    case InputSource::Default:
+      text = "= " + (i.value ? valueText(*i.value) : std::string(i.structLiteral())) + " (default)";
+      break;
     case InputSource::GeomProp: text = fmt::format("geomprop {} (default)", i.geomprop); break;
     case InputSource::Unset: text = "(unset)"; break;
     case InputSource::Interface: {

@@ -68,7 +68,11 @@ void NodeLibrary::finalize(Diagnostics& diagnostics) {
   // Implementations naming a graph.
   for (const doc::Document* document : documents_) {
     for (const doc::Implementation& impl : document->implementations) {
-      if (impl.nodegraph.empty()) continue;  // source-code implementations are not used by mxc
+      if (!impl.sourcecode.empty()) {
+        inlineSources_.emplace(fmt::format("{}|{}", impl.nodedef, impl.target), &impl);
+        continue;
+      }
+      if (impl.nodegraph.empty()) continue;  // implementations in source files are not used by mxc
       const doc::NodeGraph* graph = nullptr;
       for (const NodeLibrary* layer = this; layer && !graph; layer = layer->parent_) {
         if (auto it = layer->graphs_.find(impl.nodegraph); it != layer->graphs_.end()) graph = it->second;
@@ -92,6 +96,15 @@ void NodeLibrary::finalize(Diagnostics& diagnostics) {
       diagnostics.error(graph->element.valid() ? graph->location : SourceLocation{},
                         fmt::format("node graph '{}' implements nodedef '{}', which is not defined", graph->name,
                                     nodedefName));
+    }
+  }
+
+  // Struct types, in document order so messages come out the same every run.
+  for (const doc::Document* document : documents_) {
+    for (const doc::TypeDef& t : document->typedefs) {
+      if (auto it = typedefs_.find(t.name); it == typedefs_.end() || it->second != &t || t.members.empty()) continue;
+      std::vector<std::string_view> building;
+      buildStructType(t, building, diagnostics);
     }
   }
 
@@ -230,6 +243,95 @@ const doc::NodeDef* NodeLibrary::implementedNodeDef(const doc::NodeGraph& graph)
   if (!graph.nodedef.empty()) return findNodeDef(graph.nodedef);
   for (const NodeLibrary* layer = this; layer; layer = layer->parent_) {
     if (auto it = layer->implemented_.find(&graph); it != layer->implemented_.end()) return findNodeDef(it->second);
+  }
+  return nullptr;
+}
+
+const StructType* NodeLibrary::buildStructType(const doc::TypeDef& t, std::vector<std::string_view>& building,
+                                                Diagnostics& diagnostics) {
+  if (auto it = structs_.find(t.name); it != structs_.end()) return it->second.get();
+  if (std::find(building.begin(), building.end(), t.name) != building.end()) {
+    diagnostics.error(t.location, fmt::format("struct '{}' contains itself (through {})", t.name,
+                                              fmt::join(building, " -> ")));
+    structs_.emplace(t.name, nullptr);
+    return nullptr;
+  }
+  building.push_back(t.name);
+  auto type = std::make_unique<StructType>();
+  type->name = t.name;
+  bool ok = true;
+  for (const doc::TypeDef::Member& m : t.members) {
+    StructType::Member member{m.name, m.type, type->leaves.size(), 0};
+    const StructType* inner = nullptr;
+    if (auto it = typedefs_.find(m.type); it != typedefs_.end() && !it->second->members.empty()) {
+      inner = buildStructType(*it->second, building, diagnostics);
+      if (!inner) ok = false;
+    } else if (!doc::isStandardTypeName(m.type)) {
+      inner = parent_ ? parent_->structType(m.type) : nullptr;
+      if (!inner) {
+        diagnostics.error(m.location, fmt::format("member '{}' of struct '{}' has type '{}', which is neither a value "
+                                                  "type nor a struct",
+                                                  m.name, t.name, m.type));
+        ok = false;
+      }
+    } else if (doc::valueTypeOf(m.type) == doc::ValueType::None) {
+      diagnostics.error(m.location, fmt::format("member '{}' of struct '{}' has type '{}', which has no values (a "
+                                                "struct holds values)",
+                                                m.name, t.name, m.type));
+      ok = false;
+    }
+    if (!ok) continue;
+    if (inner) {
+      // A struct member's defaults: its own `value` (a struct literal), else its members'.
+      std::vector<doc::Value> defaults;
+      if (m.valueString) {
+        auto parsed = parseStructValue(*inner, *this, *m.valueString);
+        if (auto* error = std::get_if<doc::ValueError>(&parsed)) {
+          diagnostics.error(m.location, fmt::format("member '{}' of struct '{}': invalid value \"{}\": {}", m.name,
+                                                    t.name, *m.valueString, error->message));
+        } else {
+          defaults = std::get<std::vector<doc::Value>>(std::move(parsed));
+        }
+      }
+      for (size_t i = 0; i < inner->leaves.size(); ++i) {
+        StructType::Leaf leaf = inner->leaves[i];
+        leaf.path = fmt::format("{}.{}", m.name, leaf.path);
+        if (!defaults.empty()) leaf.defaultValue = defaults[i];
+        type->leaves.push_back(std::move(leaf));
+      }
+    } else {
+      StructType::Leaf leaf{std::string(m.name), doc::valueTypeOf(m.type), std::nullopt};
+      if (m.valueString) {
+        doc::ValueError error;
+        leaf.defaultValue = doc::tryParseValue(leaf.type, *m.valueString, &error);
+        if (!leaf.defaultValue) {
+          diagnostics.error(m.location, fmt::format("member '{}' of struct '{}': invalid {} value \"{}\": {}", m.name,
+                                                    t.name, m.type, *m.valueString, error.message));
+        }
+      }
+      type->leaves.push_back(std::move(leaf));
+    }
+    member.leafCount = type->leaves.size() - member.firstLeaf;
+    type->members.push_back(member);
+  }
+  building.pop_back();
+  if (!ok) type.reset();
+  return structs_.emplace(t.name, std::move(type)).first->second.get();
+}
+
+const StructType* NodeLibrary::structType(std::string_view name) const {
+  for (const NodeLibrary* layer = this; layer; layer = layer->parent_) {
+    if (auto it = layer->structs_.find(name); it != layer->structs_.end()) return it->second.get();
+    if (layer->typedefs_.count(name)) return nullptr;  // a typedef without members shadows
+  }
+  return nullptr;
+}
+
+const doc::Implementation* NodeLibrary::inlineImplementation(const doc::NodeDef& nodedef,
+                                                             std::string_view target) const {
+  const std::string key = fmt::format("{}|{}", nodedef.name, target);
+  for (const NodeLibrary* layer = this; layer; layer = layer->parent_) {
+    if (auto it = layer->inlineSources_.find(key); it != layer->inlineSources_.end()) return it->second;
   }
   return nullptr;
 }

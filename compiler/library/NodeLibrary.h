@@ -10,6 +10,7 @@
 
 #include "compiler/common/Diagnostic.h"
 #include "compiler/document/Document.h"
+#include "compiler/library/StructType.h"
 
 namespace mxc::lib {
 
@@ -52,7 +53,13 @@ class NodeLibrary {
   const doc::NodeGraph* implementationGraph(const doc::NodeDef& nodedef) const;
   /// The nodedef a graph implements, through its `nodedef` attribute or an <implementation>.
   const doc::NodeDef* implementedNodeDef(const doc::NodeGraph& graph) const;
+  /// The inline source code implementing a nodedef for `target` (an <implementation> with
+  /// `sourcecode`), or null.
+  const doc::Implementation* inlineImplementation(const doc::NodeDef& nodedef, std::string_view target) const;
   const doc::TypeDef* findTypeDef(std::string_view name) const;
+  /// The struct type of a typedef with members, or null (a standard type, a typedef without
+  /// members, or one whose members did not hold together: reported by finalize).
+  const StructType* structType(std::string_view name) const;
   /// True for the specification's own types and for typedefs of any layer.
   bool isKnownType(std::string_view name) const;
   const doc::GeomPropDef* findGeomPropDef(std::string_view name) const;
@@ -66,6 +73,10 @@ class NodeLibrary {
   void define(std::unordered_map<std::string_view, const T*>& table, const T& item, std::string_view kind,
               Diagnostics& diagnostics);
   const Signature* findSignature(const doc::NodeDef& nodedef) const;
+  /// Builds this layer's struct type `t` (and the struct types its members use); `building`
+  /// holds the chain being built, to report a struct that contains itself.
+  const StructType* buildStructType(const doc::TypeDef& t, std::vector<std::string_view>& building,
+                                    Diagnostics& diagnostics);
 
   const NodeLibrary* parent_;
   std::vector<const doc::Document*> documents_;
@@ -76,6 +87,8 @@ class NodeLibrary {
   std::unordered_map<const doc::NodeGraph*, std::string_view> implemented_;       // graph -> nodedef name
   std::unordered_map<std::string_view, const doc::TypeDef*> typedefs_;
   std::unordered_map<std::string_view, const doc::GeomPropDef*> geomprops_;
+  std::unordered_map<std::string_view, std::unique_ptr<StructType>> structs_;  // null: tried and failed
+  std::unordered_map<std::string, const doc::Implementation*> inlineSources_;  // "nodedef|target"
   mutable std::unordered_map<const doc::NodeDef*, Signature> signatures_;
 };
 

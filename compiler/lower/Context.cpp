@@ -9,6 +9,7 @@
 
 #include "compiler/common/ColorSpace.h"
 #include "compiler/common/LargeStack.h"
+#include "compiler/lower/InlineSource.h"
 #include "compiler/resolve/Resolver.h"
 
 namespace mxc::lower {
@@ -382,15 +383,62 @@ ir::ExprId Context::nodeValue(const NodeRef& n, std::string_view output) {
     v = rule(*this, n, output, type);
   } else if (Env* inner = inlineImplementation(n)) {
     if (const ResolvedInput* out = implementationOutput(*inner, output)) v = value(*out, *inner);
+  } else if (const doc::Implementation* source = library.inlineImplementation(*n.node->nodedef, "genglsl")) {
+    v = lowerInlineSource(*this, n, *source, output, type);
   } else {
     error(n.node->node->location,
-          fmt::format("<{}> (nodedef {}) is not supported by mxc's lowering yet, and no node graph in the libraries "
-                      "implements it",
+          fmt::format("<{}> (nodedef {}) is not supported by mxc's lowering yet, and no node graph or inline "
+                      "source code in the libraries implements it",
                       n.node->category(), n.node->nodedef->name));
   }
   if (v == ir::kNoExpr) v = zero(b, type);
   n.env->values.emplace(key, v);
   return v;
+}
+
+std::vector<ir::ExprId> Context::structValue(const ResolvedInput& in, Env& env) {
+  const lib::StructType* type = library.structType(in.type);
+  if (!type) return {};
+  std::vector<ir::ExprId> leaves;
+  switch (in.source) {
+    case InputSource::Value:
+    case InputSource::Default:
+      for (const doc::Value& leaf : in.structValue) leaves.push_back(material.exprs.constant(leaf));
+      break;
+    case InputSource::Connection:
+      if (in.upstream.graph) {
+        Env& genv = graphEnv(*in.upstream.graph);
+        if (const ResolvedInput* out = in.upstream.graph->findOutput(in.upstream.output)) leaves = structValue(*out, genv);
+      } else if (const resolve::ResolvedNode* node = in.upstream.node) {
+        if (Env* inner = node->nodedef ? inlineImplementation({node, &env}) : nullptr) {
+          if (const ResolvedInput* out = implementationOutput(*inner, in.upstream.output)) leaves = structValue(*out, *inner);
+        } else if (node->nodedef) {
+          error(node->node->location, fmt::format("<{}> '{}' outputs a {} struct, which mxc computes only through "
+                                                  "node graphs (and reads as literals)",
+                                                  node->category(), node->name(), in.type));
+        }
+      }
+      break;
+    case InputSource::Interface: {
+      Env* where = nullptr;
+      if (const ResolvedInput* iface = interfaceInput(env, in.interfaceName, where)) leaves = structValue(*iface, *where);
+      break;
+    }
+    default:
+      break;
+  }
+  if (leaves.size() == type->leaves.size()) return leaves;
+  leaves.clear();
+  for (const lib::StructType::Leaf& leaf : type->leaves) {
+    ir::Type t = ir::Type::Float;
+    if (leaf.defaultValue) {
+      leaves.push_back(material.exprs.constant(*leaf.defaultValue));
+    } else {
+      ir::irTypeOf(doc::typeName(leaf.type), t);
+      leaves.push_back(zero(b, t));
+    }
+  }
+  return leaves;
 }
 
 Env* Context::inlineImplementation(const NodeRef& n) {

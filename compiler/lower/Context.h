@@ -98,6 +98,9 @@ class Context {
   ir::ExprId value(const resolve::ResolvedInput& input, Env& env);
   /// The output of a value-typed node.
   ir::ExprId nodeValue(const NodeRef& n, std::string_view output);
+  /// The leaves (lib::StructType) of a struct-typed input: its literal, the struct a node graph
+  /// passes along, else the typedef's member defaults (zero for a member without one).
+  std::vector<ir::ExprId> structValue(const resolve::ResolvedInput& input, Env& env);
   /// Where an input of a node is set (its element, else the nodedef's), for Params and messages.
   ir::Origin origin(const NodeRef& n, std::string_view name) const;
   ir::Origin nodeOrigin(const NodeRef& n) const;

@@ -2,6 +2,12 @@
 
 namespace mxc::resolve {
 
+std::string_view ResolvedInput::structLiteral() const {
+  if (structValue.empty()) return {};
+  const doc::Port* from = source == InputSource::Value ? instance : declaration;
+  return from && from->valueString ? *from->valueString : std::string_view();
+}
+
 std::string_view inputSourceName(InputSource source) {
   switch (source) {
     case InputSource::Value: return "value";

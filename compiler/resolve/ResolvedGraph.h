@@ -45,11 +45,17 @@ struct ResolvedInput {
   const doc::Input* declaration = nullptr;  ///< the nodedef's input (after inheritance); null for graph outputs
   const doc::Port* instance = nullptr;      ///< the element that set it, when one did
   std::optional<doc::Value> value;          ///< for Value and Default
+  /// For Value and Default of a struct type: the literal's leaves (lib::StructType), and
+  /// `value` is empty.
+  std::vector<doc::Value> structValue;
   std::string_view geomprop;                ///< for GeomProp: a geompropdef name such as "Nworld"
   Upstream upstream;                        ///< for Connection
   std::string_view interfaceName;           ///< for Interface
   std::string_view channels;                ///< MaterialX 1.38 swizzle applied to the connection
   SourceLocation location;                  ///< where it is set: the instance, else the nodedef input
+
+  /// The struct literal as written ("{0.1;0.5}"), for a struct value; "" otherwise.
+  std::string_view structLiteral() const;
 };
 
 /// A node bound to its nodedef.

@@ -1,6 +1,7 @@
 #include "compiler/resolve/Resolver.h"
 
 #include <algorithm>
+#include <set>
 #include <unordered_map>
 
 #include <fmt/format.h>
@@ -80,6 +81,9 @@ class Resolver {
   /// Resolves what a port is set to (connection, interface, value), checked against `type`.
   /// A filename value's [token]s are those tokensSeen(tokenScope, ownTokens) gives: the node's
   /// own, then those of `tokenScope` (null: `scope`), then the document's.
+  /// Reads the struct literal a port of a struct type gives into result.structValue; false
+  /// (after reporting a bad literal once) when it gives none or the type is not a struct.
+  bool readStruct(const doc::Port& port, ResolvedInput& result);
   void resolvePort(const Scope& scope, const doc::Port& port, ResolvedInput& result,
                    const std::vector<doc::Token>* ownTokens = nullptr, const Scope* tokenScope = nullptr);
   /// The tokens a port of `scope` sees, innermost first: `own` (a node's), the scope's, and the
@@ -93,6 +97,7 @@ class Resolver {
 
   const lib::NodeLibrary& library_;
   Diagnostics& diagnostics_;
+  std::set<const doc::Port*> reportedValues_;  ///< struct values reported invalid (nodedef defaults are read per use)
   Scope top_;
   std::vector<std::unique_ptr<Scope>> graphScopes_;
   std::unordered_map<std::string_view, Scope*> graphsByName_;
@@ -262,6 +267,10 @@ void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedIn
     }
     return;
   }
+  if (readStruct(port, result)) {
+    result.source = InputSource::Value;
+    return;
+  }
   // An empty value of a shader or closure type (value="") leaves the input unset.
   if (port.value && port.value->type() != doc::ValueType::None) {
     result.source = InputSource::Value;
@@ -289,6 +298,35 @@ void Resolver::resolvePort(const Scope& scope, const doc::Port& port, ResolvedIn
       result.value = doc::Value(doc::ValueType::Filename, std::move(path));
     }
   }
+}
+
+bool Resolver::readStruct(const doc::Port& port, ResolvedInput& result) {
+  if (!port.valueString || doc::isStandardTypeName(port.type)) return false;
+  const lib::StructType* type = library_.structType(port.type);
+  const bool empty = port.valueString->find_first_not_of(" \t\n\r") == std::string_view::npos;
+  if (!type) {
+    // A typedef without members (an opaque type) has no literal values; neither has an
+    // unknown type (reported where the type is checked).
+    if (!empty && library_.findTypeDef(port.type) && reportedValues_.insert(&port).second) {
+      diagnostics_.error(port.valueLocation, fmt::format("invalid {} value \"{}\" for '{}': this type has no literal "
+                                                         "values (only structs, typedefs with members, have them)",
+                                                         port.type, *port.valueString, port.name));
+    }
+    return false;
+  }
+  if (empty) return false;
+  auto parsed = lib::parseStructValue(*type, library_, *port.valueString);
+  if (auto* error = std::get_if<doc::ValueError>(&parsed)) {
+    if (reportedValues_.insert(&port).second) {
+      SourceLocation where = port.valueLocation;
+      if (where.valid()) where.offset += static_cast<uint32_t>(error->offset);  // no entities in struct literals
+      diagnostics_.error(where, fmt::format("invalid {} value \"{}\" for '{}': {}", port.type, *port.valueString,
+                                            port.name, error->message));
+    }
+    return false;
+  }
+  result.structValue = std::get<std::vector<doc::Value>>(std::move(parsed));
+  return true;
 }
 
 void Resolver::checkEnum(const ResolvedInput& input) {
@@ -319,6 +357,7 @@ void Resolver::resolveNode(Scope& scope, ResolvedNode& node) {
       resolvePort(scope, *instance, input, &node.node->tokens);
     }
     if (input.source == InputSource::Unset) applyDefault(input, *declaration);
+    if (input.source == InputSource::Unset && readStruct(*declaration, input)) input.source = InputSource::Default;
     checkEnum(input);
     node.inputs.push_back(std::move(input));
   }
@@ -330,6 +369,7 @@ void Resolver::resolveInterface(Scope& scope) {
     for (const doc::Input* declaration : library_.signature(*graph.implements).inputs) {
       ResolvedInput input = declaredInput(*declaration);
       applyDefault(input, *declaration);
+      if (input.source == InputSource::Unset && readStruct(*declaration, input)) input.source = InputSource::Default;
       graph.interface.push_back(std::move(input));
     }
     return;

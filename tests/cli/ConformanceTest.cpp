@@ -40,8 +40,6 @@ struct KnownFailure {
 constexpr KnownFailure kKnownFailures[] = {
     {"resources/Materials/Examples/SimpleHair/simple_hair_default.mtlx", "ir",
      "chiang_hair_bsdf: a hair BSDF (Chiang et al. 2016) has no lowering yet"},
-    {"resources/Materials/TestSuite/stdlib/structs/struct_texcoord.mtlx", "inspect",
-     "struct literals (\"{0.1;0.1}\") are not read yet"},
 };
 
 const KnownFailure* knownFailure(const std::string& document) {
