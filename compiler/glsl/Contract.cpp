@@ -17,12 +17,14 @@ constexpr Member kLobe[] = {
      "vec3(1.0)"},
     {"vec3", "N", 0, "shading normal (unit)", "g.N"},
     {"vec3", "T", 0, "tangent", "g.T"},
-    {"vec2", "alpha", 0, "GGX alphas (tangent, bitangent)", "vec2(0.0)"},
-    {"float", "eta", 0, "dielectric: relative IOR (below / above)", "1.5"},
-    {"vec3", "c0", 0, "dielectric: reflection tint; conductor: n; schlick: f0; others: colour", "vec3(1.0)"},
-    {"vec3", "c1", 0, "dielectric: transmission tint; conductor: k; schlick: f82 tint", "vec3(1.0)"},
-    {"vec3", "c2", 0, "schlick: f90", "vec3(1.0)"},
-    {"float", "p0", 0, "schlick: exponent; diffuse, sheen: roughness; sheet: g", "0.0"},
+    {"vec2", "alpha", 0, "GGX alphas (tangent, bitangent); hair: R's (v, s)", "vec2(0.0)"},
+    {"float", "eta", 0, "dielectric: relative IOR (below / above); hair: the fibre's IOR", "1.5"},
+    {"vec3", "c0", 0, "dielectric: reflection tint; conductor: n; schlick: f0; hair: R tint; others: colour", "vec3(1.0)"},
+    {"vec3", "c1", 0, "dielectric: transmission tint; conductor: k; schlick: f82 tint; hair: TT tint", "vec3(1.0)"},
+    {"vec3", "c2", 0, "schlick: f90; hair: TRT tint", "vec3(1.0)"},
+    {"vec3", "c3", 0, "hair: absorption coefficient per unit fibre radius", "vec3(0.0)", "HAIR"},
+    {"vec4", "q", 0, "hair: (v, s) of TT, then of TRT (alpha holds R's)", "vec4(0.0)", "HAIR"},
+    {"float", "p0", 0, "schlick: exponent; diffuse, sheen: roughness; sheet: g; hair: cuticle tilt (radians)", "0.0"},
     {"float", "p1", 0, "schlick: Fresnel scale (specular_weight)", "1.0"},
     {"vec3", "film", 0, "thin film: thickness (nm), relative IOR, coverage (0: no film)", "vec3(0.0)"},
     {"vec3", "tau", 0, "optical depth of absorbing media above, applied along wi", "vec3(0.0)"},
@@ -60,7 +62,9 @@ std::string declarations(std::span<const Member> members) {
   std::string out;
   for (const Member& m : members) {
     std::string decl = fmt::format("  {} {}{};", m.type, m.name, m.count ? fmt::format("[{}]", m.count) : "");
+    if (!m.onlyFor.empty()) out += fmt::format("#ifdef MXC_HAS_{}\n", m.onlyFor);
     out += m.comment.empty() ? decl + "\n" : fmt::format("{:<28} // {}\n", decl, m.comment);
+    if (!m.onlyFor.empty()) out += "#endif\n";
   }
   return out;
 }

@@ -86,6 +86,10 @@ struct Member {
   std::string_view comment;
   /// MxcLobe: the value a lobe has unless its kind or its layering sets another (GLSL).
   std::string_view initial = {};
+  /// MxcLobe: the one lobe kind that reads the member ("HAIR": ir::lobeKindName), or empty for
+  /// every kind. Such a member is declared only where MXC_HAS_<kind> is, and set only on lobes
+  /// of that kind, so that the other materials' lobes do not carry it.
+  std::string_view onlyFor = {};
 };
 
 /// MxcLobe, in declaration order.

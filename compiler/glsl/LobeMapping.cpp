@@ -92,6 +92,20 @@ LobeFields mapInterface(ClosureValues& v, const ir::Material& m, const ir::Inter
       fields.set("c0", slot(Slot::Color, "vec3(1.0)"));
       fields.set("p0", slot(Slot::Anisotropy, "0.0"));
       break;
+    case InterfaceKind::Hair: {
+      // mxc_hair.glsl: tints of R, TT and TRT; the IOR of the fibre (not relative to a layer:
+      // a fibre is not layered); the lobes' roughness pairs; the cuticle tilt; sigma_a.
+      fields.set("c0", slot(Slot::ReflectionTint, "vec3(1.0)"));
+      fields.set("c1", slot(Slot::TransmissionTint, "vec3(1.0)"));
+      fields.set("c2", slot(Slot::InternalReflectionTint, "vec3(1.0)"));
+      fields.set("c3", slot(Slot::Absorption, "vec3(0.0)"));
+      fields.set("eta", slot(Slot::Ior, "1.55"));
+      fields.set("alpha", slot(Slot::FibreRoughnessR, "vec2(0.1)"));
+      fields.set("q", fmt::format("vec4({}, {})", slot(Slot::FibreRoughnessTT, "vec2(0.05)"),
+                                  slot(Slot::FibreRoughnessTRT, "vec2(0.2)")));
+      fields.set("p0", slot(Slot::CuticleTilt, "0.0"));
+      break;
+    }
   }
   if (f.thinFilm.present()) {
     // OpenPBR "Thin-film iridescence": the film's IOR relative to what is above it (the coat
@@ -135,8 +149,16 @@ std::string emittedRadiance(ClosureValues& v, const ir::Emission& e, ClosureValu
 void declareLobe(Lines& out, const std::string& name, const LobeFields& fields, SourceLocation at, SourceLocation filmAt,
                  std::string_view skip) {
   out.add(fmt::format("  MxcLobe {};", name), at);
+  const std::span<const Member> members = lobeMembers();  // the order of fields.values()
+  std::string kind;
   for (const auto& [member, value] : fields.values()) {
+    if (member == "kind") kind = value;
+  }
+  for (size_t i = 0; i < fields.values().size(); ++i) {
+    const auto& [member, value] = fields.values()[i];
     if (member == skip) continue;
+    // A member of one lobe kind only (Member::onlyFor) exists only in shaders with that kind.
+    if (!members[i].onlyFor.empty() && kind != fmt::format("MXC_LOBE_{}", members[i].onlyFor)) continue;
     out.add(fmt::format("  {}.{} = {};", name, member, value), member == "film" && filmAt.valid() ? filmAt : at);
   }
 }

@@ -183,6 +183,7 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   w.file("library/mxc_fresnel.glsl");
   if (iface.lobeKinds.has(ir::LobeKind::Sheen)) w.file("library/mxc_sheen.glsl");
   if (iface.lobeKinds.has(ir::LobeKind::Fuzz)) w.file("library/mxc_fuzz.glsl");
+  if (iface.lobeKinds.has(ir::LobeKind::Hair)) w.file("library/mxc_hair.glsl");
   w.file("library/mxc_geometry.glsl");
   if (exprs.usesProcedural()) w.file("library/mxc_procedural.glsl");
   w.file("library/mxc_lobes.glsl");

@@ -96,6 +96,12 @@ class Walk {
       if (coat.index >= 0 && !coat.always) layer.coat = coat.index;
       layer.lobe.set("eta", layer.etaCovered);
     }
+    if (f.kind == InterfaceKind::Hair) {
+      // A fibre: its IOR is its own, not a ratio to a layer above, and what passes through it
+      // leaves on its far side (a fibre is not layered over anything).
+      layer.etaCovered = layer.etaBare = v_.glsl(v_.slot(f.slots, Slot::Ior, v_.constant(1.55f)));
+      layer.flags |= kExit;
+    }
     return layer;
   }
 

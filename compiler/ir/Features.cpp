@@ -49,6 +49,7 @@ std::string_view lobeKindName(LobeKind kind) {
     case LobeKind::Sheet: return "SHEET";
     case LobeKind::Sheen: return "SHEEN";
     case LobeKind::Fuzz: return "FUZZ";
+    case LobeKind::Hair: return "HAIR";
     case LobeKind::Count: break;
   }
   return "?";
@@ -64,6 +65,7 @@ LobeKind lobeKindOf(const Interface& f) {
     case InterfaceKind::DiffuseTransmission: return LobeKind::Translucent;
     case InterfaceKind::DiffuseSheet: return LobeKind::Sheet;
     case InterfaceKind::Sheen: return f.sheenModel == SheenModel::Zeltner ? LobeKind::Fuzz : LobeKind::Sheen;
+    case InterfaceKind::Hair: return LobeKind::Hair;
   }
   return LobeKind::EON;
 }
@@ -77,6 +79,7 @@ std::string_view effectName(Effect effect) {
     case Effect::Dispersion: return "dispersion";
     case Effect::Emission: return "emission";
     case Effect::Fuzz: return "fuzz";
+    case Effect::Hair: return "hair";
     case Effect::Metal: return "metal";
     case Effect::Opacity: return "opacity";
     case Effect::Sheen: return "sheen";
@@ -145,6 +148,7 @@ Features computeFeatures(const Material& m) {
           case InterfaceKind::DiffuseTransmission: add(Effect::DiffuseTransmission, coverageOr(n)); break;
           case InterfaceKind::DiffuseSheet: add(Effect::Subsurface, coverageOr(n)); break;
           case InterfaceKind::Sheen: add(iface.sheenModel == SheenModel::Zeltner ? Effect::Fuzz : Effect::Sheen, coverageOr(n)); break;
+          case InterfaceKind::Hair: add(Effect::Hair, coverageOr(n)); break;
         }
         if (iface.thinFilm.present()) {
           const ThinFilm& film = iface.thinFilm;

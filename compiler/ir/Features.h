@@ -28,6 +28,7 @@ enum class LobeKind : uint8_t {
   Sheet,        ///< thin-walled diffuse reflection and transmission
   Sheen,        ///< Estevez & Kulla 2017
   Fuzz,         ///< Zeltner et al. 2022 (OpenPBR fuzz)
+  Hair,         ///< Chiang et al. 2016 fibre scattering
   Count
 };
 
@@ -45,6 +46,7 @@ enum class Effect : uint8_t {
   Dispersion,
   Emission,
   Fuzz,
+  Hair,
   Metal,
   Opacity,
   Sheen,

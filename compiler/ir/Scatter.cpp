@@ -10,7 +10,8 @@ std::string_view slotName(Slot slot) {
       "tangent",    "color",         "roughness",       "f0",                "f82",        "f90",
       "exponent",   "extinction",    "complex_ior",     "anisotropy",        "absorption", "scattering",
       "thickness",  "observed_albedo", "abbe_number",   "darkening",         "base_albedo",
-      "base_roughness", "weight",   "luminance",       "inner_angle",       "outer_angle"};
+      "base_roughness", "weight",   "luminance",       "inner_angle",       "outer_angle",
+      "internal_reflection_tint", "fibre_roughness_r", "fibre_roughness_tt", "fibre_roughness_trt", "cuticle_tilt"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<size_t>(Slot::Count), "every slot has a name");
   return names[static_cast<size_t>(slot)];
 }
@@ -20,13 +21,15 @@ std::optional<float> slotDefault(Slot slot) {
     case Slot::FresnelScale:
     case Slot::ReflectionTint:
     case Slot::TransmissionTint:
+    case Slot::InternalReflectionTint:
     case Slot::Weight:
     case Slot::F82:
     case Slot::F90: return 1.0f;
     case Slot::AbbeNumber:
     case Slot::Absorption:
     case Slot::Scattering:
-    case Slot::Anisotropy: return 0.0f;
+    case Slot::Anisotropy:
+    case Slot::CuticleTilt: return 0.0f;
     case Slot::Exponent: return 5.0f;
     default: return std::nullopt;
   }
@@ -42,6 +45,7 @@ std::string_view interfaceKindName(InterfaceKind kind) {
     case InterfaceKind::DiffuseTransmission: return "diffuse_transmission";
     case InterfaceKind::DiffuseSheet: return "diffuse_sheet";
     case InterfaceKind::Sheen: return "sheen";
+    case InterfaceKind::Hair: return "hair";
   }
   return "?";
 }

@@ -70,6 +70,11 @@ enum class Slot : uint8_t {
   Luminance,         ///< float: emission luminance (nits)
   InnerAngle,        ///< float: conical emission, full inside this half-angle (degrees)
   OuterAngle,        ///< float: conical emission, none outside this half-angle (degrees)
+  InternalReflectionTint,  ///< vec3: hair: tint of the paths reflected inside the fibre (TRT and longer)
+  FibreRoughnessR,    ///< vec2: hair R lobe: longitudinal variance v, azimuthal logistic scale s / sqrt(pi/8) (Chiang 2016 eqs. 7-8)
+  FibreRoughnessTT,   ///< vec2: hair TT lobe, as FibreRoughnessR
+  FibreRoughnessTRT,  ///< vec2: hair TRT lobe (and longer paths), as FibreRoughnessR
+  CuticleTilt,        ///< float: hair: tilt of the cuticle scales (radians; Chiang 2016 s. 4.1 alpha)
   Count
 };
 
@@ -109,6 +114,7 @@ enum class InterfaceKind : uint8_t {
   DiffuseTransmission,  ///< diffuse transmission (MaterialX translucent_bsdf): Color, Normal
   DiffuseSheet,         ///< thin-walled subsurface: reflection S(1-g)/2, transmission S(1+g)/2 (OpenPBR "Thin-walled mode"): Color, Anisotropy, Roughness, Normal
   Sheen,                ///< sheen / fuzz, index-matched, no Fresnel: Color, Roughness, Normal
+  Hair,                 ///< a hair fibre (Chiang 2016): Ior, ReflectionTint (R), TransmissionTint (TT), InternalReflectionTint (TRT), FibreRoughnessR/TT/TRT, CuticleTilt, Absorption (per unit fibre radius), Normal, Tangent (along the fibre); not layerable
 };
 
 std::string_view interfaceKindName(InterfaceKind kind);

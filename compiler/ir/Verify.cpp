@@ -39,6 +39,12 @@ constexpr SlotSpec kDiffuseSheet[] = {
     {Slot::Color, kVec3},  {Slot::Anisotropy, kFloat}, {Slot::Roughness, kFloat},
     {Slot::Normal, kVec3}, {Slot::Weight, kColor},
 };
+constexpr SlotSpec kHair[] = {
+    {Slot::Ior, kFloat},           {Slot::ReflectionTint, kVec3},    {Slot::TransmissionTint, kVec3},
+    {Slot::InternalReflectionTint, kVec3}, {Slot::FibreRoughnessR, kVec2}, {Slot::FibreRoughnessTT, kVec2},
+    {Slot::FibreRoughnessTRT, kVec2}, {Slot::CuticleTilt, kFloat},  {Slot::Absorption, kVec3},
+    {Slot::Normal, kVec3},         {Slot::Tangent, kVec3},           {Slot::Weight, kColor},
+};
 constexpr SlotSpec kMedium[] = {
     {Slot::Absorption, kVec3},     {Slot::Scattering, kVec3}, {Slot::Anisotropy, kFloat}, {Slot::Thickness, kFloat},
     {Slot::ObservedAlbedo, kVec3}, {Slot::AbbeNumber, kFloat}, {Slot::Ior, kFloat},
@@ -276,6 +282,7 @@ std::span<const SlotSpec> slotSchema(InterfaceKind kind) {
     case InterfaceKind::Sheen: return kDiffuse;
     case InterfaceKind::DiffuseTransmission: return kDiffuseTransmission;
     case InterfaceKind::DiffuseSheet: return kDiffuseSheet;
+    case InterfaceKind::Hair: return kHair;
   }
   return {};
 }

@@ -129,6 +129,29 @@ Closure sheen(Context& c, const NodeRef& n, std::string_view) {
   return scatter(interfaceSlab(c, std::move(i), c.param(n, "weight")));
 }
 
+Closure chiangHair(Context& c, const NodeRef& n, std::string_view) {
+  // A hair fibre (Chiang et al. 2016; MaterialX chiang_hair_bsdf): one lobe holding R, TT, TRT
+  // and the longer paths (mxc_hair.glsl). Its IOR is the fibre's own; its tangent input is the
+  // direction of the curve.
+  ir::Interface i = interfaceOf(c, n, ir::InterfaceKind::Hair);
+  setSlot(c, i, Slot::ReflectionTint, n, "tint_R");
+  setSlot(c, i, Slot::TransmissionTint, n, "tint_TT");
+  setSlot(c, i, Slot::InternalReflectionTint, n, "tint_TRT");
+  setSlot(c, i, Slot::Ior, n, "ior");
+  setSlot(c, i, Slot::FibreRoughnessR, n, "roughness_R");
+  setSlot(c, i, Slot::FibreRoughnessTT, n, "roughness_TT");
+  setSlot(c, i, Slot::FibreRoughnessTRT, n, "roughness_TRT");
+  setSlot(c, i, Slot::Absorption, n, "absorption_coefficient");
+  setSlot(c, i, Slot::Normal, n, "normal");
+  setSlot(c, i, Slot::Tangent, n, "curve_direction");
+  // MaterialX maps cuticle_angle in [0, 1] to a tilt in [-pi/2, pi/2]: 0.5 is no tilt.
+  if (ir::Param angle = c.param(n, "cuticle_angle"); angle.present()) {
+    angle.value = c.b.mul(c.b.sub(angle.value, c.b.f(0.5f)), c.b.f(3.14159265f));
+    i.slots.set(Slot::CuticleTilt, angle);
+  }
+  return scatter(interfaceSlab(c, std::move(i), {}));
+}
+
 Closure subsurface(Context& c, const NodeRef& n, std::string_view) {
   // MaterialX's subsurface_bsdf is a medium (the seed commentary, 4.1): an index-matched slab
   // holding a bulk scattering medium; a dielectric layered over it becomes its interface.
@@ -358,6 +381,7 @@ const RuleTable& rules() {
       {"burley_diffuse_bsdf", burley},
       {"translucent_bsdf", translucent},
       {"sheen_bsdf", sheen},
+      {"chiang_hair_bsdf", chiangHair},
       {"subsurface_bsdf", subsurface},
       {"absorption_vdf", absorptionVdf},
       {"anisotropic_vdf", anisotropicVdf},

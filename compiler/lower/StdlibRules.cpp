@@ -532,6 +532,49 @@ ExprId artisticIor(Context& c, const NodeRef& n, std::string_view output, Type) 
   return output == "extinction" ? extinction : ior;
 }
 
+// pbrlib's hair helpers, for chiang_hair_bsdf.
+ExprId deonHairAbsorption(Context& c, const NodeRef& n, std::string_view, Type) {
+  // d'Eon et al. 2011 s. 6.1: melanin = -ln(1 - concentration) (1e-4: all melanin is a finite
+  // 9.2), split into eumelanin and pheomelanin by the redness; each absorbs -ln(colour) per
+  // unit, the colours being exp(-sigma) of the paper's coefficients. Colours >= 1e-4 keep the
+  // logarithms finite (a black pigment absorbs 9.2 per unit).
+  ir::ExprBuilder& b = c.b;
+  const ExprId melanin = b.neg(b.ln(b.max(b.oneMinus(in(c, n, "melanin_concentration")), b.f(1e-4f))));
+  const ExprId redness = in(c, n, "melanin_redness");
+  const ExprId eu = b.mul(melanin, b.oneMinus(redness));
+  const ExprId pheo = b.mul(melanin, redness);
+  auto perUnit = [&](std::string_view input) { return b.neg(b.ln(b.max(in(c, n, input), b.vec(Type::Vec3, 1e-4f)))); };
+  return b.nonNegative(b.add(b.mul(perUnit("eumelanin_color"), eu), b.mul(perUnit("pheomelanin_color"), pheo)));
+}
+ExprId chiangHairAbsorption(Context& c, const NodeRef& n, std::string_view, Type) {
+  // Chiang et al. 2016 eq. 9: sigma_a = (ln(colour) / (5.969 - 0.215 b + 2.532 b^2 - 10.73 b^3 +
+  // 5.574 b^4 + 0.245 b^5))^2 for the azimuthal roughness b, clamped to [0, 1] where the
+  // polynomial stays >= 3.3; the colour in [1e-3, 1] keeps the logarithm finite and <= 0.
+  ir::ExprBuilder& b = c.b;
+  const ExprId beta = b.clamp01(in(c, n, "azimuthal_roughness"));
+  const float k[] = {5.969f, -0.215f, 2.532f, -10.73f, 5.574f, 0.245f};
+  ExprId poly = b.f(k[5]);
+  for (int i = 4; i >= 0; --i) poly = b.add(b.mul(poly, beta), b.f(k[i]));  // Horner
+  const ExprId sigma = b.div(b.ln(b.clamp(in(c, n, "color"), b.f(1e-3f), b.f(1.0f))), poly);
+  return b.mul(sigma, sigma);
+}
+ExprId chiangHairRoughness(Context& c, const NodeRef& n, std::string_view output, Type) {
+  // Chiang et al. 2016 eqs. 7-8: the longitudinal variance v = (0.726 b_m + 0.812 b_m^2 +
+  // 3.7 b_m^20)^2 and the azimuthal scale s = 0.265 b_n + 1.194 b_n^2 + 5.372 b_n^22 (its
+  // sqrt(pi/8) is applied by the BSDF, as MaterialX splits it), both roughnesses clamped to
+  // [1e-3, 1]. TT and TRT scale the longitudinal width (Marschner et al. 2003: 1/2 and 2).
+  ir::ExprBuilder& b = c.b;
+  const ExprId lr = b.clamp(in(c, n, "longitudinal"), b.f(1e-3f), b.f(1.0f));
+  const ExprId ar = b.clamp(in(c, n, "azimuthal"), b.f(1e-3f), b.f(1.0f));
+  ExprId v = b.add(b.add(b.mul(b.f(0.726f), lr), b.mul(b.f(0.812f), b.mul(lr, lr))), b.mul(b.f(3.7f), b.pow(lr, b.f(20.0f))));
+  v = b.mul(v, v);
+  const ExprId s = b.add(b.add(b.mul(b.f(0.265f), ar), b.mul(b.f(1.194f), b.mul(ar, ar))), b.mul(b.f(5.372f), b.pow(ar, b.f(22.0f))));
+  ExprId scale = b.f(1.0f);
+  if (output == "roughness_TT") scale = in(c, n, "scale_TT");
+  if (output == "roughness_TRT") scale = in(c, n, "scale_TRT");
+  return b.construct(Type::Vec2, {b.mul(v, b.mul(scale, scale)), s});
+}
+
 using RuleTable = std::unordered_map<std::string_view, ValueRule>;
 
 const RuleTable& rules() {
@@ -639,6 +682,9 @@ const RuleTable& rules() {
       {"roughness_dual", roughnessDual},
       {"glossiness_anisotropy", glossinessAnisotropy},
       {"artistic_ior", artisticIor},
+      {"deon_hair_absorption_from_melanin", deonHairAbsorption},
+      {"chiang_hair_absorption_from_color", chiangHairAbsorption},
+      {"chiang_hair_roughness", chiangHairRoughness},
   };
   return table;
 }

@@ -310,6 +310,33 @@ TEST(Furnace, RoughDielectricIsLosslessOnBalanced) {
   }
 }
 
+// A hair fibre's albedo is exactly sum_p Ap (Chiang et al. 2016 eq. 3; its Mp and Np are
+// normalised). Seen across the fibre (theta_o = 0) at its middle (h = 0): Fresnel at normal
+// incidence, a chord of 2 radii (T = exp(-2 sigma_a)), and the geometric series of paths
+// longer than TRT; on every tier.
+TEST(Furnace, HairAlbedoIsItsAttenuationsAcrossTheFibre) {
+  Context context;
+  ir::Material m = single(context, bsdfDocument("  <chiang_hair_bsdf name=\"bsdf\" type=\"BSDF\">\n"
+                                                "    <input name=\"absorption_coefficient\" type=\"vector3\" value=\"0, 0.5, 2\" />\n"
+                                                "  </chiang_hair_bsdf>\n"));
+  const double eta = 1.55;
+  const double f = std::pow((eta - 1.0) / (eta + 1.0), 2.0);
+  for (Accuracy accuracy : {Accuracy::Fast, Accuracy::Balanced, Accuracy::Reference}) {
+    std::vector<rt::Albedo> a = furnace(m, {viewAt(0)}, 65536, {}, accuracy);
+    ASSERT_EQ(a.size(), 1u);
+    const float sigma[3] = {0.0f, 0.5f, 2.0f};
+    for (int ch = 0; ch < 3; ++ch) {
+      const double t = std::exp(-2.0 * sigma[ch]);
+      const double a1 = (1.0 - f) * (1.0 - f) * t;
+      const double a2 = a1 * t * f;
+      const double expected = f + a1 + a2 + a2 * t * f / (1.0 - t * f);
+      const float total = a[0].total()[ch];
+      const float error = a[0].reflectedError[ch] + a[0].transmittedError[ch];
+      EXPECT_NEAR(total, expected, 4.0f * error + 2e-3f) << "channel " << ch << ", tier " << int(accuracy);
+    }
+  }
+}
+
 // Helmholtz reciprocity of single-scattering reflection (2.4): f(o, i) = f(i, o), so
 // fcos(o, i) / |i.z| = fcos(i, o) / |o.z|.
 TEST(Eval, ReflectionIsReciprocal) {

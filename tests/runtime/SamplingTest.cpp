@@ -30,7 +30,16 @@ struct Case {
   const char* kind;  // "bsdf": a pbrlib BSDF node named bsdf; "openpbr": open_pbr_surface inputs
   const char* xml;
   std::vector<double> views;  // degrees from the normal, in the xz plane (> 90: from below)
+  /// Bins and quadrature about the x axis instead of the normal: a hair fibre's own angles (its
+  /// axis is the tangent, x). Its lobes are thin wedges around that axis, which bins on the
+  /// surface's angles resolve only with far more quadrature points.
+  bool aboutTangent = false;
 };
+
+/// A direction in the frame the bins are laid in: the surface's (z up), or with the tangent
+/// x as the pole (z' = x, x' = y, y' = z).
+glm::vec3 toBinFrame(const glm::vec3& w, bool aboutTangent) { return aboutTangent ? glm::vec3(w.y, w.z, w.x) : w; }
+glm::vec3 fromBinFrame(const glm::vec3& r, bool aboutTangent) { return aboutTangent ? glm::vec3(r.z, r.x, r.y) : r; }
 
 std::string document(const Case& c) {
   return std::string(c.kind) == "bsdf" ? bsdfDocument(c.xml) : openPbrDocument(c.xml);
@@ -70,7 +79,7 @@ TEST_P(Sampling, DrawsTheDensityItReports) {
       if (s.kind != rt::SampledDirection::Kind::Continuous) continue;
       ASSERT_TRUE(std::isfinite(s.wi.x) && std::isfinite(s.wi.y) && std::isfinite(s.wi.z)) << what;
       ASSERT_NEAR(glm::length(s.wi), 1.0f, 1e-3f) << what;
-      observed[binOf(s.wi)] += 1.0;
+      observed[binOf(toBinFrame(s.wi, c.aboutTangent))] += 1.0;
     }
     // Expected counts: N times the pdf integrated over each bin. Within a bin the quadrature runs
     // over theta (d omega = sin theta d theta d phi), not z: the bins next to the poles span 24
@@ -86,8 +95,9 @@ TEST_P(Sampling, DrawsTheDensityItReports) {
         const double weight = std::sin(theta) * (t1 - t0) / kSub * (2.0 * kPi / (kPhiBins * kSub));
         for (int ip = 0; ip < kPhiBins * kSub; ++ip) {
           const double phi = 2.0 * kPi * (ip + 0.5) / (kPhiBins * kSub);
-          pairs.push_back({views[v], glm::vec3(float(std::sin(theta) * std::cos(phi)),
-                                               float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)))});
+          const glm::vec3 r(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
+                            float(std::cos(theta)));
+          pairs.push_back({views[v], fromBinFrame(r, c.aboutTangent)});
           weights.push_back(weight);
         }
       }
@@ -98,7 +108,7 @@ TEST_P(Sampling, DrawsTheDensityItReports) {
     double mass = 0.0;
     for (size_t k = 0; k < pairs.size(); ++k) {
       ASSERT_TRUE(std::isfinite(f[k].w) && f[k].w >= 0.0f) << what;
-      expected[binOf(pairs[k].wi)] += n * f[k].w * weights[k];
+      expected[binOf(toBinFrame(pairs[k].wi, c.aboutTangent))] += n * f[k].w * weights[k];
       mass += f[k].w * weights[k];
     }
     // The share of draws that give a continuous sample is the pdf's mass (a lobe's failed draws,
@@ -156,6 +166,23 @@ const Case kCases[] = {
      "  <sheen_bsdf name=\"bsdf\" type=\"BSDF\"><input name=\"roughness\" type=\"float\" value=\"0.5\" />"
      "<input name=\"mode\" type=\"string\" value=\"zeltner\" /></sheen_bsdf>\n",
      {0, 50, 80}},
+    // Hair, binned about the fibre (x). Along x, views in the xz plane see it at offset h = 0,
+    // from 0 to 80 degrees and (130) from the other side of the fibre.
+    {"hair_chiang", "bsdf", "  <chiang_hair_bsdf name=\"bsdf\" type=\"BSDF\" />\n", {0, 50, 80, 130}, true},
+    // Wide along the fibre, narrow around it: the lobes reach the fibre's axis as wedges.
+    {"hair_chiang_wedges", "bsdf",
+     "  <chiang_hair_bsdf name=\"bsdf\" type=\"BSDF\"><input name=\"roughness_R\" type=\"vector2\" value=\"0.3, 0.05\" />"
+     "<input name=\"roughness_TT\" type=\"vector2\" value=\"0.3, 0.05\" /><input name=\"roughness_TRT\" "
+     "type=\"vector2\" value=\"0.3, 0.05\" /></chiang_hair_bsdf>\n",
+     {0, 50, 80}, true},
+    // A fibre turned out of the view plane (offsets h != 0), tilted cuticles, absorbing, rough:
+    // its axis is no longer x, so binned on the surface's angles.
+    {"hair_chiang_offset_tilted", "bsdf",
+     "  <chiang_hair_bsdf name=\"bsdf\" type=\"BSDF\"><input name=\"curve_direction\" type=\"vector3\" "
+     "value=\"0.6, 0.8, 0\" /><input name=\"cuticle_angle\" type=\"float\" value=\"0.55\" />"
+     "<input name=\"absorption_coefficient\" type=\"vector3\" value=\"0.2, 0.5, 1\" />"
+     "<input name=\"roughness_R\" type=\"vector2\" value=\"0.3, 0.4\" /></chiang_hair_bsdf>\n",
+     {20, 60}},
     {"openpbr_layered", "openpbr",
      "    <input name=\"base_diffuse_roughness\" type=\"float\" value=\"0.5\" />\n"
      "    <input name=\"specular_roughness\" type=\"float\" value=\"0.4\" />\n"

@@ -44,7 +44,7 @@ bool lossless(Energy energy, Accuracy accuracy) {
 
 struct HardCase {
   const char* name;
-  const char* model;   ///< "openpbr", "standard", "usd", "gltf" (shading node with `inputs`) or "document" (`inputs` is the body)
+  const char* model;   ///< "openpbr", "standard", "usd", "gltf" (shading node with `inputs`), "hair" (a chiang_hair_bsdf with `inputs`) or "document" (`inputs` is the body)
   const char* inputs;  ///< <input> elements, or a document body
   Energy energy;
   const char* why;     ///< the expectation and the section of the spec or paper behind it
@@ -157,11 +157,24 @@ const HardCase kCases[] = {
    "glTF with every extension at full strength: transmission through a dispersive volume, iridescence, sheen, coat, alpha_t = 1"},
   {"gltf_ior_1_specular_0", "gltf", R"(<input name="metallic" type="float" value="0" /><input name="ior" type="float" value="1" /><input name="specular" type="float" value="0" /><input name="base_color" type="color3" value="1, 1, 1" />)", Energy::Bounded,
    "KHR_materials_ior at 1 and KHR_materials_specular at 0: no specular reflection over a white base"},
+  {"hair_white", "hair", "", Energy::Lossless,
+   "no absorption, white tints: sum_p Ap = 1 and Mp, Np are normalised (Chiang 2016 eq. 3; d'Eon 2011 eq. 7)"},
+  {"hair_roughness_0", "hair", R"(<input name="roughness_R" type="vector2" value="0, 0" /><input name="roughness_TT" type="vector2" value="0, 0" /><input name="roughness_TRT" type="vector2" value="0, 0" />)", Energy::Lossless,
+   "the narrowest lobes (v = 1e-3: 1/v = 1000) stay finite: Mp is evaluated by its logarithm"},
+  {"hair_ior_1", "hair", R"(<input name="ior" type="float" value="1" />)", Energy::Lossless,
+   "an index-matched fibre reflects nothing: everything is TT (Fresnel 0; Chiang 2016 eq. 3)"},
+  {"hair_extreme_tilt_absorbing", "hair", R"(<input name="cuticle_angle" type="float" value="0" /><input name="absorption_coefficient" type="vector3" value="0, 5, 1000" /><input name="ior" type="float" value="0.5" />)", Energy::Bounded,
+   "a tilt of -90 degrees, an IOR below 1 (the modified IOR eta' floored) and an opaque blue channel"},
+  {"hair_tint_above_1_along_normal", "hair", R"(<input name="tint_R" type="color3" value="4, 4, 4" /><input name="tint_TT" type="color3" value="2, 2, 2" /><input name="curve_direction" type="vector3" value="0, 0, 1" />)", Energy::Bounded,
+   "tints are clamped to 1 (no gain); a fibre along the normal falls back to another tangent frame"},
 };
 // clang-format on
 
 std::string document(const HardCase& c) {
   if (std::string(c.model) == "document") return mtlx(c.inputs);
+  if (std::string(c.model) == "hair") {
+    return bsdfDocument(fmt::format("  <chiang_hair_bsdf name=\"bsdf\" type=\"BSDF\">{}</chiang_hair_bsdf>\n", c.inputs));
+  }
   const std::string model = c.model;
   const std::string node = model == "openpbr" ? "open_pbr_surface"
                            : model == "usd"   ? "UsdPreviewSurface"

@@ -4,6 +4,11 @@
 
 #include "generated/mxc_lobe.glsl"
 
+#ifdef MXC_HAS_HAIR
+// A hair lobe's parameters as mxc_hair.glsl names them (the contract's MxcLobe packs them).
+MxcHair mxc_lobe_hair(MxcLobe l) { return MxcHair(l.c0, l.c1, l.c2, l.c3, l.eta, l.alpha, l.q.xy, l.q.zw, l.p0); }
+#endif
+
 // Whether a lobe carries transmission. Without MXC_TRANSMISSION no lobe of the material does
 // (the back end defines it from the modes its closure gives the lobes), and the refraction code
 // is not compiled: an opaque material's dielectric reflects only.
@@ -328,6 +333,9 @@ vec3 mxc_lobe_albedo_scaled(MxcLobe l, vec3 wo, vec3 ms) {
 #ifdef MXC_HAS_SHEEN
   if (l.kind == MXC_LOBE_SHEEN) return l.c0 * min(mxc_sheen_albedo(mu, l.p0), 1.0);
 #endif
+#ifdef MXC_HAS_HAIR
+  if (l.kind == MXC_LOBE_HAIR) return mxc_hair_albedo(mxc_lobe_hair(l), wo);  // exact: sum_p Ap (mxc_hair.glsl)
+#endif
 #ifdef MXC_HAS_FUZZ
   if (l.kind == MXC_LOBE_FUZZ) return l.c0 * mxc_fuzz_albedo(mu, mxc_fuzz_roughness(l.p0));
 #endif
@@ -413,6 +421,10 @@ vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi) {
     case MXC_LOBE_FUZZ:
       return mxc_fuzz_eval(l.c0, l.p0, wo, wi);
 #endif
+#ifdef MXC_HAS_HAIR
+    case MXC_LOBE_HAIR:
+      return mxc_hair_eval(mxc_lobe_hair(l), wo, wi);  // both hemispheres: a fibre transmits
+#endif
     default:
       return vec3(0.0);
   }
@@ -472,6 +484,10 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi) {
 #ifdef MXC_HAS_FUZZ
     case MXC_LOBE_FUZZ:
       return mxc_fuzz_pdf(l.p0, wo, wi);
+#endif
+#ifdef MXC_HAS_HAIR
+    case MXC_LOBE_HAIR:
+      return mxc_hair_pdf(mxc_lobe_hair(l), wo, wi);
 #endif
     default:
       return wo.z > 0.0 && wi.z > 0.0 ? wi.z * MXC_INV_PI : 0.0;  // cosine sampling
@@ -564,6 +580,15 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u) {
     case MXC_LOBE_FUZZ: {
       if (wo.z <= 0.0) return s;
       s.wi = mxc_fuzz_sample(l.p0, wo, u.xy);  // exact importance sampling of the LTC
+      s.value = mxc_lobe_eval(l, wo, s.wi);
+      s.pdf = mxc_lobe_pdf(l, wo, s.wi);
+      s.valid = s.pdf > 0.0;
+      return s;
+    }
+#endif
+#ifdef MXC_HAS_HAIR
+    case MXC_LOBE_HAIR: {
+      s.wi = mxc_hair_sample(mxc_lobe_hair(l), wo, u);  // Mp and Np sampled exactly (d'Eon 2013)
       s.value = mxc_lobe_eval(l, wo, s.wi);
       s.pdf = mxc_lobe_pdf(l, wo, s.wi);
       s.valid = s.pdf > 0.0;

@@ -494,17 +494,19 @@ TEST(Lowering, UnsupportedNodeIsAnErrorAtItsElement) {
   Context context;
   CompileRequest request;
   request.document = "test.mtlx";
+  // A node the document defines without any implementation.
   request.text = mtlx(
-      "  <chiang_hair_bsdf name=\"hair\" type=\"BSDF\"/>\n"
-      "  <surface name=\"surf\" type=\"surfaceshader\"><input name=\"bsdf\" type=\"BSDF\" nodename=\"hair\"/></surface>\n");
+      "  <nodedef name=\"ND_glow\" node=\"glow\"><output name=\"out\" type=\"color3\"/></nodedef>\n"
+      "  <glow name=\"g\" type=\"color3\"/>\n"
+      "  <surface_unlit name=\"surf\" type=\"surfaceshader\"><input name=\"emission_color\" type=\"color3\" "
+      "nodename=\"g\"/></surface_unlit>\n");
   Compiler compiler(context, request);
   ASSERT_NE(compiler.resolved(), nullptr);
   ASSERT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
   compiler.materials();
   Diagnostic e = context.firstError();
-  EXPECT_NE(e.message.find("<chiang_hair_bsdf> (nodedef ND_chiang_hair_bsdf) is not supported"), std::string::npos)
-      << e.message;
-  EXPECT_EQ(e.location.line(), 3u);
+  EXPECT_NE(e.message.find("<glow> (nodedef ND_glow) is not supported"), std::string::npos) << e.message;
+  EXPECT_EQ(e.location.line(), 4u);
   EXPECT_EQ(e.location.lineColumn().column, 3u);
 }
 

@@ -146,5 +146,56 @@ TEST(StdlibRules, ColourValuesAreDecodedFromTheirEncoding) {
   EXPECT_NEAR(decoded("-0.5", "adobergb", 1.0f), 1.0f, 1e-6f);
 }
 
+// pbrlib's hair helpers, whose MaterialX implementations are GLSL files (not graphs): the
+// formulas of their papers, at values worked by hand.
+TEST(StdlibRules, HairAbsorptionFromMelaninUsesDEonsCoefficients) {
+  // d'Eon et al. 2011: eumelanin absorbs (0.419, 0.697, 1.37) and pheomelanin (0.187, 0.4,
+  // 1.05) per unit; concentration 0.5 is -ln(0.5) = 0.6931 units, split evenly at redness 0.5.
+  std::vector<float> a = valueOf("  <deon_hair_absorption_from_melanin name=\"v\" type=\"vector3\">\n"
+                                 "    <input name=\"melanin_concentration\" type=\"float\" value=\"0.5\"/>\n"
+                                 "    <input name=\"melanin_redness\" type=\"float\" value=\"0.5\"/>\n"
+                                 "  </deon_hair_absorption_from_melanin>\n",
+                                 "vector3");
+  ASSERT_EQ(a.size(), 3u);
+  const float half = 0.5f * std::log(2.0f);
+  EXPECT_NEAR(a[0], half * (0.419f + 0.187f), 2e-4f);
+  EXPECT_NEAR(a[1], half * (0.697f + 0.4f), 2e-4f);
+  EXPECT_NEAR(a[2], half * (1.37f + 1.05f), 2e-4f);
+}
+
+TEST(StdlibRules, HairAbsorptionFromColourInvertsChiangsFit) {
+  // Chiang et al. 2016 eq. 9 at colour 0.5 and azimuthal roughness 0.2.
+  std::vector<float> a = valueOf("  <chiang_hair_absorption_from_color name=\"v\" type=\"vector3\">\n"
+                                 "    <input name=\"color\" type=\"color3\" value=\"0.5, 0.5, 0.5\"/>\n"
+                                 "  </chiang_hair_absorption_from_color>\n",
+                                 "vector3");
+  ASSERT_EQ(a.size(), 3u);
+  const double b = 0.2;
+  const double poly = 5.969 - 0.215 * b + 2.532 * b * b - 10.73 * b * b * b + 5.574 * std::pow(b, 4) + 0.245 * std::pow(b, 5);
+  EXPECT_NEAR(a[0], std::pow(std::log(0.5) / poly, 2.0), 1e-6);
+}
+
+TEST(StdlibRules, HairRoughnessFollowsChiangsFitsPerLobe) {
+  auto lobe = [](const std::string& output) {
+    return valueOf("  <chiang_hair_roughness name=\"r\" type=\"multioutput\">\n"
+                   "    <input name=\"longitudinal\" type=\"float\" value=\"0.1\"/>\n"
+                   "    <input name=\"azimuthal\" type=\"float\" value=\"0.1\"/>\n"
+                   "  </chiang_hair_roughness>\n"
+                   "  <dot name=\"v\" type=\"vector2\"><input name=\"in\" type=\"vector2\" nodename=\"r\" output=\"" +
+                       output + "\"/></dot>\n",
+                   "vector2");
+  };
+  // Eqs. 7-8: v = (0.726 b + 0.812 b^2 + 3.7 b^20)^2, s = 0.265 b + 1.194 b^2 + 5.372 b^22;
+  // TT and TRT widen the longitudinal lobe by 1/2 and 2 (v by 1/4 and 4).
+  const double v = std::pow(0.726 * 0.1 + 0.812 * 0.01 + 3.7e-20, 2.0);
+  const double s = 0.265 * 0.1 + 1.194 * 0.01;
+  for (auto [output, scale] : {std::pair{"roughness_R", 1.0}, {"roughness_TT", 0.25}, {"roughness_TRT", 4.0}}) {
+    std::vector<float> r = lobe(output);
+    ASSERT_GE(r.size(), 2u) << output;
+    EXPECT_NEAR(r[0], v * scale, 1e-6) << output;
+    EXPECT_NEAR(r[1], s, 1e-6) << output;
+  }
+}
+
 }  // namespace
 }  // namespace mxc::test
