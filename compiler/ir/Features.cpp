@@ -141,8 +141,11 @@ Features computeFeatures(const Material& m) {
             if (!medium && n.base == kNone && iface.scatter != ScatterMode::R) add(Effect::Transmission, n.origin);
             break;
           }
-          case InterfaceKind::Conductor:
-          case InterfaceKind::Schlick: add(Effect::Metal, coverageOr(n)); break;
+          case InterfaceKind::Conductor: add(Effect::Metal, coverageOr(n)); break;
+          // A Schlick reflection over something is a specular layer (the dielectric specular of
+          // Disney's and USD's specular workflow, a layered generalized_schlick_bsdf); at the
+          // bottom of its stack it is a metal.
+          case InterfaceKind::Schlick: add(n.base != kNone ? Effect::Specular : Effect::Metal, coverageOr(n)); break;
           case InterfaceKind::Diffuse:
           case InterfaceKind::Burley: add(Effect::Diffuse, coverageOr(n)); break;
           case InterfaceKind::DiffuseTransmission: add(Effect::DiffuseTransmission, coverageOr(n)); break;

@@ -157,5 +157,6 @@ ir::Index lowerOpenPbrSurface(Context& c, const NodeRef& n);
 ir::Index lowerStandardSurface(Context& c, const NodeRef& n);
 ir::Index lowerUsdPreviewSurface(Context& c, const NodeRef& n);
 ir::Index lowerGltfPbr(Context& c, const NodeRef& n);
+ir::Index lowerDisneyPrincipled(Context& c, const NodeRef& n);
 
 }  // namespace mxc::lower

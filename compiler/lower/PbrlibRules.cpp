@@ -367,6 +367,7 @@ Closure shadingModel(Context& c, const NodeRef& n, std::string_view output) {
   if (category == "open_pbr_surface") return scatter(lowerOpenPbrSurface(c, n));
   if (category == "UsdPreviewSurface") return scatter(lowerUsdPreviewSurface(c, n));
   if (category == "gltf_pbr") return scatter(lowerGltfPbr(c, n));
+  if (category == "disney_principled") return scatter(lowerDisneyPrincipled(c, n));
   return scatter(lowerStandardSurface(c, n));
 }
 
@@ -398,6 +399,7 @@ const RuleTable& rules() {
       {"standard_surface", shadingModel},
       {"UsdPreviewSurface", shadingModel},
       {"gltf_pbr", shadingModel},
+      {"disney_principled", shadingModel},
   };
   return table;
 }

@@ -33,6 +33,30 @@ struct ShadingModelInputs {
   /// True when the parameter is the constant `value` as written (before any clamp: a clamped
   /// constant is folded only by the passes).
   bool isConstant(const ir::Param& x, float value) { return c.material.exprs.isConstantEqual(x.value, value); }
+
+  /// A GGX dielectric reflecting and transmitting, its IOR relative to the outside (as the
+  /// shading models that are not layered on an OpenPBR coat give it).
+  ir::Interface dielectricInterface(const ir::Param& ior, const ir::Param& alpha) {
+    ir::Interface i;
+    i.kind = ir::InterfaceKind::Dielectric;
+    i.scatter = ir::ScatterMode::RT;
+    i.iorReference = ir::IorReference::Ambient;
+    i.origin = c.nodeOrigin(n);
+    i.slots.set(ir::Slot::Ior, ior);
+    i.slots.set(ir::Slot::Alpha, alpha);
+    return i;
+  }
+  /// A GGX reflection with a Schlick Fresnel from `f0` to a white edge.
+  ir::Interface schlickInterface(const ir::Param& f0, const ir::Param& alpha) {
+    ir::Interface i;
+    i.kind = ir::InterfaceKind::Schlick;
+    i.scatter = ir::ScatterMode::R;
+    i.origin = c.nodeOrigin(n);
+    i.slots.set(ir::Slot::F0, f0);
+    i.slots.set(ir::Slot::F90, {b.vec(ir::Type::Vec3, 1.0f), f0.origin});
+    i.slots.set(ir::Slot::Alpha, alpha);
+    return i;
+  }
 };
 
 }  // namespace mxc::lower

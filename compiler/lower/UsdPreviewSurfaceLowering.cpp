@@ -64,27 +64,8 @@ struct UsdPreviewSurface : ShadingModelInputs {
     return c.material.addInterface(std::move(i));
   }
 
-  /// A dielectric of IOR `ior` reflecting and transmitting, GGX alpha `alpha`.
-  Index dielectric(const Param& ior, const Param& a) {
-    ir::Interface i;
-    i.kind = ir::InterfaceKind::Dielectric;
-    i.scatter = ir::ScatterMode::RT;
-    i.iorReference = ir::IorReference::Ambient;
-    i.slots.set(Slot::Ior, ior);
-    i.slots.set(Slot::Alpha, a);
-    return interface(std::move(i));
-  }
-
-  /// A generalized-Schlick reflection from F0 to a white edge.
-  Index schlick(const Param& f0, const Param& a) {
-    ir::Interface i;
-    i.kind = ir::InterfaceKind::Schlick;
-    i.scatter = ir::ScatterMode::R;
-    i.slots.set(Slot::F0, f0);
-    i.slots.set(Slot::F90, {b.vec(Type::Vec3, 1.0f), f0.origin});
-    i.slots.set(Slot::Alpha, a);
-    return interface(std::move(i));
-  }
+  Index dielectric(const Param& ior, const Param& a) { return interface(dielectricInterface(ior, a)); }
+  Index schlick(const Param& f0, const Param& a) { return interface(schlickInterface(f0, a)); }
 
   /// The weight of refraction in the transparent mode: 1 - opacity when the mode is
   /// "transparent" and no threshold makes opacity a cutout; 0 otherwise.

@@ -1165,6 +1165,41 @@ def build_gltf_pbr():
     return L
 
 
+def build_disney_principled():
+    L = Library(header(
+        'Disney Principled (nodedef only)', 'libraries/bxdf/disney_principled.mtlx', [
+            '',
+            'No nodegraph: mxc lowers disney_principled to closures in C++',
+            '(compiler/lower/DisneyPrincipledLowering.cpp).',
+            'Source: Burley 2012, "Physically-Based Shading at Disney" (the BRDF\'s parameters) and',
+            'Burley 2015, "Extending the Disney BRDF to a BSDF with Integrated Subsurface',
+            'Scattering" (specTrans, ior, subsurface distance); names, types and defaults as',
+            'MaterialX\'s definition, so its documents resolve unchanged.']))
+    L.section('Disney Principled')
+    inputs = [
+        i('baseColor', 'color3', '0.16, 0.16, 0.16'),
+        i('metallic', 'float', '0', uimin='0.0', uimax='1.0'),
+        i('roughness', 'float', '0.5', uimin='0.0', uimax='1.0'),
+        i('anisotropic', 'float', '0', uimin='0.0', uimax='1.0'),
+        i('specular', 'float', '0.5', uimin='0.0', uimax='1.0'),
+        i('specularTint', 'float', '0', uimin='0.0', uimax='1.0'),
+        i('sheen', 'float', '0', uimin='0.0', uimax='1.0'),
+        i('sheenTint', 'float', '0.5', uimin='0.0', uimax='1.0'),
+        i('clearcoat', 'float', '0', uimin='0.0', uimax='1.0'),
+        i('clearcoatGloss', 'float', '1', uimin='0.0', uimax='1.0'),
+        i('specTrans', 'float', '0', uimin='0.0', uimax='1.0'),
+        i('ior', 'float', '1.5', uisoftmin='1.0', uisoftmax='3.0'),
+        i('subsurface', 'float', '0'),
+        i('subsurfaceDistance', 'color3', '1, 1, 1'),
+    ]
+    inputs = [(tag, {k: v for k, v in attrs.items() if v is not None}) for tag, attrs in inputs]
+    L.elem('nodedef', {'name': 'ND_disney_principled', 'node': 'disney_principled', 'nodegroup': 'pbr',
+                       'doc': 'The Disney Principled BSDF (Burley 2012, 2015).'},
+           inputs + [('output', {'name': 'out', 'type': SS})])
+    L.count += 1
+    return L
+
+
 # ==========================================================================
 
 OUTPUTS = [
@@ -1177,6 +1212,7 @@ OUTPUTS = [
     ('bxdf/open_pbr_surface.mtlx', build_open_pbr),
     ('bxdf/usd_preview_surface.mtlx', build_usd_preview_surface),
     ('bxdf/gltf_pbr.mtlx', build_gltf_pbr),
+    ('bxdf/disney_principled.mtlx', build_disney_principled),
 ]
 
 

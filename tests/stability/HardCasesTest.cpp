@@ -44,7 +44,7 @@ bool lossless(Energy energy, Accuracy accuracy) {
 
 struct HardCase {
   const char* name;
-  const char* model;   ///< "openpbr", "standard", "usd", "gltf" (shading node with `inputs`), "hair" (a chiang_hair_bsdf with `inputs`) or "document" (`inputs` is the body)
+  const char* model;   ///< "openpbr", "standard", "usd", "gltf", "disney" (shading node with `inputs`), "hair" (a chiang_hair_bsdf with `inputs`) or "document" (`inputs` is the body)
   const char* inputs;  ///< <input> elements, or a document body
   Energy energy;
   const char* why;     ///< the expectation and the section of the spec or paper behind it
@@ -157,6 +157,14 @@ const HardCase kCases[] = {
    "glTF with every extension at full strength: transmission through a dispersive volume, iridescence, sheen, coat, alpha_t = 1"},
   {"gltf_ior_1_specular_0", "gltf", R"(<input name="metallic" type="float" value="0" /><input name="ior" type="float" value="1" /><input name="specular" type="float" value="0" /><input name="base_color" type="color3" value="1, 1, 1" />)", Energy::Bounded,
    "KHR_materials_ior at 1 and KHR_materials_specular at 0: no specular reflection over a white base"},
+  {"disney_white", "disney", R"(<input name="baseColor" type="color3" value="1, 1, 1" />)", Energy::Bounded,
+   "the default Disney material over a white base (Burley 2012): the specular layer over the diffuse gains nothing"},
+  {"disney_saturated_tints", "disney", R"(<input name="baseColor" type="color3" value="0, 0, 1" /><input name="specular" type="float" value="1" /><input name="specularTint" type="float" value="1" /><input name="sheen" type="float" value="1" /><input name="sheenTint" type="float" value="1" />)", Energy::Bounded,
+   "the hue of pure blue is (0, 0, 13.8) (baseColor / luminance): the tinted F0 and sheen colour are clamped to 1"},
+  {"disney_everything_rough", "disney", R"(<input name="baseColor" type="color3" value="1, 1, 1" /><input name="metallic" type="float" value="0.5" /><input name="roughness" type="float" value="1" /><input name="anisotropic" type="float" value="1" /><input name="clearcoat" type="float" value="1" /><input name="clearcoatGloss" type="float" value="0" /><input name="subsurface" type="float" value="1" /><input name="specTrans" type="float" value="0.5" /><input name="sheen" type="float" value="1" />)", Energy::Bounded,
+   "every lobe at once, the most stretched alpha (aspect sqrt(0.1)) and the roughest coat"},
+  {"disney_glass_ior_1_smooth", "disney", R"(<input name="specTrans" type="float" value="1" /><input name="ior" type="float" value="1" /><input name="roughness" type="float" value="0" /><input name="baseColor" type="color3" value="1, 1, 1" />)", Energy::Bounded,
+   "an index-matched smooth transmission: the interface passes everything straight through"},
   {"hair_white", "hair", "", Energy::Lossless,
    "no absorption, white tints: sum_p Ap = 1 and Mp, Np are normalised (Chiang 2016 eq. 3; d'Eon 2011 eq. 7)"},
   {"hair_roughness_0", "hair", R"(<input name="roughness_R" type="vector2" value="0, 0" /><input name="roughness_TT" type="vector2" value="0, 0" /><input name="roughness_TRT" type="vector2" value="0, 0" />)", Energy::Lossless,
@@ -179,6 +187,7 @@ std::string document(const HardCase& c) {
   const std::string node = model == "openpbr" ? "open_pbr_surface"
                            : model == "usd"   ? "UsdPreviewSurface"
                            : model == "gltf"  ? "gltf_pbr"
+                           : model == "disney" ? "disney_principled"
                                               : "standard_surface";
   return mtlx(fmt::format("  <{0} name=\"s\" type=\"surfaceshader\">\n    {1}\n  </{0}>\n"
                           "  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
@@ -336,7 +345,10 @@ TEST(Reciprocity, SingleLobesAreReciprocal) {
       R"(<generalized_schlick_bsdf name="bsdf" type="BSDF"><input name="roughness" type="vector2" value="0.6, 0.6" /></generalized_schlick_bsdf>)",
       R"(<oren_nayar_diffuse_bsdf name="bsdf" type="BSDF"><input name="roughness" type="float" value="0.8" /></oren_nayar_diffuse_bsdf>)",
       R"(<oren_nayar_diffuse_bsdf name="bsdf" type="BSDF"><input name="roughness" type="float" value="0.8" /><input name="energy_compensation" type="boolean" value="true" /></oren_nayar_diffuse_bsdf>)",
-      R"(<burley_diffuse_bsdf name="bsdf" type="BSDF"><input name="roughness" type="float" value="0.7" /></burley_diffuse_bsdf>)",
+      // Roughness 0.2: Burley's albedo stays under 1 (0.988 at most) from 3 to 90 degrees, where
+      // the lobe is not rescaled by it (mxc_burley_albedo; rougher, the rescaling by E(wo) is
+      // not reciprocal).
+      R"(<burley_diffuse_bsdf name="bsdf" type="BSDF"><input name="roughness" type="float" value="0.2" /></burley_diffuse_bsdf>)",
   };
   std::mt19937 random(99);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);

@@ -150,33 +150,39 @@ vec3 mxc_hair_albedo(MxcHair l, vec3 wo) {
   return h.a[0] + h.a[1] + h.a[2] + h.a[3];
 }
 
-vec3 mxc_hair_eval(MxcHair l, vec3 wo, vec3 wi) {
+// A direction pair seen from wo's side of the fibre (mxc_hair_side): the view's quantities and
+// wi's longitudinal angle and azimuth relative to wo's.
+struct MxcHairPair {
+  MxcHairView h;
+  float sinI, cosI, phi;
+};
+MxcHairPair mxc_hair_pair(MxcHair l, vec3 wo, vec3 wi) {
   bool flip = wo.z < 0.0;
   wo = mxc_hair_side(wo, flip);
   wi = mxc_hair_side(wi, flip);
-  MxcHairView h = mxc_hair_view(l, wo);
-  float sinI = clamp(wi.x, -1.0, 1.0);
-  float cosI = mxc_safe_sqrt(1.0 - sinI * sinI);
-  float phi = (wi.y * wi.y + wi.z * wi.z > 1e-12 ? atan(wi.y, wi.z) : 0.0) - h.phiO;
+  MxcHairPair x;
+  x.h = mxc_hair_view(l, wo);
+  x.sinI = clamp(wi.x, -1.0, 1.0);
+  x.cosI = mxc_safe_sqrt(1.0 - x.sinI * x.sinI);
+  x.phi = (wi.y * wi.y + wi.z * wi.z > 1e-12 ? atan(wi.y, wi.z) : 0.0) - x.h.phiO;
+  return x;
+}
+
+vec3 mxc_hair_eval(MxcHair l, vec3 wo, vec3 wi) {
+  MxcHairPair x = mxc_hair_pair(l, wo, wi);
   vec3 f = vec3(0.0);
-  for (int p = 0; p < 4; ++p) f += h.a[p] * mxc_hair_lobe(l, h, p, sinI, cosI, phi);
+  for (int p = 0; p < 4; ++p) f += x.h.a[p] * mxc_hair_lobe(l, x.h, p, x.sinI, x.cosI, x.phi);
   return f;
 }
 
 float mxc_hair_pdf(MxcHair l, vec3 wo, vec3 wi) {
-  bool flip = wo.z < 0.0;
-  wo = mxc_hair_side(wo, flip);
-  wi = mxc_hair_side(wi, flip);
-  MxcHairView h = mxc_hair_view(l, wo);
-  float sinI = clamp(wi.x, -1.0, 1.0);
-  float cosI = mxc_safe_sqrt(1.0 - sinI * sinI);
-  float phi = (wi.y * wi.y + wi.z * wi.z > 1e-12 ? atan(wi.y, wi.z) : 0.0) - h.phiO;
+  MxcHairPair x = mxc_hair_pair(l, wo, wi);
   float total = 0.0;
   float pdf = 0.0;
   for (int p = 0; p < 4; ++p) {
-    float c = mxc_hair_choice(h, p);
+    float c = mxc_hair_choice(x.h, p);
     total += c;
-    pdf += c * mxc_hair_lobe(l, h, p, sinI, cosI, phi);
+    pdf += c * mxc_hair_lobe(l, x.h, p, x.sinI, x.cosI, x.phi);
   }
   return pdf / total;  // total >= 4e-6
 }

@@ -261,6 +261,28 @@ vec3 mxc_burley(vec3 rho, float roughness, vec3 wo, vec3 wi) {
   float fo = 1.0 + (fd90 - 1.0) * pow(1.0 - clamp(wo.z, 0.0, 1.0), 5.0);
   return rho * MXC_INV_PI * fi * fo;
 }
+
+// The directional albedo of Burley's diffuse for a white colour, exactly. Averaged over the
+// azimuth, f_d mu_i is a polynomial of degree 8 in mu_i (the azimuth enters
+// fd90 = 0.5 + 2 r cos^2(theta_d) = 0.5 + r (1 + wo.wi) linearly and squared), so Gauss-Legendre
+// with 5 points on [0, 1] integrates it without error (exact to degree 9). It exceeds 1 where
+// the retro-reflection is strong: 1.006 at r = 0.5 seen from the normal, 1.38 at r = 1 and
+// mu_o = 0.1; it is 0.69 at r = 0 there.
+float mxc_burley_albedo(float muo, float r) {
+  const float x[5] = float[](0.0469100770, 0.2307653449, 0.5, 0.7692346551, 0.9530899230);
+  const float w[5] = float[](0.1184634425, 0.2393143352, 0.2844444444, 0.2393143352, 0.1184634425);
+  float c = pow(1.0 - muo, 5.0);  // muo in [0, 1]
+  float sin2o = 1.0 - muo * muo;
+  float e = 0.0;
+  for (int k = 0; k < 5; ++k) {
+    float mi = x[k];
+    float a = pow(1.0 - mi, 5.0);
+    float g = r * (1.0 + mi * muo) - 0.5;                       // fd90 - 1, averaged over the azimuth
+    float g2 = g * g + 0.5 * r * r * (1.0 - mi * mi) * sin2o;   // (fd90 - 1)^2, averaged
+    e += w[k] * 2.0 * mi * (1.0 + g * (a + c) + g2 * a * c);
+  }
+  return e;
+}
 #endif
 
 // ---- Multiple-scattering energy compensation ----
@@ -343,7 +365,10 @@ vec3 mxc_lobe_albedo_scaled(MxcLobe l, vec3 wo, vec3 ms) {
   if (l.kind == MXC_LOBE_DIFFUSE) return l.c0 * mxc_fon_albedo(l.p0, mu);
 #endif
   if (l.kind == MXC_LOBE_SHEET) return l.c0;
-  return l.c0;  // EON (albedo ~ rho), Burley, translucent
+#ifdef MXC_HAS_BURLEY
+  if (l.kind == MXC_LOBE_BURLEY) return l.c0 * min(mxc_burley_albedo(mu, l.p0), 1.0);  // as eval scales it
+#endif
+  return l.c0;  // EON (albedo ~ rho), translucent
 }
 
 // The lobe's directional albedo at wo, with its multiple-scattering compensation where the tier
@@ -397,7 +422,11 @@ vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi) {
 #endif
 #ifdef MXC_HAS_BURLEY
     case MXC_LOBE_BURLEY:
-      return wo.z > 0.0 && wi.z > 0.0 ? mxc_burley(l.c0, l.p0, wo, wi) * wi.z : vec3(0.0);
+      // Scaled down by its albedo where that exceeds 1: Burley's retro-reflection would reflect
+      // more than it receives (up to 1.38 times at roughness 1 near grazing).
+      return wo.z > 0.0 && wi.z > 0.0
+                 ? mxc_burley(l.c0, l.p0, wo, wi) * wi.z / max(mxc_burley_albedo(clamp(wo.z, 0.0, 1.0), l.p0), 1.0)
+                 : vec3(0.0);
 #endif
 #ifdef MXC_HAS_TRANSLUCENT
     case MXC_LOBE_TRANSLUCENT:

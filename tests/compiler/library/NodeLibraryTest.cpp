@@ -15,7 +15,7 @@ namespace {
 TEST(NodeLibrary, BuiltinLibraryLoadsCleanly) {
   Context context;
   EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
-  EXPECT_EQ(context.libraries.top().nodeDefCount(), 776u);
+  EXPECT_EQ(context.libraries.top().nodeDefCount(), 777u);
   EXPECT_NE(context.libraries.top().findNodeDef("ND_open_pbr_surface_surfaceshader"), nullptr);
   EXPECT_NE(context.libraries.top().findGeomPropDef("Nworld"), nullptr);
   EXPECT_TRUE(context.libraries.top().isKnownType("BSDF"));
@@ -57,11 +57,12 @@ TEST(NodeLibrary, BuiltinIsSignatureCompatibleWithMaterialX) {
     for (const doc::NodeDef& theirDef : d->nodedefs) {
       // Helpers that only MaterialX's own OpenPBR graph uses; mxc lowers OpenPBR in C++.
       if (theirDef.name == "ND_open_pbr_anisotropy") continue;
-      // Only the definitions of the libraries mxc provides (not disney, lama, translations, nor
-      // the USD and glTF texture nodes: of those two files, the shading models only).
+      // Only the definitions of the libraries mxc provides (not lama, translations, nor the USD
+      // and glTF texture nodes: of those two files, the shading models only).
       std::string path = d->path();
       bool provided = path.find("_defs.mtlx") != std::string::npos || path.find("bxdf/standard_surface") != std::string::npos ||
                       path.find("bxdf/open_pbr_surface") != std::string::npos ||
+                      path.find("bxdf/disney_principled") != std::string::npos ||
                       theirDef.name == "ND_UsdPreviewSurface_surfaceshader" || theirDef.name == "ND_gltf_pbr_surfaceshader";
       if (!provided) continue;
       const doc::NodeDef* myDef = mine.findNodeDef(theirDef.name);
@@ -92,8 +93,8 @@ TEST(NodeLibrary, BuiltinIsSignatureCompatibleWithMaterialX) {
     }
   }
   // Every nodedef of the libraries mxc provides: stdlib 703, pbrlib 42, cmlib 20, nprlib 3,
-  // lights 3, Standard Surface 2, OpenPBR 1, UsdPreviewSurface 1, glTF PBR 1.
-  EXPECT_EQ(compared, 776u);
+  // lights 3, Standard Surface 2, OpenPBR 1, UsdPreviewSurface 1, glTF PBR 1, Disney Principled 1.
+  EXPECT_EQ(compared, 777u);
 }
 
 TEST(NodeLibrary, LaterLayersShadowEarlierDefinitions) {
