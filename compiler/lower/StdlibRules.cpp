@@ -326,6 +326,51 @@ ExprId place2d(Context& c, const NodeRef& n, std::string_view, Type) {
   ExprId isTrs = c.material.exprs.op(Op::Greater, Type::Bool, {order, c.material.exprs.constantInt(0)});
   return c.b.select(isTrs, trs, srt);
 }
+// glTF's texture lookups (MaterialX's gltf_image, gltf_colorimage, gltf_normalmap): the texture
+// coordinate placed by KHR_texture_transform, uv' = T(offset) R(rotation) S(scale) uv in glTF's
+// frame (origin top left, v down; the extension's matrices are column-major, so R turns
+// counter-clockwise), seen from MaterialX's frame (v up) through the pivot, (0, 1) by default:
+// with d = uv - pivot and R- the rotation by -rotate degrees,
+//   operationorder 0 (glTF's own): R-(d * scale) + offset * (1, -1) + pivot,
+//   operationorder 1: R-(d + offset * (1, -1)) * scale + pivot,
+// MaterialX's place2d of 1 / scale, -rotate and offset * (-1, 1) written without dividing by
+// the scale (a scale of 0 collapses the image to a texel instead of dividing by 0).
+ExprId gltfPlaced(Context& c, const NodeRef& n, bool glTFOrder = false) {
+  ExprId d = c.b.sub(in(c, n, "texcoord"), in(c, n, "pivot"));
+  ExprId scale = in(c, n, "scale");
+  ExprId offset = c.b.mul(in(c, n, "offset"), c.material.exprs.constantVector(Type::Vec2, {1.0f, -1.0f}));
+  ExprId minus = c.b.neg(in(c, n, "rotate"));
+  auto rotated = [&](ExprId v) { return c.material.exprs.op(Op::Rotate2D, Type::Vec2, {v, minus}); };
+  ExprId first = c.b.add(c.b.add(rotated(c.b.mul(d, scale)), offset), in(c, n, "pivot"));
+  if (glTFOrder) return first;
+  ExprId second = c.b.add(c.b.mul(rotated(c.b.add(d, offset)), scale), in(c, n, "pivot"));
+  ExprId isSecond = c.material.exprs.op(Op::Greater, Type::Bool, {in(c, n, "operationorder"), c.material.exprs.constantInt(0)});
+  return c.b.select(isSecond, second, first);
+}
+ExprId gltfTexture(Context& c, const NodeRef& n, Type type, bool glTFOrder) {
+  std::string u = c.stringInput(n, "uaddressmode");
+  std::string v = c.stringInput(n, "vaddressmode");
+  return sample(c, n, gltfPlaced(c, n, glTFOrder), type, u.empty() ? "periodic" : u, v.empty() ? "periodic" : v);
+}
+ExprId gltfImage(Context& c, const NodeRef& n, std::string_view, Type type) {
+  ExprId texel = gltfTexture(c, n, type, false);
+  return hasInput(n, "factor") ? c.b.mul(texel, in(c, n, "factor")) : texel;  // the vector3 variant has no factor
+}
+ExprId gltfColorImage(Context& c, const NodeRef& n, std::string_view output, Type) {
+  // glTF "baseColor": the texture (in glTF's own order of placement) times the colour factor
+  // times the vertex colour; outcolor is its rgb, outa its alpha.
+  ExprId rgba = c.b.mul(c.b.mul(gltfTexture(c, n, Type::Vec4, true), in(c, n, "color")), in(c, n, "geomcolor"));
+  if (output == "outa") return c.b.extract(rgba, 3);
+  return c.material.exprs.opWithString(Op::Swizzle, Type::Vec3, {rgba}, "xyz");
+}
+ExprId gltfNormalmap(Context& c, const NodeRef& n, std::string_view, Type) {
+  // glTF "normalTexture": a tangent-space normal encoded in [0, 1], as normalmap decodes it.
+  ExprId encoded = gltfTexture(c, n, Type::Vec3, false);
+  return c.material.exprs.op(Op::NormalMap, Type::Vec3,
+                             {encoded, c.b.vec(Type::Vec2, 1.0f), c.material.exprs.named(Op::GeomProp, Type::Vec3, "Nworld"),
+                              c.material.exprs.named(Op::GeomProp, Type::Vec3, "Tworld"),
+                              c.material.exprs.named(Op::GeomProp, Type::Vec3, "Bworld")});
+}
 ExprId normalmap(Context& c, const NodeRef& n, std::string_view, Type) {
   ExprId scale = in(c, n, "scale");
   if (c.b.type(scale) == Type::Float) scale = c.b.splat(scale, Type::Vec2);
@@ -651,6 +696,9 @@ const RuleTable& rules() {
       {"hextiledimage", hextiledimage},
       {"place2d", place2d},
       {"normalmap", normalmap},
+      {"gltf_image", gltfImage},
+      {"gltf_colorimage", gltfColorImage},
+      {"gltf_normalmap", gltfNormalmap},
       {"heighttonormal", heighttonormal},
       {"ramp4", ramp4},
       {"line", line},

@@ -1162,6 +1162,55 @@ def build_gltf_pbr():
                        'version': '2.0.1', 'isdefaultversion': 'true', 'doc': 'glTF PBR, version 2.0.1.'},
            inputs + [('output', {'name': 'out', 'type': SS})])
     L.count += 1
+
+    # glTF's texture lookups (a texture with KHR_texture_transform's offset, rotation and scale;
+    # lowered by rules in compiler/lower/StdlibRules.cpp). The placement inputs are MaterialX's:
+    # the pivot (0, 1) turns glTF's top-left origin into MaterialX's bottom-left one.
+    L.section('glTF texture lookups')
+
+    def placement(order):
+        return [
+            i('texcoord', 'vector2', g='UV0'),
+            i('pivot', 'vector2', '0, 1'),
+            i('scale', 'vector2', '1, 1'),
+            i('rotate', 'float', '0', unit='degree', unittype='angle', uimin='0', uimax='360'),
+            i('offset', 'vector2', '0, 0'),
+            i('operationorder', 'integer', order),
+            i('uaddressmode', 'string', 'periodic', u=True, enum='constant,clamp,periodic,mirror'),
+            i('vaddressmode', 'string', 'periodic', u=True, enum='constant,clamp,periodic,mirror'),
+            i('filtertype', 'string', 'linear', u=True, enum='closest,linear,cubic'),
+        ]
+
+    def clean(inputs):
+        return [(tag, {k: v for k, v in attrs.items() if v is not None}) for tag, attrs in inputs]
+
+    zero = {'color3': '0, 0, 0', 'color4': '0, 0, 0, 0', 'float': '0', 'vector3': '0, 0, 0'}
+    one = {'color3': '1,1,1', 'color4': '1,1,1,1', 'float': '1'}
+    for typ in ('color3', 'color4', 'float', 'vector3'):
+        inputs = [i('file', 'filename', '', u=True)]
+        if typ in one:
+            inputs.append(i('factor', typ, one[typ]))
+        inputs.append(i('default', typ, zero[typ]))
+        inputs += placement('1' if typ == 'color4' else '0')
+        L.elem('nodedef', {'name': 'ND_gltf_image_%s_%s_1_0' % (typ, typ), 'node': 'gltf_image', 'version': '1.0',
+                           'isdefaultversion': 'true', 'nodegroup': 'texture2d',
+                           'doc': 'A glTF texture lookup times its factor.'},
+               clean(inputs) + [('output', {'name': 'out', 'type': typ, 'value': zero[typ]})])
+        L.count += 1
+    inputs = [i('file', 'filename', '', u=True), i('default', 'color4', '0, 0, 0, 0')] + placement('1') + [
+        i('color', 'color4', '1, 1, 1, 1'), i('geomcolor', 'color4', '1, 1, 1, 1')]
+    L.elem('nodedef', {'name': 'ND_gltf_colorimage', 'node': 'gltf_colorimage', 'version': '1.0',
+                       'isdefaultversion': 'true', 'nodegroup': 'texture2d',
+                       'doc': 'glTF base colour: texture times colour factor times vertex colour.'},
+           clean(inputs) + [('output', {'name': 'outcolor', 'type': 'color3', 'value': '0, 0, 0'}),
+                            ('output', {'name': 'outa', 'type': 'float', 'value': '0'})])
+    L.count += 1
+    inputs = [i('file', 'filename', '', u=True), i('default', 'vector3', '0.5, 0.5, 1')] + placement('0')
+    L.elem('nodedef', {'name': 'ND_gltf_normalmap_vector3_1_0', 'node': 'gltf_normalmap', 'version': '1.0',
+                       'isdefaultversion': 'true', 'nodegroup': 'texture2d',
+                       'doc': 'A glTF normal texture, as a world-space normal.'},
+           clean(inputs) + [('output', {'name': 'out', 'type': 'vector3', 'value': '0, 0, 0'})])
+    L.count += 1
     return L
 
 

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include "compiler/ir/Evaluate.h"
 #include "compiler/driver/Compiler.h"
@@ -194,6 +196,68 @@ TEST(StdlibRules, HairRoughnessFollowsChiangsFitsPerLobe) {
     ASSERT_GE(r.size(), 2u) << output;
     EXPECT_NEAR(r[0], v * scale, 1e-6) << output;
     EXPECT_NEAR(r[1], s, 1e-6) << output;
+  }
+}
+
+// glTF's texture placement (gltfPlaced in StdlibRules.cpp) against MaterialX's own graph of
+// gltf_image (libraries/bxdf/gltf_pbr.mtlx), copied under another name so that it runs as a
+// graph: the texture coordinate each one samples at, for a transform with every part set, in
+// both operation orders.
+TEST(StdlibRules, GltfImagePlacementMatchesMaterialXsGraph) {
+  std::ifstream file(sharedDir() / "conformance/materialx-tree/libraries/bxdf/gltf_pbr.mtlx");
+  std::stringstream buffer;
+  buffer << file.rdbuf();
+  const std::string library = buffer.str();
+  auto element = [&](const std::string& open, const std::string& close) {
+    const size_t start = library.find(open);
+    const size_t end = library.find(close, start);
+    return start == std::string::npos || end == std::string::npos ? std::string()
+                                                                    : library.substr(start, end + close.size() - start);
+  };
+  std::string definitions = element("<nodedef name=\"ND_gltf_image_color3_color3_1_0\"", "</nodedef>") + "\n" +
+                            element("<nodegraph name=\"NG_NG_gltf_image_color3_color3_1_0\"", "</nodegraph>") + "\n";
+  ASSERT_GT(definitions.size(), 500u) << "MaterialX's gltf_image definition was not found";
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"ND_gltf_image_color3_color3_1_0", "ND_copy"},
+                                 {"NG_NG_gltf_image_color3_color3_1_0", "NG_copy"}, {"node=\"gltf_image\"", "node=\"copy\""}}) {
+    for (size_t at = definitions.find(from); at != std::string::npos; at = definitions.find(from, at + to.size())) {
+      definitions.replace(at, from.size(), to);
+    }
+  }
+  auto sampledAt = [](const std::string& text) -> std::vector<float> {
+    Context context;
+    CompileRequest request;
+    request.document = "test.mtlx";
+    request.text = mtlx(text + "  <surface_unlit name=\"surf\" type=\"surfaceshader\"><input name=\"emission_color\" "
+                               "type=\"color3\" nodename=\"v\"/></surface_unlit>\n  <surfacematerial name=\"M\" "
+                               "type=\"material\"><input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"surf\"/>"
+                               "</surfacematerial>\n");
+    Compiler compiler(context, std::move(request));
+    std::vector<ir::Material> materials = std::move(compiler.materials());
+    EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+    if (materials.empty()) return {};
+    const ir::ExprGraph& g = materials[0].exprs;
+    for (ir::ExprId id = 0; id < g.size(); ++id) {
+      if (g[id].op != ir::Op::ImageSample) continue;
+      std::optional<ir::Constant> uv = ir::evaluateExpr(g, g.arg(id, 1));
+      return uv ? uv->v : std::vector<float>{};
+    }
+    return {};
+  };
+  for (const char* order : {"0", "1"}) {
+    const std::string inputs = std::string("<input name=\"file\" type=\"filename\" value=\"missing.png\"/>") +
+                               "<input name=\"texcoord\" type=\"vector2\" value=\"0.3, 0.7\"/>"
+                               "<input name=\"scale\" type=\"vector2\" value=\"2, 3\"/>"
+                               "<input name=\"rotate\" type=\"float\" value=\"30\"/>"
+                               "<input name=\"offset\" type=\"vector2\" value=\"0.1, 0.2\"/>"
+                               "<input name=\"operationorder\" type=\"integer\" value=\"" + order + "\"/>";
+    const std::vector<float> ours = sampledAt("  <gltf_image name=\"v\" type=\"color3\">" + inputs + "</gltf_image>\n");
+    const std::vector<float> theirs = sampledAt(definitions + "  <copy name=\"v\" type=\"color3\">" + inputs + "</copy>\n");
+    ASSERT_EQ(ours.size(), 2u) << "operationorder " << order;
+    ASSERT_EQ(theirs.size(), 2u) << "operationorder " << order;
+    EXPECT_NEAR(ours[0], theirs[0], 1e-5f) << "operationorder " << order;
+    EXPECT_NEAR(ours[1], theirs[1], 1e-5f) << "operationorder " << order;
+    // And the placement moved the coordinate: the test sees the transform.
+    EXPECT_GT(std::abs(ours[0] - 0.3f) + std::abs(ours[1] - 0.7f), 0.1f) << "operationorder " << order;
   }
 }
 
