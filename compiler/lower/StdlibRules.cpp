@@ -391,27 +391,36 @@ ExprId ramp4(Context& c, const NodeRef& n, std::string_view, Type) {
   ExprId bottom = c.b.lerp(in(c, n, "valuebl"), in(c, n, "valuebr"), s);
   return c.b.lerp(bottom, top, t);
 }
-ExprId line(Context& c, const NodeRef& n, std::string_view, Type) {
-  // 1 within `radius` of the segment point1-point2 (about `center`), else 0: the distance to
-  // the segment is |p - a - (b - a) h|, h the clamped projection. A zero-length segment has
-  // |b - a|^2 = 0: the division is guarded (h then 0, the distance to the point).
-  ExprId p = c.b.sub(in(c, n, "texcoord"), in(c, n, "center"));
-  ExprId pa = c.b.sub(p, in(c, n, "point1"));
-  ExprId ba = c.b.sub(in(c, n, "point2"), in(c, n, "point1"));
+// 1 within `radius` of the segment a-b, else 0: the distance to the segment is |p - a - (b - a) h|,
+// h the clamped projection. A zero-length segment has |b - a|^2 = 0: the division is guarded (h
+// then 0, the distance to the point).
+ExprId segmentMask(Context& c, ExprId p, ExprId a, ExprId b, ExprId radius) {
+  ExprId pa = c.b.sub(p, a);
+  ExprId ba = c.b.sub(b, a);
   ExprId h = c.b.clamp(c.b.safeDiv(c.b.dot(pa, ba), c.b.dot(ba, ba), 1e-12f), c.b.f(0.0f), c.b.f(1.0f));
   ExprId distance = c.material.exprs.op(Op::Length, Type::Float, {c.b.sub(pa, c.b.mul(ba, h))});
-  return c.b.select(c.b.greater(distance, in(c, n, "radius")), c.b.f(0.0f), c.b.f(1.0f));
+  return c.b.select(c.b.greater(distance, radius), c.b.f(0.0f), c.b.f(1.0f));
+}
+// 1 inside the disc of `radius` about the origin: |p|^2 <= radius^2.
+ExprId discMask(Context& c, ExprId p, ExprId radius) {
+  return c.b.select(c.b.greater(c.b.dot(p, p), c.b.mul(radius, radius)), c.b.f(0.0f), c.b.f(1.0f));
+}
+ExprId line(Context& c, const NodeRef& n, std::string_view, Type) {
+  // The segment point1-point2 about `center`.
+  ExprId p = c.b.sub(in(c, n, "texcoord"), in(c, n, "center"));
+  return segmentMask(c, p, in(c, n, "point1"), in(c, n, "point2"), in(c, n, "radius"));
 }
 ExprId circle(Context& c, const NodeRef& n, std::string_view, Type) {
-  // 1 inside the disc of `radius` about `center`: |p - center|^2 <= radius^2.
-  ExprId d = c.b.sub(in(c, n, "texcoord"), in(c, n, "center"));
-  ExprId radius = in(c, n, "radius");
-  return c.b.select(c.b.greater(c.b.dot(d, d), c.b.mul(radius, radius)), c.b.f(0.0f), c.b.f(1.0f));
+  return discMask(c, c.b.sub(in(c, n, "texcoord"), in(c, n, "center")), in(c, n, "radius"));
+}
+// The cells of checkerboard, grid, crosshatch and tiledcircles: texcoord * uvtiling - uvoffset.
+ExprId tiledCoordinate(Context& c, const NodeRef& n) {
+  return c.b.sub(c.b.mul(in(c, n, "texcoord"), in(c, n, "uvtiling")), in(c, n, "uvoffset"));
 }
 ExprId checkerboard(Context& c, const NodeRef& n, std::string_view, Type) {
   // color1 on the cells where floor(u') + floor(v') is odd, color2 on the others, for
   // (u', v') = texcoord * uvtiling - uvoffset.
-  ExprId uv = c.b.sub(c.b.mul(in(c, n, "texcoord"), in(c, n, "uvtiling")), in(c, n, "uvoffset"));
+  ExprId uv = tiledCoordinate(c, n);
   ExprId cells = c.b.unary(Op::Floor, uv);
   ExprId odd = c.b.mod(c.b.add(c.b.extract(cells, 0), c.b.extract(cells, 1)), c.b.f(2.0f));
   return c.b.lerp(in(c, n, "color2"), in(c, n, "color1"), odd);
@@ -420,7 +429,7 @@ ExprId grid(Context& c, const NodeRef& n, std::string_view, Type) {
   // Lines of width `thickness` (in cell units) on the cell edges of texcoord * uvtiling -
   // uvoffset: a coordinate is on a line where |2 mod(x, 1) - 1| > 1 - thickness. Staggered rows
   // (odd ones, mod(y, 2) > 1) shift by half a cell along x.
-  ExprId uv = c.b.sub(c.b.mul(in(c, n, "texcoord"), in(c, n, "uvtiling")), in(c, n, "uvoffset"));
+  ExprId uv = tiledCoordinate(c, n);
   ExprId x = c.b.extract(uv, 0);
   ExprId y = c.b.extract(uv, 1);
   ExprId shift = c.b.select(c.b.greater(c.b.mod(y, c.b.f(2.0f)), c.b.f(1.0f)), c.b.f(0.5f), c.b.f(0.0f));
@@ -431,6 +440,42 @@ ExprId grid(Context& c, const NodeRef& n, std::string_view, Type) {
     return c.b.select(c.b.greater(edge, limit), c.b.f(1.0f), c.b.f(0.0f));
   };
   return c.b.splat(c.b.max(onLine(x), onLine(y)), Type::Vec3);
+}
+ExprId crosshatch(Context& c, const NodeRef& n, std::string_view, Type) {
+  // Both diagonals of each cell, `thickness` wide, in the cell mapped to [-1, 1]^2; staggered
+  // rows (mod(y, 2) > 1) shift by half a cell along x, as grid's.
+  ExprId uv = tiledCoordinate(c, n);
+  ExprId x = c.b.extract(uv, 0);
+  ExprId y = c.b.extract(uv, 1);
+  ExprId shift = c.b.select(c.b.greater(c.b.mod(y, c.b.f(2.0f)), c.b.f(1.0f)), c.b.f(0.5f), c.b.f(0.0f));
+  x = c.b.select(in(c, n, "staggered"), c.b.add(x, shift), x);
+  auto centred = [&](ExprId t) { return c.b.sub(c.b.mul(c.b.mod(t, c.b.f(1.0f)), c.b.f(2.0f)), c.b.f(1.0f)); };
+  ExprId p = c.b.construct(Type::Vec2, {centred(x), centred(y)});
+  auto corner = [&](float u, float v) { return c.material.exprs.constantVector(Type::Vec2, {u, v}); };
+  ExprId radius = in(c, n, "thickness");
+  ExprId lines = c.b.max(segmentMask(c, p, corner(1, 1), corner(-1, -1), radius),
+                         segmentMask(c, p, corner(-1, 1), corner(1, -1), radius));
+  return c.b.splat(lines, Type::Vec3);
+}
+ExprId tiledcircles(Context& c, const NodeRef& n, std::string_view, Type) {
+  // Regular: a disc of diameter 2 size (radius `size` in the cell mapped to [-1, 1]^2) in each
+  // cell. Staggered: discs of radius size / 2 on a hexagonal lattice of rows sqrt(3) / 2 apart
+  // (every other row shifted by half a cell), each cell of a row seeing the discs at its two
+  // lower corners and at the middle of its top edge.
+  ExprId uv = tiledCoordinate(c, n);
+  ExprId regular = discMask(c, c.b.sub(c.b.mul(c.b.mod(uv, c.b.f(1.0f)), c.b.f(2.0f)), c.b.f(1.0f)), in(c, n, "size"));
+  const float rowPair = 1.73205f, row = 0.866025f;  // sqrt(3), sqrt(3) / 2
+  ExprId x = c.b.extract(uv, 0);
+  ExprId y = c.b.extract(uv, 1);
+  ExprId shift = c.b.select(c.b.greater(c.b.mod(y, c.b.f(rowPair)), c.b.f(row)), c.b.f(0.5f), c.b.f(0.0f));
+  ExprId mx = c.b.mod(c.b.add(x, shift), c.b.f(1.0f));
+  ExprId my = c.b.mod(y, c.b.f(row));
+  ExprId radius = c.b.mul(in(c, n, "size"), c.b.f(0.5f));
+  ExprId lowerLeft = discMask(c, c.b.construct(Type::Vec2, {mx, my}), radius);
+  ExprId lowerRight = discMask(c, c.b.construct(Type::Vec2, {c.b.sub(c.b.f(1.0f), mx), my}), radius);
+  ExprId top = discMask(c, c.b.construct(Type::Vec2, {c.b.sub(mx, c.b.f(0.5f)), c.b.sub(c.b.f(row), my)}), radius);
+  ExprId staggered = c.b.max(c.b.max(lowerLeft, lowerRight), top);
+  return c.b.splat(c.b.select(in(c, n, "staggered"), staggered, regular), Type::Vec3);
 }
 ExprId trianglewave(Context& c, const NodeRef& n, std::string_view, Type) {
   // Period 1, 0 at the integers and 0.5 half-way: 0.5 - |mod(|x|, 1) - 0.5|.
@@ -706,6 +751,8 @@ const RuleTable& rules() {
       {"circle", circle},
       {"checkerboard", checkerboard},
       {"grid", grid},
+      {"crosshatch", crosshatch},
+      {"tiledcircles", tiledcircles},
       {"bump", bump},
       {"noise2d", noise2d},
       {"noise3d", noise3d},

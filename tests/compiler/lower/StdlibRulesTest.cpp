@@ -1,11 +1,12 @@
 // Value-node rules (compiler/lower/StdlibRules.cpp) against the formulas of MaterialX's own
-// definitions (libraries/stdlib/stdlib_ng.mtlx): each node's output, for constant inputs, folds
-// to the value the definition gives; and the colour spaces of the values they read.
+// definitions: values worked from them by hand, and MaterialX's own graphs of the same nodes run
+// beside the rules (materialxGraphCopy); and the colour spaces of the values they read.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "compiler/ir/Evaluate.h"
@@ -199,30 +200,49 @@ TEST(StdlibRules, HairRoughnessFollowsChiangsFitsPerLobe) {
   }
 }
 
-// glTF's texture placement (gltfPlaced in StdlibRules.cpp) against MaterialX's own graph of
-// gltf_image (libraries/bxdf/gltf_pbr.mtlx), copied under another name so that it runs as a
-// graph: the texture coordinate each one samples at, for a transform with every part set, in
-// both operation orders.
-TEST(StdlibRules, GltfImagePlacementMatchesMaterialXsGraph) {
-  std::ifstream file(sharedDir() / "conformance/materialx-tree/libraries/bxdf/gltf_pbr.mtlx");
-  std::stringstream buffer;
-  buffer << file.rdbuf();
-  const std::string library = buffer.str();
-  auto element = [&](const std::string& open, const std::string& close) {
-    const size_t start = library.find(open);
-    const size_t end = library.find(close, start);
-    return start == std::string::npos || end == std::string::npos ? std::string()
-                                                                    : library.substr(start, end + close.size() - start);
+/// MaterialX's definition of nodedef `nodedef` (from `defs`, a file of MaterialX's libraries)
+/// and the node graph implementing it (from `graphs`), renamed to category "copy" (nodedef
+/// ND_copy) so that a document runs MaterialX's graph where the category would run mxc's rule.
+std::string materialxGraphCopy(const std::string& defs, const std::string& graphs, const std::string& nodedef) {
+  auto read = [](const std::string& library) {
+    std::ifstream file(sharedDir() / "conformance/materialx-tree/libraries" / library);
+    std::stringstream buffer;
+    buffer << file.rdbuf();
+    return buffer.str();
   };
-  std::string definitions = element("<nodedef name=\"ND_gltf_image_color3_color3_1_0\"", "</nodedef>") + "\n" +
-                            element("<nodegraph name=\"NG_NG_gltf_image_color3_color3_1_0\"", "</nodegraph>") + "\n";
-  ASSERT_GT(definitions.size(), 500u) << "MaterialX's gltf_image definition was not found";
-  for (const auto& [from, to] : {std::pair<std::string, std::string>{"ND_gltf_image_color3_color3_1_0", "ND_copy"},
-                                 {"NG_NG_gltf_image_color3_color3_1_0", "NG_copy"}, {"node=\"gltf_image\"", "node=\"copy\""}}) {
-    for (size_t at = definitions.find(from); at != std::string::npos; at = definitions.find(from, at + to.size())) {
-      definitions.replace(at, from.size(), to);
+  auto element = [](const std::string& text, size_t start, const std::string& close) {
+    const size_t end = start == std::string::npos ? std::string::npos : text.find(close, start);
+    return end == std::string::npos ? std::string() : text.substr(start, end + close.size() - start);
+  };
+  const std::string defsText = read(defs);
+  const std::string text = read(graphs);
+  const std::string def = element(defsText, defsText.find("<nodedef name=\"" + nodedef + "\""), "</nodedef>");
+  std::string graph;
+  for (size_t at = text.find("<nodegraph "); at != std::string::npos; at = text.find("<nodegraph ", at + 1)) {
+    if (text.substr(at, text.find('>', at) - at).find("nodedef=\"" + nodedef + "\"") != std::string::npos) {
+      graph = element(text, at, "</nodegraph>");
+      break;
     }
   }
+  if (def.empty() || graph.empty()) return {};
+  std::string copy = def + "\n" + graph + "\n";
+  const size_t graphName = copy.find("<nodegraph name=\"") + 17;
+  copy.replace(graphName, copy.find('"', graphName) - graphName, "NG_copy");
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"\"" + nodedef + "\"", "\"ND_copy\""},
+                                 {"node=\"" + def.substr(def.find("node=\"") + 6, def.find('"', def.find("node=\"") + 6) - def.find("node=\"") - 6) + "\"", "node=\"copy\""}}) {
+    for (size_t at = copy.find(from); at != std::string::npos; at = copy.find(from, at + to.size())) {
+      copy.replace(at, from.size(), to);
+    }
+  }
+  return copy;
+}
+
+// glTF's texture placement (gltfPlaced in StdlibRules.cpp) against MaterialX's own graph of
+// gltf_image (libraries/bxdf/gltf_pbr.mtlx), run as a graph: the texture coordinate each one
+// samples at, for a transform with every part set, in both operation orders.
+TEST(StdlibRules, GltfImagePlacementMatchesMaterialXsGraph) {
+  const std::string definitions = materialxGraphCopy("bxdf/gltf_pbr.mtlx", "bxdf/gltf_pbr.mtlx", "ND_gltf_image_color3_color3_1_0");
+  ASSERT_GT(definitions.size(), 500u) << "MaterialX's gltf_image definition was not found";
   auto sampledAt = [](const std::string& text) -> std::vector<float> {
     Context context;
     CompileRequest request;
@@ -259,6 +279,64 @@ TEST(StdlibRules, GltfImagePlacementMatchesMaterialXsGraph) {
     // And the placement moved the coordinate: the test sees the transform.
     EXPECT_GT(std::abs(ours[0] - 0.3f) + std::abs(ours[1] - 0.7f), 0.1f) << "operationorder " << order;
   }
+}
+
+// The 2D procedural patterns' rules against MaterialX's own graphs of them
+// (libraries/stdlib/stdlib_ng.mtlx), run as graphs: the same value at points of every cell
+// part, regular and staggered.
+TEST(StdlibRules, ProceduralPatternsMatchMaterialXsGraphs) {
+  struct Pattern {
+    const char* nodedef;
+    const char* category;
+    const char* type;
+    const char* inputs;
+  };
+  const Pattern patterns[] = {
+      {"ND_ramp4_float", "ramp4", "float",
+       "<input name=\"valuetl\" type=\"float\" value=\"1\"/><input name=\"valuetr\" type=\"float\" value=\"2\"/>"
+       "<input name=\"valuebl\" type=\"float\" value=\"3\"/><input name=\"valuebr\" type=\"float\" value=\"4\"/>"},
+      {"ND_line_float", "line", "float", "<input name=\"radius\" type=\"float\" value=\"0.15\"/>"},
+      {"ND_circle_float", "circle", "float", "<input name=\"center\" type=\"vector2\" value=\"0.4, 0.5\"/>"},
+      {"ND_checkerboard_color3", "checkerboard", "color3", "<input name=\"uvtiling\" type=\"vector2\" value=\"3, 5\"/>"},
+      {"ND_grid_color3", "grid", "color3", "<input name=\"uvtiling\" type=\"vector2\" value=\"3, 3\"/>"},
+      {"ND_grid_color3", "grid", "color3",
+       "<input name=\"uvtiling\" type=\"vector2\" value=\"3, 3\"/><input name=\"staggered\" type=\"boolean\" value=\"true\"/>"},
+      {"ND_crosshatch_color3", "crosshatch", "color3",
+       "<input name=\"uvtiling\" type=\"vector2\" value=\"3, 3\"/><input name=\"thickness\" type=\"float\" value=\"0.1\"/>"},
+      {"ND_crosshatch_color3", "crosshatch", "color3",
+       "<input name=\"uvtiling\" type=\"vector2\" value=\"3, 3\"/><input name=\"thickness\" type=\"float\" value=\"0.1\"/>"
+       "<input name=\"staggered\" type=\"boolean\" value=\"true\"/>"},
+      {"ND_tiledcircles_color3", "tiledcircles", "color3", "<input name=\"uvtiling\" type=\"vector2\" value=\"3, 3\"/>"},
+      {"ND_tiledcircles_color3", "tiledcircles", "color3",
+       "<input name=\"uvtiling\" type=\"vector2\" value=\"3, 3\"/><input name=\"staggered\" type=\"boolean\" value=\"true\"/>"},
+  };
+  int differing = 0;
+  for (const Pattern& pattern : patterns) {
+    const std::string definitions = materialxGraphCopy("stdlib/stdlib_defs.mtlx", "stdlib/stdlib_ng.mtlx", pattern.nodedef);
+    ASSERT_FALSE(definitions.empty()) << pattern.nodedef;
+    std::set<std::vector<float>> seen;
+    for (int k = 0; k < 48; ++k) {
+      // Points spread over the unit square (a 0.37 / 0.61 lattice), off the cells' exact edges.
+      const float u = std::fmod(0.013f + 0.37f * float(k), 1.0f), v = std::fmod(0.029f + 0.61f * float(k), 1.0f);
+      const std::string inputs = std::string(pattern.inputs) + "<input name=\"texcoord\" type=\"vector2\" value=\"" +
+                                 std::to_string(u) + ", " + std::to_string(v) + "\"/>";
+      const std::vector<float> ours = valueOf("  <" + std::string(pattern.category) + " name=\"v\" type=\"" + pattern.type +
+                                                  "\">" + inputs + "</" + pattern.category + ">\n",
+                                              pattern.type);
+      const std::vector<float> theirs =
+          valueOf(definitions + "  <copy name=\"v\" type=\"" + pattern.type + "\">" + inputs + "</copy>\n", pattern.type);
+      ASSERT_EQ(ours.size(), 3u) << pattern.nodedef;
+      ASSERT_EQ(theirs.size(), 3u) << pattern.nodedef;
+      for (int ch = 0; ch < 3; ++ch) {
+        if (std::abs(ours[ch] - theirs[ch]) > 1e-5f) ++differing;
+        EXPECT_NEAR(ours[ch], theirs[ch], 1e-5f) << pattern.nodedef << " " << pattern.inputs << " at " << u << ", " << v;
+      }
+      seen.insert(ours);
+    }
+    // The points see more than one value: the comparison is not of two constants.
+    EXPECT_GT(seen.size(), 1u) << pattern.nodedef << " " << pattern.inputs;
+  }
+  EXPECT_EQ(differing, 0);
 }
 
 }  // namespace
