@@ -3,6 +3,7 @@
 // Each rule turns a node's inputs into IR expressions; formulas cite their definition.
 
 #include <unordered_map>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -425,15 +426,19 @@ ExprId checkerboard(Context& c, const NodeRef& n, std::string_view, Type) {
   ExprId odd = c.b.mod(c.b.add(c.b.extract(cells, 0), c.b.extract(cells, 1)), c.b.f(2.0f));
   return c.b.lerp(in(c, n, "color2"), in(c, n, "color1"), odd);
 }
-ExprId grid(Context& c, const NodeRef& n, std::string_view, Type) {
-  // Lines of width `thickness` (in cell units) on the cell edges of texcoord * uvtiling -
-  // uvoffset: a coordinate is on a line where |2 mod(x, 1) - 1| > 1 - thickness. Staggered rows
-  // (odd ones, mod(y, 2) > 1) shift by half a cell along x.
+// The tiled coordinate split into x and y, with the odd rows (mod(y, 2) > 1) shifted by half a
+// cell along x when the node's `staggered` is on (grid and crosshatch).
+std::pair<ExprId, ExprId> staggeredCoordinate(Context& c, const NodeRef& n) {
   ExprId uv = tiledCoordinate(c, n);
   ExprId x = c.b.extract(uv, 0);
   ExprId y = c.b.extract(uv, 1);
   ExprId shift = c.b.select(c.b.greater(c.b.mod(y, c.b.f(2.0f)), c.b.f(1.0f)), c.b.f(0.5f), c.b.f(0.0f));
-  x = c.b.select(in(c, n, "staggered"), c.b.add(x, shift), x);
+  return {c.b.select(in(c, n, "staggered"), c.b.add(x, shift), x), y};
+}
+ExprId grid(Context& c, const NodeRef& n, std::string_view, Type) {
+  // Lines of width `thickness` (in cell units) on the cell edges: a coordinate is on a line
+  // where |2 mod(x, 1) - 1| > 1 - thickness.
+  auto [x, y] = staggeredCoordinate(c, n);
   ExprId limit = c.b.sub(c.b.f(1.0f), in(c, n, "thickness"));
   auto onLine = [&](ExprId t) {
     ExprId edge = c.b.abs(c.b.sub(c.b.mul(c.b.mod(t, c.b.f(1.0f)), c.b.f(2.0f)), c.b.f(1.0f)));
@@ -442,13 +447,8 @@ ExprId grid(Context& c, const NodeRef& n, std::string_view, Type) {
   return c.b.splat(c.b.max(onLine(x), onLine(y)), Type::Vec3);
 }
 ExprId crosshatch(Context& c, const NodeRef& n, std::string_view, Type) {
-  // Both diagonals of each cell, `thickness` wide, in the cell mapped to [-1, 1]^2; staggered
-  // rows (mod(y, 2) > 1) shift by half a cell along x, as grid's.
-  ExprId uv = tiledCoordinate(c, n);
-  ExprId x = c.b.extract(uv, 0);
-  ExprId y = c.b.extract(uv, 1);
-  ExprId shift = c.b.select(c.b.greater(c.b.mod(y, c.b.f(2.0f)), c.b.f(1.0f)), c.b.f(0.5f), c.b.f(0.0f));
-  x = c.b.select(in(c, n, "staggered"), c.b.add(x, shift), x);
+  // Both diagonals of each cell, `thickness` wide, in the cell mapped to [-1, 1]^2.
+  auto [x, y] = staggeredCoordinate(c, n);
   auto centred = [&](ExprId t) { return c.b.sub(c.b.mul(c.b.mod(t, c.b.f(1.0f)), c.b.f(2.0f)), c.b.f(1.0f)); };
   ExprId p = c.b.construct(Type::Vec2, {centred(x), centred(y)});
   auto corner = [&](float u, float v) { return c.material.exprs.constantVector(Type::Vec2, {u, v}); };
