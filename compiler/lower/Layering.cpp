@@ -70,7 +70,10 @@ Index attachBase(Context& c, Index top, Index base, const ir::Origin& origin) {
     case ScatterKind::Ambient:
       return base;  // nothing on top: the base shows through
     case ScatterKind::Absorber:
-      return top;  // a black top hides the base
+      // A top with no BSDF (an unconnected side of a mix, the unweighted part of a scaled
+      // BSDF) reflects nothing, so all of the base shows: layer(0, base) = 0 + (1 - 0) base
+      // (MaterialX "layer": top + (1 - albedo(top)) base).
+      return base;
   }
   return top;
 }

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "compiler/lower/ClosureAlgebra.h"
 #include "compiler/lower/Context.h"
 #include "compiler/lower/Layering.h"
 #include "compiler/lower/Media.h"
@@ -199,19 +200,6 @@ Closure conicalEdf(Context& c, const NodeRef& n, std::string_view) {
   return {Closure::Kind::Emission, ir::kNone, {c.material.addEmission(std::move(e))}};
 }
 
-/// Scales the colour of every emitter (a copy of each).
-Closure scaleEmission(Context& c, const Closure& edf, ExprId factor, const ir::Origin& origin) {
-  Closure out{Closure::Kind::Emission, ir::kNone, {}};
-  for (Index i : edf.emissions) {
-    ir::Emission e = c.material.emissions[i];
-    ir::Param* color = e.slots.find(Slot::Color);
-    if (color && color->present()) color->value = c.b.mul(color->value, factor);
-    else e.slots.set(Slot::Color, {factor, origin});
-    out.emissions.push_back(c.material.addEmission(std::move(e)));
-  }
-  return out;
-}
-
 Closure generalizedSchlickEdf(Context& c, const NodeRef& n, std::string_view) {
   // A directional Fresnel-like factor on the base emission: kept on each emitter for the
   // evaluator (lerp(color0, color90, (1 - cos)^exponent) per MaterialX's definition).
@@ -227,82 +215,29 @@ Closure generalizedSchlickEdf(Context& c, const NodeRef& n, std::string_view) {
   return out;
 }
 
+// Each reads its inputs in order into locals: the order of a call's arguments is unspecified,
+// and the order closures are lowered in numbers the IR's interfaces and expressions.
 Closure layer(Context& c, const NodeRef& n, std::string_view) {
-  Closure top = c.closureInput(n, "top");
-  Closure base = c.closureInput(n, "base");
-  if (top.kind != Closure::Kind::Scatter) return base;  // an empty top leaves the base
-  if (base.kind == Closure::Kind::Medium) return scatter(attachMedium(c, top.index, base.index, c.nodeOrigin(n)));
-  if (base.kind != Closure::Kind::Scatter) return top;
-  return scatter(attachBase(c, top.index, base.index, c.nodeOrigin(n)));
+  const Closure top = c.closureInput(n, "top");
+  const Closure base = c.closureInput(n, "base");
+  return layerClosures(c, top, base, c.nodeOrigin(n));
 }
 
 Closure mix(Context& c, const NodeRef& n, std::string_view) {
-  Closure fg = c.closureInput(n, "fg");
-  Closure bg = c.closureInput(n, "bg");
-  ir::Param w = c.param(n, "mix");
-  if (fg.kind == Closure::Kind::Emission || bg.kind == Closure::Kind::Emission) {
-    Closure a = scaleEmission(c, bg, c.b.oneMinus(w.value), w.origin);
-    Closure b = scaleEmission(c, fg, w.value, w.origin);
-    a.emissions.insert(a.emissions.end(), b.emissions.begin(), b.emissions.end());
-    return a;
-  }
-  if (fg.kind == Closure::Kind::Medium || bg.kind == Closure::Kind::Medium) {
-    c.error(c.nodeOrigin(n).location, "mixing volumes (VDFs) is not supported: mix the BSDFs that contain them");
-    return bg;
-  }
-  // mix(fg, bg, w) = (1 - w) bg + w fg: Mix{a: bg, b: fg, weight: w}; an empty side is black.
-  Index a = bg.kind == Closure::Kind::Scatter ? bg.index : c.material.leaf(ir::ScatterKind::Absorber, c.nodeOrigin(n));
-  Index b = fg.kind == Closure::Kind::Scatter ? fg.index : c.material.leaf(ir::ScatterKind::Absorber, c.nodeOrigin(n));
-  return scatter(c.material.mix(a, b, w, c.nodeOrigin(n)));
+  const Closure fg = c.closureInput(n, "fg");
+  const Closure bg = c.closureInput(n, "bg");
+  return mixClosures(c, fg, bg, c.param(n, "mix"), c.nodeOrigin(n));
 }
 
 Closure add(Context& c, const NodeRef& n, std::string_view) {
-  Closure a = c.closureInput(n, "in1");
-  Closure b = c.closureInput(n, "in2");
-  if (a.kind == Closure::Kind::Emission || b.kind == Closure::Kind::Emission) {
-    a.kind = Closure::Kind::Emission;
-    a.emissions.insert(a.emissions.end(), b.emissions.begin(), b.emissions.end());
-    return a;
-  }
-  if (a.kind != Closure::Kind::Scatter) return b;
-  if (b.kind != Closure::Kind::Scatter) return a;
-  c.note(c.nodeOrigin(n), "<add> of BSDFs is not energy-bounded: the sum's albedo can exceed 1");
-  ir::ScatterNode node;
-  node.kind = ir::ScatterKind::Add;
-  node.a = a.index;
-  node.b = b.index;
-  node.origin = c.nodeOrigin(n);
-  return scatter(c.material.addNode(std::move(node)));
+  const Closure a = c.closureInput(n, "in1");
+  const Closure b = c.closureInput(n, "in2");
+  return addClosures(c, a, b, c.nodeOrigin(n));
 }
 
 Closure multiply(Context& c, const NodeRef& n, std::string_view) {
-  Closure child = c.closureInput(n, "in1");
-  ir::Param factor = c.param(n, "in2");
-  if (child.kind == Closure::Kind::Emission) return scaleEmission(c, child, factor.value, factor.origin);
-  if (child.kind == Closure::Kind::Medium) {
-    ir::Medium m = c.material.media[child.index];
-    for (auto& [slot, p] : m.slots.all()) {
-      if (slot == Slot::Absorption || slot == Slot::Scattering) p.value = c.b.mul(p.value, factor.value);
-    }
-    return {Closure::Kind::Medium, c.material.addMedium(std::move(m)), {}};
-  }
-  if (child.kind != Closure::Kind::Scatter) return child;
-  if (c.b.type(factor.value) == Type::Float) {
-    // w f is a surface covered with f over a fraction w, black elsewhere: Mix(Absorber, f, w).
-    // Bounded only for w in [0, 1]: a constant outside that range is noted.
-    if (c.material.exprs.isConstant(factor.value)) {
-      float w = c.material.exprs.constantComponents(factor.value)[0];
-      if (w < 0.0f || w > 1.0f) c.note(factor.origin, fmt::format("a BSDF scaled by {} is not energy-bounded", w));
-    }
-    Index black = c.material.leaf(ir::ScatterKind::Absorber, c.nodeOrigin(n));
-    return scatter(c.material.mix(black, child.index, factor, c.nodeOrigin(n)));
-  }
-  ir::ScatterNode node;
-  node.kind = ir::ScatterKind::Tint;
-  node.a = child.index;
-  node.weight = factor;
-  node.origin = c.nodeOrigin(n);
-  return scatter(c.material.addNode(std::move(node)));
+  const Closure child = c.closureInput(n, "in1");
+  return scaleClosure(c, child, c.param(n, "in2"), c.nodeOrigin(n));
 }
 
 Closure surface(Context& c, const NodeRef& n, std::string_view) {

@@ -431,6 +431,19 @@ TEST(PbrlibLowering, LayerAndMixBuildStacks) {
   EXPECT_EQ(l.effects(), (std::vector<std::string>{"coat", "diffuse", "metal", "specular"}));
 }
 
+TEST(PbrlibLowering, AScaledTopLetsTheBaseShowWhereItIsAbsent) {
+  // layer(0.4 top, base) = 0.4 top + (1 - 0.4 E_top) base (MaterialX "layer"): where the top
+  // is absent the base shows, so the scaled top is a coverage, not a black surface.
+  Lowered l = lower(mtlx(
+      "  <oren_nayar_diffuse_bsdf name=\"d\" type=\"BSDF\"/>\n  <dielectric_bsdf name=\"coat\" type=\"BSDF\"/>\n"
+      "  <multiply name=\"scaled\" type=\"BSDF\">\n    <input name=\"in1\" type=\"BSDF\" nodename=\"coat\"/>\n"
+      "    <input name=\"in2\" type=\"float\" value=\"0.4\"/>\n  </multiply>\n"
+      "  <layer name=\"coated\" type=\"BSDF\">\n    <input name=\"top\" type=\"BSDF\" nodename=\"scaled\"/>\n"
+      "    <input name=\"base\" type=\"BSDF\" nodename=\"d\"/>\n  </layer>\n"
+      "  <surface name=\"surf\" type=\"surfaceshader\"><input name=\"bsdf\" type=\"BSDF\" nodename=\"coated\"/></surface>\n"));
+  EXPECT_EQ(ir::structureSignature(l.only()), "mix(slab(diffuse,-,-),slab(dielectric:RT,-,slab(diffuse,-,-)))");
+}
+
 TEST(PbrlibLowering, AddIsFlaggedAsNotEnergyBounded) {
   Lowered l = lower(mtlx(
       "  <oren_nayar_diffuse_bsdf name=\"a\" type=\"BSDF\"/>\n  <sheen_bsdf name=\"b\" type=\"BSDF\"/>\n"
