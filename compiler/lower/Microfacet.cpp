@@ -25,7 +25,10 @@ std::pair<ExprId, ExprId> gulbrandsenIor(ir::ExprBuilder& b, ExprId reflectivity
   ExprId sqrtR = b.sqrt(r);
   ExprId nMin = b.div(b.oneMinus(r), b.add(one, r));
   ExprId nMax = b.div(b.add(one, sqrtR), b.oneMinus(sqrtR));
-  ExprId n = b.lerp(nMax, nMin, edgeTint);
+  // g is the weight between the two bounds of n (Gulbrandsen eq. 8): in [0, 1], n stays in
+  // [nMin, nMax] (> 0); an edge tint above 1 (a colour taken to another working space) would
+  // push n below nMin, even negative.
+  ExprId n = b.lerp(nMax, nMin, b.clamp01(edgeTint));
   ExprId np1 = b.add(n, one);
   ExprId nm1 = b.sub(n, one);
   ExprId k2 = b.div(b.sub(b.mul(b.mul(np1, np1), r), b.mul(nm1, nm1)), b.oneMinus(r));

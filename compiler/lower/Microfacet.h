@@ -21,8 +21,8 @@ ir::ExprId burleyAlpha(ir::ExprBuilder& b, ir::ExprId roughness, ir::ExprId anis
 
 /// Gulbrandsen 2014, "Artist Friendly Metallic Fresnel", eqs. 7-9: the complex IOR (n, k) of a
 /// conductor with normal reflectivity r and edge tint g (vec3 each).
-/// Guards: r clamped to [0, 0.99] keeps 1 - r and 1 - sqrt(r) >= 0.005; k's radicand is
-/// clamped at 0.
+/// Guards: r clamped to [0, 0.99] keeps 1 - r and 1 - sqrt(r) >= 0.005; g clamped to [0, 1]
+/// (the interpolation weight of eq. 8) keeps n between its bounds; k's radicand is clamped at 0.
 std::pair<ir::ExprId, ir::ExprId> gulbrandsenIor(ir::ExprBuilder& b, ir::ExprId reflectivity, ir::ExprId edgeTint);
 
 }  // namespace mxc::lower

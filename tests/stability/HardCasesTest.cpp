@@ -44,7 +44,7 @@ bool lossless(Energy energy, Accuracy accuracy) {
 
 struct HardCase {
   const char* name;
-  const char* model;   ///< "openpbr", "standard", "usd", "gltf", "disney" (shading node with `inputs`), "hair" (a chiang_hair_bsdf with `inputs`) or "document" (`inputs` is the body)
+  const char* model;   ///< "openpbr", "standard", "usd", "gltf", "disney" (shading node with `inputs`), "hair" (a chiang_hair_bsdf with `inputs`), "bsdf" (BSDF nodes, the surface's named "b") or "document" (`inputs` is the body)
   const char* inputs;  ///< <input> elements, or a document body
   Energy energy;
   const char* why;     ///< the expectation and the section of the spec or paper behind it
@@ -175,6 +175,10 @@ const HardCase kCases[] = {
    "a tilt of -90 degrees, an IOR below 1 (the modified IOR eta' floored) and an opaque blue channel"},
   {"hair_tint_above_1_along_normal", "hair", R"(<input name="tint_R" type="color3" value="4, 4, 4" /><input name="tint_TT" type="color3" value="2, 2, 2" /><input name="curve_direction" type="vector3" value="0, 0, 1" />)", Energy::Bounded,
    "tints are clamped to 1 (no gain); a fibre along the normal falls back to another tangent frame"},
+  {"dielectric_ior_1_rough_anisotropic_transmission", "bsdf", R"(<dielectric_bsdf name="t" type="BSDF"><input name="ior" type="float" value="1" /><input name="roughness" type="vector2" value="0.25, 1" /><input name="scatter_mode" type="string" value="RT" /></dielectric_bsdf><anisotropic_vdf name="v" type="VDF" /><layer name="b" type="BSDF"><input name="top" type="BSDF" nodename="t" /><input name="base" type="VDF" nodename="v" /></layer>)", Energy::Lossless,
+   "an index-matched interface refracts every microfacet's light straight on: the transmission is a delta at any roughness, R + T = 1 (Walter et al. 2007 eq. 16: the refraction half vector vanishes)"},
+  {"thin_film_on_index_matched_rough_over_white", "bsdf", R"(<dielectric_bsdf name="t" type="BSDF"><input name="ior" type="float" value="1.02" /><input name="roughness" type="vector2" value="0.09, 0.09" /><input name="thinfilm_thickness" type="float" value="600" /><input name="thinfilm_ior" type="float" value="1.3" /></dielectric_bsdf><oren_nayar_diffuse_bsdf name="d" type="BSDF"><input name="color" type="color3" value="1, 1, 1" /></oren_nayar_diffuse_bsdf><layer name="b" type="BSDF"><input name="top" type="BSDF" nodename="t" /><input name="base" type="BSDF" nodename="d" /></layer>)", Energy::Bounded,
+   "a film reflects where the nearly index-matched interface under it does not (F0 = 1e-4): the layer under it gets what the film does not reflect, no more"},
 };
 // clang-format on
 
@@ -183,6 +187,7 @@ std::string document(const HardCase& c) {
   if (std::string(c.model) == "hair") {
     return bsdfDocument(fmt::format("  <chiang_hair_bsdf name=\"bsdf\" type=\"BSDF\">{}</chiang_hair_bsdf>\n", c.inputs));
   }
+  if (std::string(c.model) == "bsdf") return bsdfDocument(c.inputs, "b");
   const std::string model = c.model;
   const std::string node = model == "openpbr" ? "open_pbr_surface"
                            : model == "usd"   ? "UsdPreviewSurface"

@@ -122,6 +122,11 @@ float mxc_dielectric_albedo(float mu, float alpha, float eta) {
 
 float mxc_lobe_eta(MxcLobe l, bool above) { return above ? l.eta : 1.0 / l.eta; }
 
+// An index-matched interface (|eta - 1| < 1e-4) refracts every microfacet's light straight on:
+// its transmission is the delta wi = -wo at any roughness, and the rough refraction's half
+// vector -(wo + eta wi) vanishes there (Walter et al. 2007, eq. 16). Its reflection stays rough.
+bool mxc_index_matched(MxcLobe l) { return abs(l.eta - 1.0) < 1e-4; }
+
 vec3 mxc_lobe_fresnel(MxcLobe l, float cosh, bool above) {
   // Only the kinds the material has are compiled (the lobe kinds' macros, ShaderBuilder.cpp).
   vec3 f = vec3(1.0);
@@ -180,7 +185,7 @@ vec3 mxc_microfacet_reflect(MxcLobe l, vec3 wo, vec3 wi) {
 // f |cos| of the transmission (Walter et al. 2007, eq. 21) with the roles arranged so that its
 // integral over wi is the transmittance (1 - F) seen from wo: flux is conserved, R + T = 1.
 vec3 mxc_dielectric_transmit(MxcLobe l, vec3 wo, vec3 wi) {
-  if (wo.z * wi.z >= 0.0 || mxc_is_delta(l.alpha)) return vec3(0.0);
+  if (wo.z * wi.z >= 0.0 || mxc_is_delta(l.alpha) || mxc_index_matched(l)) return vec3(0.0);
   bool above = wo.z > 0.0;
   float eta = mxc_lobe_eta(l, above);  // n(wi side) / n(wo side)
   vec3 h = -(wo + eta * wi);
@@ -300,17 +305,38 @@ float mxc_burley_albedo(float muo, float r) {
 // mxc_lobe_eval is the single-scattering lobe; the closure applies the factor, computed once per
 // lobe for its view (mxc_closure_prepare), and the lobe's albedo includes it. Other lobe kinds
 // have no factor.
+vec3 mxc_lobe_albedo_scaled(MxcLobe l, vec3 wo, vec3 ms);  // below: the albedo with a given factor
+
 vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo) {
   bool microfacet = l.kind == MXC_LOBE_DIELECTRIC || l.kind == MXC_LOBE_CONDUCTOR || l.kind == MXC_LOBE_SCHLICK;
   if (!microfacet || mxc_is_delta(l.alpha)) return vec3(1.0);
   float alpha = sqrt(l.alpha.x * l.alpha.y);  // the tables' isotropic alpha: geometric mean
+  // Index-matched: the transmission is the exact delta (what the reflection does not take),
+  // nothing for the compensation to restore.
+  if (l.kind == MXC_LOBE_DIELECTRIC && mxc_index_matched(l)) return vec3(1.0);
   if (l.kind == MXC_LOBE_DIELECTRIC && (l.mode & MXC_THIN_WALL) == 0) {
     float e = mxc_dielectric_albedo_rt(abs(wo.z), alpha, mxc_lobe_eta(l, wo.z >= 0.0));
     // Height-correlated masking on both sides of a refraction takes E_RT towards 0 near
     // grazing and index matching (0.024 at mu = 0.07, alpha = 0.65, eta = 1.1; 0.14 at
     // eta = 1.5, alpha = 1); the floor caps the factor at 20 there, losing some energy rather
     // than amplifying the samples' noise without bound.
-    return vec3(1.0 / max(e, 0.05));
+    vec3 k = vec3(1.0 / max(e, 0.05));
+#ifdef MXC_THIN_FILM
+    if (l.film.z > 0.0 && l.film.x > 0.0 && wo.z > 0.0) {
+      // The bare interface's E_RT does not see the film's reflection (up to 1 near grazing
+      // over an index-matched base, where E_RT is small). A lobe that only reflects (over a
+      // base) is compensated as a reflector of the film's normal-incidence Fresnel, as the
+      // conductor below; every factor is kept at most 1 / E_R(film), so that the compensated
+      // reflection never exceeds what arrives.
+      if (!mxc_lobe_transmits(l)) {
+        vec2 ab = mxc_split_sum(max(wo.z, 0.0), alpha);
+        float w = ab.x + ab.y;
+        k = 1.0 + mxc_lobe_fresnel(l, 1.0, true) * (1.0 - w) / max(w, 0.05);
+      }
+      k = min(k, 1.0 / max(mxc_lobe_albedo_scaled(l, wo, vec3(1.0)), vec3(1e-3)));
+    }
+#endif
+    return k;
   }
   vec2 ab = mxc_split_sum(max(wo.z, 0.0), alpha);
   float e = ab.x + ab.y;  // F = 1: 1 - ln 2 = 0.307 at worst (alpha = 1, mu = 1)
@@ -321,6 +347,31 @@ vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo) { return vec3(1.0); }
 #endif
 
 // ---- The lobe interface used by the closure ----
+
+#ifdef MXC_THIN_FILM
+// The reflection albedo of a filmed microfacet interface at wo (above): the white GGX albedo
+// A + B (the tables) times the film's Fresnel averaged over the light the visible microfacets
+// reflect, F_film(wo.h) weighted by the masking G1(wi) of each reflection (the VNDF estimator
+// of Heitz 2018 for a white reflector is G1(wi)). Eight fixed points of an R2 sequence
+// (Roberts 2018) over the VNDF: deterministic, so the albedo is smooth in wo.
+vec3 mxc_film_albedo(MxcLobe l, vec3 wo, float alpha) {
+  vec3 o = vec3(wo.xy, max(wo.z, 1e-4));  // above the surface, as the VNDF sampler needs
+  vec3 filmed = vec3(0.0);
+  float weight = 0.0;
+  for (int k = 0; k < 8; ++k) {
+    vec2 u = fract(vec2(0.5) + float(k) * vec2(0.7548777, 0.5698403));
+    vec3 m = mxc_ggx_sample_vndf(normalize(o), mxc_rough_alpha(l.alpha), u);
+    vec3 i = reflect(-normalize(o), m);
+    if (i.z <= 0.0) continue;
+    float g = mxc_ggx_g1(i, mxc_rough_alpha(l.alpha));
+    filmed += g * mxc_lobe_fresnel(l, max(dot(normalize(o), m), 0.0), true);
+    weight += g;
+  }
+  // weight > 0 unless every reflection left below the surface (then no reflection at all).
+  vec2 ab = mxc_split_sum(clamp(wo.z, 0.0, 1.0), alpha);
+  return weight > 0.0 ? filmed / weight * (ab.x + ab.y) : vec3(0.0);
+}
+#endif
 
 // The lobe's directional albedo at wo (above the surface), with `ms`, its multiple-scattering
 // factor at wo (mxc_lobe_ms_scale: the closure has it already, mxc_closure_prepare).
@@ -336,11 +387,18 @@ vec3 mxc_lobe_albedo_scaled(MxcLobe l, vec3 wo, vec3 ms) {
 #ifdef MXC_THIN_FILM
       if (l.film.z > 0.0 && l.film.x > 0.0) {
         // With a film, the tabulated albedo of the bare interface scaled by how much the film
-        // changes the Fresnel factor at this view (exact for a smooth interface).
+        // changes the Fresnel factor at this view (exact for a smooth interface). Near index
+        // matching that ratio falls short: at eta = 1 it is 0/0, and a rough interface's
+        // microfacets see angles where F_bare is tiny and F_film is not (a film on eta = 1.02
+        // gave the layers under it up to 40% more than arrives). There the film's reflection
+        // is integrated over the visible microfacets instead (mxc_film_albedo), faded in as the
+        // bare F0 goes from 0.02 down to 0.01 (eta 1.33 to 1.22): ordinary IORs keep the ratio.
         MxcLobe bare = l;
         bare.film.z = 0.0;
         float f = mxc_lobe_fresnel(bare, mu, true).x;  // the tier's own Fresnel without the film
-        e *= f > 1e-6 ? mxc_lobe_fresnel(l, mu, true) / f : vec3(1.0);
+        vec3 ratio = f > 1e-4 ? e * mxc_lobe_fresnel(l, mu, true) / f : vec3(0.0);
+        float matched = 1.0 - smoothstep(0.01, 0.02, mxc_lobe_fresnel(bare, 1.0, true).x);
+        e = matched > 0.0 ? mix(ratio, max(ratio, mxc_film_albedo(l, wo, alpha)), matched) : ratio;
       }
 #endif
       return clamp(e * l.c0 * ms, 0.0, 1.0);
@@ -479,7 +537,10 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi) {
         return p * (mxc_lobe_transmits(l) && (l.mode & MXC_REFLECT) != 0 ? fr : 1.0);
       }
 #ifdef MXC_TRANSMISSION
-      if (l.kind != MXC_LOBE_DIELECTRIC || !mxc_lobe_transmits(l) || (l.mode & MXC_THIN_WALL) != 0) return 0.0;
+      if (l.kind != MXC_LOBE_DIELECTRIC || !mxc_lobe_transmits(l) || (l.mode & MXC_THIN_WALL) != 0 ||
+          mxc_index_matched(l)) {
+        return 0.0;
+      }
       float eta = mxc_lobe_eta(l, above);
       vec3 h = -(o + eta * i);
       if (dot(h, h) <= 1e-20) return 0.0;
@@ -568,6 +629,15 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u) {
 #ifdef MXC_TRANSMISSION
       if ((l.mode & MXC_THIN_WALL) != 0) {
         // A thin sheet: the ray passes straight through, attenuated by (1 - F).
+        s.wi = -wo;
+        s.delta = true;
+        s.value = (1.0 - f) * l.c1;
+        s.pdf = 1.0 - pReflect;
+        s.valid = s.pdf > 0.0;
+        return s;
+      }
+      if (mxc_index_matched(l)) {
+        // Straight on, attenuated by what this microfacet's (film-coloured) Fresnel reflects.
         s.wi = -wo;
         s.delta = true;
         s.value = (1.0 - f) * l.c1;
