@@ -97,6 +97,12 @@ std::vector<ir::Material> lowerDocument(const resolve::ResolvedDocument& documen
                                         Diagnostics& diagnostics) {
   std::vector<ir::Material> materials;
   for (const resolve::ResolvedMaterial& m : document.materials) {
+    if (findClosureRule(m.node->category())) {
+      // A material node that is its own shader (LamaSurface: BSDFs in, a material out).
+      materials.push_back(lowerShader(document, options, diagnostics, std::string(m.node->name()), m.node, nullptr,
+                                      nullptr));
+      continue;
+    }
     for (const auto& shader : m.shaders) {
       if (shader.input != "surfaceshader") continue;  // displacement and volume shaders: not lowered
       materials.push_back(lowerShader(document, options, diagnostics, std::string(m.node->name()), shader.node,

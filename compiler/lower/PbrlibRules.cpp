@@ -8,6 +8,7 @@
 
 #include "compiler/lower/ClosureAlgebra.h"
 #include "compiler/lower/Context.h"
+#include "compiler/lower/LamaRules.h"
 #include "compiler/lower/Layering.h"
 #include "compiler/lower/Media.h"
 
@@ -335,6 +336,20 @@ const RuleTable& rules() {
       {"UsdPreviewSurface", shadingModel},
       {"gltf_pbr", shadingModel},
       {"disney_principled", shadingModel},
+      // Pixar's Lama nodes (LamaRules.cpp).
+      {"LamaConductor", lamaConductor},
+      {"LamaDielectric", lamaDielectric},
+      {"LamaGeneralizedSchlick", lamaGeneralizedSchlick},
+      {"LamaIridescence", lamaIridescence},
+      {"LamaDiffuse", lamaDiffuse},
+      {"LamaTranslucent", lamaTranslucent},
+      {"LamaSheen", lamaSheen},
+      {"LamaSSS", lamaSss},
+      {"LamaEmission", lamaEmission},
+      {"LamaAdd", lamaAdd},
+      {"LamaMix", lamaMix},
+      {"LamaLayer", lamaLayer},
+      {"LamaSurface", lamaSurface},
   };
   return table;
 }

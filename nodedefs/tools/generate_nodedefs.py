@@ -1249,6 +1249,139 @@ def build_disney_principled():
     return L
 
 
+def build_lama():
+    L = Library(header(
+        'Pixar Lama (nodedefs only)', 'libraries/bxdf/lama/*.mtlx', [
+            '',
+            'No nodegraphs: mxc lowers the Lama nodes to closures in C++ (compiler/lower/LamaRules.cpp,',
+            'which states each mapping). Names, types, defaults, enums and UI ranges as MaterialX\'s',
+            'definitions (version 1.0, the default version), so its documents resolve unchanged.']))
+    U = dict(uniform='true')
+    FRESNEL = dict(enum='Artistic,Scientific', enumvalues='0,1', **U)
+    R01 = dict(uimin='0.0', uimax='1.0')
+    ANISO = dict(uimin='-1.0', uimax='1.0')
+    ROT = dict(uisoftmin='0.0', uisoftmax='1.0')
+    V10 = dict(version='1.0', isdefaultversion='true')
+
+    def nd(name, node, out, doc, inputs):
+        inputs = [(tag, {k: v for k, v in attrs.items() if v is not None}) for tag, attrs in inputs]
+        attrs = {'name': name, 'node': node, 'nodegroup': 'pbr', 'doc': doc}
+        attrs.update(V10)
+        L.elem('nodedef', attrs, inputs + [('output', {'name': 'out', 'type': out})])
+        L.count += 1
+
+    interior = [
+        i('absorptionColor', C3, '1.0, 1.0, 1.0', uifolder='Interior', doc='Transmittance reached at absorptionRadius.'),
+        i('absorptionRadius', F, '1.0', uimin='0.0', uifolder='Interior', doc='Distance at which absorptionColor is reached.'),
+        i('scatterColor', C3, '0.0, 0.0, 0.0', uifolder='Interior', doc='Single-scattering albedo of the interior.'),
+        i('scatterAnisotropy', F, '0.0', uifolder='Interior', doc='Henyey-Greenstein g of the interior.', **ANISO),
+    ]
+    L.section('Lama BSDFs')
+    nd('ND_lama_conductor', 'LamaConductor', 'BSDF', 'Lama conductor: GGX microfacets, complex Fresnel.', [
+        i('tint', C3, '1, 1, 1', uifolder='Main'),
+        i('fresnelMode', I, '0', uifolder='Main', **FRESNEL),
+        i('IOR', V3, '0.180000007153,0.419999986887,1.37000000477', uifolder='Main'),
+        i('extinction', V3, '3.42000007629,2.34999990463,1.76999998093', uifolder='Main'),
+        i('reflectivity', C3, '0.9450, 0.7772, 0.3737', uifolder='Main'),
+        i('edgeColor', C3, '0.7137, 0.7373, 0.4550', uifolder='Main'),
+        i('roughness', F, '0.1', uifolder='Main', **R01),
+        i('normal', V3, g='Nworld', uifolder='Main'),
+        i('anisotropy', F, '0.0', uifolder='Anisotropy', **ANISO),
+        i('anisotropyDirection', V3, g='Tworld', uifolder='Anisotropy'),
+        i('anisotropyRotation', F, '0.0', uifolder='Anisotropy', **ROT),
+    ])
+    nd('ND_lama_dielectric', 'LamaDielectric', 'BSDF', 'Lama dielectric: one interface over its interior.', [
+        i('reflectionTint', C3, '1.0, 1.0, 1.0', uifolder='Main'),
+        i('transmissionTint', C3, '1.0, 1.0, 1.0', uifolder='Main'),
+        i('fresnelMode', I, '0', uifolder='Main', **FRESNEL),
+        i('IOR', F, '1.5', uimin='1.0', uimax='3.0', uifolder='Main'),
+        i('reflectivity', F, '0.04', uimin='0.0', uimax='1.0', uisoftmin='0.0', uisoftmax='0.25', uifolder='Main'),
+        i('roughness', F, '0.1', uifolder='Main', **R01),
+        i('normal', V3, g='Nworld', uifolder='Main'),
+        i('anisotropy', F, '0.0', uifolder='Anisotropy', **ANISO),
+        i('direction', V3, g='Tworld', uifolder='Anisotropy'),
+        i('rotation', F, '0.0', uifolder='Anisotropy', **ROT),
+    ] + interior)
+    nd('ND_lama_diffuse', 'LamaDiffuse', 'BSDF', 'Lama diffuse: Oren-Nayar, energy-compensated.', [
+        i('color', C3, '0.18, 0.18, 0.18'),
+        i('roughness', F, '0.0', **R01),
+        i('normal', V3, g='Nworld'),
+        i('energyCompensation', F, '1.0', uifolder='Advanced', **dict(R01, **U)),
+    ])
+    nd('ND_lama_generalized_schlick', 'LamaGeneralizedSchlick', 'BSDF',
+       'Lama generalized Schlick: a Schlick Fresnel interface over its interior.', [
+        i('reflectionTint', C3, '1.0, 1.0, 1.0', uifolder='Main'),
+        i('transmissionTint', C3, '1.0, 1.0, 1.0', uifolder='Main'),
+        i('fresnelMode', I, '0', uifolder='Main', **FRESNEL),
+        i('IOR', V3, '1.5,1.5,1.5', uifolder='Main'),
+        i('reflectivity', C3, '0.04, 0.04, 0.04', uifolder='Main'),
+        i('reflectivity90', C3, '1.0, 1.0, 1.0', uifolder='Main'),
+        i('reflectivityProfile', F, '0.2', uifolder='Main', **R01),
+        i('roughness', F, '0.1', uifolder='Main', **R01),
+        i('normal', V3, g='Nworld', uifolder='Main'),
+        i('anisotropy', F, '-1.0', uifolder='Anisotropy', **ANISO),
+        i('anisotropyDirection', V3, g='Tworld', uifolder='Anisotropy'),
+        i('anisotropyRotation', F, '0.0', uifolder='Anisotropy', **ROT),
+    ] + interior)
+    nd('ND_lama_iridescence', 'LamaIridescence', 'BSDF', 'Lama iridescence: a thin film alone.', [
+        i('roughness', F, '0.01', uifolder='Main', **R01),
+        i('anisotropy', F, '0.0', uifolder='Anisotropy', **ANISO),
+        i('anisotropyDirection', V3, g='Tworld', uifolder='Anisotropy'),
+        i('anisotropyRotation', F, '0.0', uifolder='Anisotropy', **ROT),
+        i('relativeFilmThickness', F, '0.5', uifolder='Main', **R01),
+        i('minFilmThickness', F, '400.0', uimin='0.0', uisoftmin='0.0', uisoftmax='1000.0', uifolder='Main'),
+        i('maxFilmThickness', F, '800.0', uimin='0.0', uisoftmin='0.0', uisoftmax='1000.0', uifolder='Main'),
+        i('filmIOR', F, '1.3', uimin='0.0', uisoftmin='1.0', uisoftmax='3.0', uifolder='Main'),
+    ])
+    nd('ND_lama_sheen', 'LamaSheen', 'BSDF', 'Lama sheen.', [
+        i('color', C3, '1, 1, 1', uifolder='Main'),
+        i('roughness', F, '0.1', uifolder='Main', **R01),
+        i('normal', V3, g='Nworld', uifolder='Main'),
+    ])
+    nd('ND_lama_sss', 'LamaSSS', 'BSDF', 'Lama subsurface scattering.', [
+        i('color', C3, '0.18, 0.18, 0.18', uifolder='Main'),
+        i('normal', V3, g='Nworld', uifolder='Main'),
+        i('sssRadius', C3, '0.0, 0.0, 0.0', uifolder='SSS'),
+        i('sssScale', F, '1.0', uimin='0.0', uifolder='SSS'),
+        i('sssMode', I, '0', enum='Path-traced Davis,Path-traced exponential,Diffusion Burley,Diffusion Burley (mean free path)',
+          enumvalues='0,1,2,3', uifolder='Main', **U),
+        i('sssIOR', F, '1.0', uimin='1.0', uisoftmin='1.0', uisoftmax='2.0', uifolder='SSS'),
+        i('sssAnisotropy', F, '0.0', uifolder='SSS', **R01),
+        i('sssBleed', F, '0.0', uifolder='SSS', **R01),
+        i('sssFollowTopology', F, '0.0', uifolder='SSS', **R01),
+        i('sssSubset', STR, '', uifolder='SSS', **U),
+        i('sssContinuationRays', I, '0', uifolder='SSS'),
+        i('sssUnitLength', F, '0.00328', uifolder='SSS'),
+        i('mode', I, '0', enum='Reflection,Transmission,Reflection(with direct illumination)', enumvalues='0,1,2',
+          uifolder='Advanced', **U),
+        i('albedoInversionMethod', I, '0', enum='Pixar,Chiang', enumvalues='0,1', uifolder='Advanced'),
+    ])
+    nd('ND_lama_translucent', 'LamaTranslucent', 'BSDF', 'Lama translucent: diffuse transmission.', [
+        i('color', C3, '0.18, 0.18, 0.18'),
+        i('roughness', F, '0.0', **R01),
+        i('normal', V3, g='Nworld'),
+        i('energyCompensation', F, '1.0', uifolder='Advanced', **dict(R01, **U)),
+    ])
+    L.section('Lama EDFs')
+    nd('ND_lama_emission', 'LamaEmission', 'EDF', 'Lama emission: uniform.', [
+        i('color', C3, '0.0, 0.0, 0.0', uifolder='Main'),
+    ])
+    L.section('Lama combinations')
+    for kind in ('bsdf', 'edf'):
+        T = kind.upper()
+        nd('ND_lama_add_' + kind, 'LamaAdd', T, 'Lama add: weight1 material1 + weight2 material2.', [
+            i('material1', T), i('material2', T),
+            i('weight1', F, '1.0', **R01), i('weight2', F, '0.0', **R01)])
+        nd('ND_lama_mix_' + kind, 'LamaMix', T, 'Lama mix: material2 over material1 by mix.', [
+            i('material1', T), i('material2', T), i('mix', F, '0.0', **R01)])
+    nd('ND_lama_layer_bsdf', 'LamaLayer', 'BSDF', 'Lama layer: materialTop over materialBase.', [
+        i('materialTop', 'BSDF'), i('materialBase', 'BSDF'),
+        i('topMix', F, '1.0', **R01), i('topThickness', F, '0.0', uimin='0.0')])
+    nd('ND_lama_surface', 'LamaSurface', 'material', 'Lama surface: a front and a back material.', [
+        i('materialFront', 'BSDF'), i('materialBack', 'BSDF'), i('presence', F, '1.0')])
+    return L
+
+
 # ==========================================================================
 
 OUTPUTS = [
@@ -1262,6 +1395,7 @@ OUTPUTS = [
     ('bxdf/usd_preview_surface.mtlx', build_usd_preview_surface),
     ('bxdf/gltf_pbr.mtlx', build_gltf_pbr),
     ('bxdf/disney_principled.mtlx', build_disney_principled),
+    ('bxdf/lama.mtlx', build_lama),
 ]
 
 
