@@ -78,8 +78,18 @@ struct GltfPbr : ShadingModelInputs {
     i.origin = c.nodeOrigin(n);
     i.iorReference = ir::IorReference::Ambient;
     i.slots.set(Slot::Ior, p("ior"));
-    i.slots.set(Slot::FresnelScale, clamped01("specular"));
-    i.slots.set(Slot::ReflectionTint, clamped01("specular_color"));
+    // KHR_materials_specular: F0 = min(F0(ior) specular_color, 1), the whole weighted by
+    // specular. specular_color is not bounded by 1 (its UI range is soft): its largest channel
+    // joins specular in the Fresnel scale, which modulates F0 within [0, 1] (mxc_modulated_eta),
+    // and the tint keeps the hue, color / max(color) <= 1, so no channel reflects more than
+    // arrives. A black colour is a tint of 0.
+    const Param color = nonNegative("specular_color");
+    const ExprId largest = b.max(b.max(b.extract(color.value, 0), b.extract(color.value, 1)), b.extract(color.value, 2));
+    i.slots.set(Slot::FresnelScale, {b.mul(clamped01("specular").value, largest), at("specular")});
+    // largest > 0 where divided (the select), guarded again at 1e-6 for the branch not taken.
+    i.slots.set(Slot::ReflectionTint, {b.select(b.greater(largest, b.f(0.0f)), b.safeDiv(color.value, largest, 1e-6f),
+                                                b.vec(Type::Vec3, 0.0f)),
+                                       color.origin});
     i.slots.set(Slot::Alpha, alpha);
     i.slots.set(Slot::Normal, p("normal"));
     i.slots.set(Slot::Tangent, tangentParam);

@@ -230,7 +230,7 @@ Closure lamaIridescence(Context& c, const NodeRef& n, std::string_view) {
   i.slots.set(Slot::Alpha, lama.alpha(false));
   lama.setTangent(i, "anisotropyDirection", "anisotropyRotation", !lama.isConstant(lama.p("anisotropy"), 0.0f));
   i.thinFilm.thickness = {b.nonNegative(b.lerp(lama.p("minFilmThickness").value, lama.p("maxFilmThickness").value,
-                                               lama.clamped01("relativeFilmThickness").value)),
+                                               lama.p("relativeFilmThickness").value)),
                           lama.at("relativeFilmThickness")};
   i.thinFilm.ior = lama.p("filmIOR");
   i.thinFilm.origin = c.nodeOrigin(n);
@@ -249,7 +249,7 @@ Closure lamaDiffuse(Context& c, const NodeRef& n, std::string_view) {
   auto diffuse = [&](ir::DiffuseModel model) {
     ir::Interface i = lama.interface(ir::InterfaceKind::Diffuse);
     i.diffuseModel = model;
-    i.slots.set(Slot::Color, lama.p("color"));
+    i.slots.set(Slot::Color, lama.clamped01("color"));  // an albedo: above 1 it creates energy
     i.slots.set(Slot::Roughness, {b.mul(b.mul(r, r), b.f(0.5f)), lama.at("roughness")});
     return scatter(interfaceSlab(c, std::move(i), {}));
   };
@@ -265,7 +265,7 @@ Closure lamaTranslucent(Context& c, const NodeRef& n, std::string_view) {
   // transmission mxc does not have (MaterialX's graph ignores them too): noted when set.
   LamaNode lama{{c, n, c.b}};
   ir::Interface i = lama.interface(ir::InterfaceKind::DiffuseTransmission);
-  i.slots.set(Slot::Color, lama.p("color"));
+  i.slots.set(Slot::Color, lama.clamped01("color"));  // an albedo: above 1 it creates energy
   if (!lama.isConstant(lama.p("roughness"), 0.0f)) {
     c.note(lama.at("roughness"), "LamaTranslucent: the roughness of the transmission is not modelled (Lambertian)");
   }
@@ -277,7 +277,7 @@ Closure lamaSheen(Context& c, const NodeRef& n, std::string_view) {
   ir::ExprBuilder& b = c.b;
   ir::Interface i = lama.interface(ir::InterfaceKind::Sheen);
   i.sheenModel = ir::SheenModel::ContyKulla;
-  i.slots.set(Slot::Color, lama.p("color"));
+  i.slots.set(Slot::Color, lama.clamped01("color"));  // an albedo: above 1 it creates energy
   // roughness remapped to [0.1, 1] then squared, as MaterialX's graph of LamaSheen does.
   const ExprId remapped = b.add(b.mul(lama.clamped01("roughness").value, b.f(0.9f)), b.f(0.1f));
   i.slots.set(Slot::Roughness, {b.mul(remapped, remapped), lama.at("roughness")});
@@ -293,7 +293,7 @@ Closure lamaSss(Context& c, const NodeRef& n, std::string_view) {
     // "If zero ... the computation simplifies to a Lambertian reflection lobe".
     ir::Interface i = lama.interface(ir::InterfaceKind::Diffuse);
     i.diffuseModel = ir::DiffuseModel::OrenNayar;
-    i.slots.set(Slot::Color, lama.p("color"));
+    i.slots.set(Slot::Color, lama.clamped01("color"));
     return scatter(interfaceSlab(c, std::move(i), {}));
   }
   if (!lama.isConstant(lama.p("sssIOR"), 1.0f)) {
@@ -309,7 +309,9 @@ Closure lamaEmission(Context& c, const NodeRef& n, std::string_view) {
   ir::Emission e;
   e.kind = ir::Emission::Kind::Uniform;
   e.origin = c.nodeOrigin(n);
-  e.slots.set(Slot::Color, c.param(n, "color"));
+  ir::Param color = c.param(n, "color");
+  color.value = c.b.nonNegative(color.value);  // radiance is never negative
+  e.slots.set(Slot::Color, color);
   return {Closure::Kind::Emission, ir::kNone, {c.material.addEmission(std::move(e))}};
 }
 
@@ -326,7 +328,9 @@ Closure lamaMix(Context& c, const NodeRef& n, std::string_view) {
   // mix 0 is material1, 1 material2.
   const Closure m1 = c.closureInput(n, "material1");
   const Closure m2 = c.closureInput(n, "material2");
-  return mixClosures(c, m2, m1, c.param(n, "mix"), c.nodeOrigin(n));
+  ir::Param w = c.param(n, "mix");
+  w.value = c.b.clamp01(w.value);  // a mixing weight: outside [0, 1] one side is negative
+  return mixClosures(c, m2, m1, w, c.nodeOrigin(n));
 }
 
 namespace {
@@ -378,7 +382,8 @@ Closure lamaLayer(Context& c, const NodeRef& n, std::string_view) {
     top.index = interiorAsLayer(c, top.index, c.b.nonNegative(thickness.value), thickness.origin);
   }
   // topMix is the top's coverage: layer(topMix top, base) = mix(base, layer(top, base), topMix).
-  const ir::Param coverage = c.param(n, "topMix");
+  ir::Param coverage = c.param(n, "topMix");
+  coverage.value = c.b.clamp01(coverage.value);  // a coverage: a fraction of the surface
   if (!c.material.exprs.isConstantEqual(coverage.value, 1.0f)) top = scaleClosure(c, top, coverage, c.nodeOrigin(n));
   return layerClosures(c, top, base, c.nodeOrigin(n));
 }

@@ -115,7 +115,9 @@ struct OpenPbr : ShadingModelInputs {
     i.slots.set(Slot::F82, nonNegative("specular_color"));
     i.slots.set(Slot::F90, {b.vec(Type::Vec3, 1.0f), at("specular_color")});
     i.slots.set(Slot::Exponent, {b.f(5.0f), at("specular_color")});
-    i.slots.set(Slot::FresnelScale, nonNegative("specular_weight"));
+    // OpenPBR "Metal": F = specular_weight F82(mu), a reflectance: a weight above 1 (allowed for
+    // the dielectric, whose F0 it modulates within [0, 1]) would reflect more than arrives.
+    i.slots.set(Slot::FresnelScale, clamped("specular_weight", 0.0f, 1.0f));
     i.slots.set(Slot::Alpha, {alpha, roughnessOrigin("specular_roughness", "specular_roughness_anisotropy")});
     i.slots.set(Slot::Normal, p("geometry_normal"));
     i.slots.set(Slot::Tangent, p("geometry_tangent"));
@@ -165,7 +167,8 @@ struct OpenPbr : ShadingModelInputs {
   /// scale 0 is "no dispersion" (infinite V_d), written 0. The division is in the branch where
   /// scale > 0 and is guarded by max(scale, 1e-6). Absent when the scale is the constant 0.
   Param abbeNumber() {
-    Param scale = clamped("transmission_dispersion_scale", 0.0f, 1.0f);
+    // [0, 1] is the scale's UI range; any scale >= 0 gives a positive V_d.
+    Param scale = nonNegative("transmission_dispersion_scale");
     if (isConstant(p("transmission_dispersion_scale"), 0.0f)) return {};
     Param abbe = nonNegative("transmission_dispersion_abbe_number");
     ExprId vd = b.select(b.greater(scale.value, b.f(0.0f)), b.safeDiv(abbe.value, scale.value, 1e-6f), b.f(0.0f));

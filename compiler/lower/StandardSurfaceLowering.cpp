@@ -33,10 +33,13 @@ namespace {
 
 struct StandardSurface : ShadingModelInputs {
   /// The coat's effect on the colours under it (Standard Surface "Coating"): colours are
-  /// raised to the power 1 + coat_affect_color * coat; max(colour, 0) keeps pow defined.
+  /// raised to the power 1 + coat_affect_color * coat. The colours are albedos (base_color,
+  /// subsurface_color: what the lobe reflects or transmits), at most 1 so that no lobe creates
+  /// energy; coat and coat_affect_color are weights in [0, 1], so the power is in [1, 2] and pow
+  /// of a base in [0, 1] is defined.
   ExprId coatAffected(std::string_view color) {
-    ExprId gamma = b.add(b.f(1.0f), b.mul(p("coat_affect_color").value, p("coat").value));
-    return b.pow(b.nonNegative(p(color).value), gamma);
+    ExprId gamma = b.add(b.f(1.0f), b.mul(clamped01("coat_affect_color").value, clamped01("coat").value));
+    return b.pow(clamped01(color).value, gamma);
   }
 
   /// Roughness under the coat: lerp(r, 1, coat * coat_affect_roughness * coat_roughness).

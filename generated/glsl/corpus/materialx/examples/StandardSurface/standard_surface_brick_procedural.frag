@@ -59,7 +59,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec3 v43 = vec3(0.263273) * v28;
   vec3 v44 = mix(v43, v41, v8);
   vec3 v45 = clamp(v44, vec3(0.0), vec3(1.0));
-  vec3 v46 = max(v45, vec3(0.0));
+  vec3 v46 = clamp(v45, vec3(0.0), vec3(1.0));
   vec3 v48 = mxc_sample_image(mxc_texture_5, v4, vec4(vec3(0.0), 1.0), 2, 2, 0, (mxc_params.missing_textures & 32u) != 0u).rgb;
   vec3 v49 = g.N;
   vec3 v50 = g.T;

@@ -129,7 +129,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec2 v9 = v8 - vec2(-1.66, -0.49);
   vec2 v10 = v9 + vec2(0.5);
   vec3 v13 = mxc_sample_image(mxc_texture_0, v10, vec4(vec3(0.0), 1.0), 1, 1, 0, (mxc_params.missing_textures & 1u) != 0u).rgb;
-  vec3 v14 = max(v13, vec3(0.0));
+  vec3 v15 = clamp(v13, vec3(0.0), vec3(1.0));
   vec3 v16 = g.N;
   vec3 v19 = g.T;
   c.emission = vec3(0.0);
@@ -158,7 +158,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.T = g.T;
   lobe3.alpha = vec2(0.0);
   lobe3.eta = 1.5;
-  lobe3.c0 = v14;
+  lobe3.c0 = v15;
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);
   lobe3.p0 = 0.0;

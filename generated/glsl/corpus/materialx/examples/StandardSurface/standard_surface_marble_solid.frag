@@ -41,7 +41,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   float v18 = v17 + 0.5;
   float v19 = pow(v18, 3.0);
   vec3 v22 = mix(vec3(0.8), vec3(0.1, 0.1, 0.3), v19);
-  vec3 v24 = max(v22, vec3(0.0));
+  vec3 v24 = clamp(v22, vec3(0.0), vec3(1.0));
   vec3 v25 = g.N;
   vec3 v26 = clamp(v24, vec3(0.0), vec3(1.0));
   vec3 v28 = v26 * v26;

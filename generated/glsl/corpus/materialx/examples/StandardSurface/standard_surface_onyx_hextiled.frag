@@ -35,7 +35,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec3 v13 = mxc_sample_image(mxc_texture_0, v4, vec4(vec3(0.0), 1.0), 2, 2, 0, (mxc_params.missing_textures & 1u) != 0u).rgb;
   float v14 = v13[0];
   vec3 v17 = mxc_sample_image(mxc_texture_1, v4, vec4(vec3(0.0), 1.0), 2, 2, 0, (mxc_params.missing_textures & 2u) != 0u).rgb;
-  vec3 v18 = max(v17, vec3(0.0));
+  vec3 v19 = clamp(v17, vec3(0.0), vec3(1.0));
   vec3 v20 = g.N;
   float v23 = v14 * v14;
   float v24 = clamp(v23, 1e-07, 1.0);
@@ -67,7 +67,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.T = g.T;
   lobe3.alpha = vec2(0.0);
   lobe3.eta = 1.5;
-  lobe3.c0 = v18;
+  lobe3.c0 = v19;
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);
   lobe3.p0 = 0.0;

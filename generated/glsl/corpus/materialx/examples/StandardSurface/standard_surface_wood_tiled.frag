@@ -34,7 +34,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec2 v3 = v2 * vec2(4.0);
   float v6 = mxc_sample_image(mxc_texture_0, v3, vec4(0.0), 2, 2, 0, (mxc_params.missing_textures & 1u) != 0u).r;
   vec3 v11 = mxc_sample_image(mxc_texture_1, v3, vec4(vec3(0.0), 1.0), 2, 2, 0, (mxc_params.missing_textures & 2u) != 0u).rgb;
-  vec3 v12 = max(v11, vec3(0.0));
+  vec3 v13 = clamp(v11, vec3(0.0), vec3(1.0));
   vec3 v14 = g.N;
   float v17 = v6 * v6;
   float v18 = clamp(v17, 1e-07, 1.0);
@@ -86,7 +86,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe6.T = g.T;
   lobe6.alpha = vec2(0.0);
   lobe6.eta = 1.5;
-  lobe6.c0 = v12;
+  lobe6.c0 = v13;
   lobe6.c1 = vec3(1.0);
   lobe6.c2 = vec3(1.0);
   lobe6.p0 = 0.0;
