@@ -219,6 +219,32 @@ ExprId bitangent(Context& c, const NodeRef& n, std::string_view, Type type) {
 ExprId viewdirection(Context& c, const NodeRef& n, std::string_view, Type type) {
   return c.material.exprs.named(Op::GeomProp, type, spaceName(c, n) == "world" ? "Vworld" : "Vobject");
 }
+// nprlib (MaterialX 1.39 "NPR Nodes").
+ExprId facingratio(Context& c, const NodeRef& n, std::string_view, Type) {
+  // The cosine between the view direction and the normal, as given: -dot(V, N) (V points from
+  // the eye), or |dot(V, N)| when faceforward; inverted to 1 - cosine when asked.
+  ir::ExprBuilder& b = c.b;
+  const ExprId d = b.dot(in(c, n, "viewdirection"), in(c, n, "normal"));
+  const ExprId facing = b.select(b.greater(b.convert(in(c, n, "faceforward"), Type::Float), b.f(0.5f)), b.abs(d), b.neg(d));
+  return b.select(b.greater(b.convert(in(c, n, "invert"), Type::Float), b.f(0.5f)), b.oneMinus(facing), facing);
+}
+ExprId goochShade(Context& c, const NodeRef& n, std::string_view, Type) {
+  // Gooch et al. 1998, "A Non-Photorealistic Lighting Model for Automatic Technical
+  // Illustration", eq. 2: the tone runs from the warm colour (facing the light) to the cool one,
+  // k = (1 + N.L) / 2 for the direction L the light travels (MaterialX's light_direction), plus
+  // a Phong highlight max(-L . R, 0)^shininess of the view reflected about the normal. The
+  // vectors are normalised; a zero light direction gives a zero vector (k = 1/2, no highlight).
+  ir::ExprBuilder& b = c.b;
+  const ExprId normal = b.normalize(c.material.exprs.named(Op::GeomProp, Type::Vec3, "Nworld"));
+  const ExprId view = b.normalize(c.material.exprs.named(Op::GeomProp, Type::Vec3, "Vworld"));
+  const ExprId light = b.normalize(in(c, n, "light_direction"));
+  const ExprId k = b.mul(b.add(b.f(1.0f), b.dot(normal, light)), b.f(0.5f));
+  const ExprId tone = b.lerp(in(c, n, "warm_color"), in(c, n, "cool_color"), k);
+  const ExprId reflected = b.sub(view, b.mul(normal, b.mul(b.f(2.0f), b.dot(normal, view))));
+  // pow of a base in [0, 1] (max(.., 0) and unit vectors).
+  const ExprId highlight = b.pow(b.max(b.neg(b.dot(light, reflected)), b.f(0.0f)), in(c, n, "shininess"));
+  return b.add(tone, b.splat(b.mul(highlight, in(c, n, "specular_intensity")), Type::Vec3));
+}
 ExprId texcoord(Context& c, const NodeRef& n, std::string_view, Type type) {
   return c.material.exprs.named(Op::GeomProp, type, fmt::format("UV{}", intInput(c, n, "index", 0)));
 }
@@ -518,6 +544,34 @@ ExprId fractal3d(Context& c, const NodeRef& n, std::string_view, Type type) {
 ExprId cellnoise2d(Context& c, const NodeRef& n, std::string_view, Type type) {
   return c.material.exprs.op(Op::CellNoise2D, type, {in(c, n, "texcoord")});
 }
+/// MaterialX's randomfloat hash (its stdlib graph of the node): the cell noise at
+/// (in * 4096, seed) for a float input, at (in, seed) for an integer one, a value in [0, 1].
+/// randomcolor converts an integer input to a float first (`scaleInteger`).
+ExprId randomHash(Context& c, const NodeRef& n, ExprId seed, bool scaleInteger = false) {
+  ExprId input = in(c, n, "in");
+  const bool integer = c.inputType(n, "in") == Type::Int;
+  if (integer) input = c.b.convert(input, Type::Float);
+  if (!integer || scaleInteger) input = c.b.mul(input, c.b.f(4096.0f));
+  const ExprId at = c.b.construct(Type::Vec2, {input, c.b.convert(seed, Type::Float)});
+  return c.b.clamp01(c.material.exprs.op(Op::CellNoise2D, Type::Float, {at}));
+}
+ExprId randomfloat(Context& c, const NodeRef& n, std::string_view, Type) {
+  return c.b.lerp(in(c, n, "min"), in(c, n, "max"), randomHash(c, n, in(c, n, "seed")));
+}
+ExprId randomcolor(Context& c, const NodeRef& n, std::string_view, Type) {
+  // Hue, saturation and brightness each hashed with its own seed, ceil(seed + offset) with
+  // MaterialX's offsets (413.3, 1522.4, 1813.8: the same colours as its graph), each taken into
+  // its [low, high], then HSV to RGB.
+  const ExprId seed = c.b.convert(in(c, n, "seed"), Type::Float);
+  auto channel = [&](float offset, std::string_view low, std::string_view high) {
+    const ExprId channelSeed = c.b.unary(Op::Ceil, c.b.add(seed, c.b.f(offset)));
+    return c.b.lerp(in(c, n, low), in(c, n, high), randomHash(c, n, channelSeed, true));
+  };
+  const ExprId hue = channel(413.3f, "huelow", "huehigh");
+  const ExprId saturation = channel(1522.4f, "saturationlow", "saturationhigh");
+  const ExprId brightness = channel(1813.8f, "brightnesslow", "brightnesshigh");
+  return c.material.exprs.op(Op::HsvToRgb, Type::Vec3, {c.b.construct(Type::Vec3, {hue, saturation, brightness})});
+}
 ExprId cellnoise3d(Context& c, const NodeRef& n, std::string_view, Type type) {
   return c.material.exprs.op(Op::CellNoise3D, type, {in(c, n, "position")});
 }
@@ -620,6 +674,35 @@ ExprId glossinessAnisotropy(Context& c, const NodeRef& n, std::string_view, Type
 ExprId artisticIor(Context& c, const NodeRef& n, std::string_view output, Type) {
   auto [ior, extinction] = gulbrandsenIor(c.b, in(c, n, "reflectivity"), in(c, n, "edge_color"));
   return output == "extinction" ? extinction : ior;
+}
+
+ExprId blackbody(Context& c, const NodeRef& n, std::string_view, Type) {
+  // The colour of a black body at T kelvin: the CIE 1931 chromaticity of the Planckian locus by
+  // Kang et al. 2002 (cubic splines: x in 1/T, y in x; the paper's range 1667-25000 K, taken
+  // down to 800 K, near the Draper point where visible emission starts), at luminance Y = 1,
+  // then XYZ to linear Rec.709 (IEC 61966-2-1's matrix), negative components dropped; then to
+  // the working space. T is clamped to [800, 25000], so 1000 / T is finite; over that range
+  // y >= 0.3, and the divisions by y are guarded at 1e-3 all the same.
+  ir::ExprBuilder& b = c.b;
+  const ExprId kelvin = b.clamp(in(c, n, "temperature"), b.f(800.0f), b.f(25000.0f));
+  const ExprId t = b.div(b.f(1000.0f), kelvin);
+  auto cubic = [&](ExprId v, float c0, float c1, float c2, float c3) {
+    return b.add(b.mul(b.add(b.mul(b.add(b.mul(b.f(c3), v), b.f(c2)), v), b.f(c1)), v), b.f(c0));  // Horner
+  };
+  const ExprId below4000 = b.greater(b.f(4000.0f), kelvin);
+  const ExprId x = b.select(below4000, cubic(t, 0.179910f, 0.8776956f, -0.2343589f, -0.2661239f),
+                            cubic(t, 0.240390f, 0.2226347f, 2.1070379f, -3.0258469f));
+  const ExprId y = b.select(b.greater(b.f(2222.0f), kelvin), cubic(x, -0.20219683f, 2.18555832f, -1.34811020f, -1.1063814f),
+                            b.select(below4000, cubic(x, -0.16748867f, 2.09137015f, -1.37418593f, -0.9549476f),
+                                     cubic(x, -0.37001483f, 3.75112997f, -5.87338670f, 3.0817580f)));
+  const ExprId safeY = b.max(y, b.f(1e-3f));
+  const ExprId xyz = b.construct(Type::Vec3, {b.div(x, safeY), b.f(1.0f), b.div(b.sub(b.oneMinus(x), y), safeY)});
+  auto row = [&](float r0, float r1, float r2) {
+    return b.dot(xyz, c.material.exprs.constantVector(Type::Vec3, {r0, r1, r2}));
+  };
+  const ExprId rgb = b.nonNegative(b.construct(Type::Vec3, {row(3.2406f, -1.5372f, -0.4986f), row(-0.9689f, 1.8758f, 0.0415f),
+                                                            row(0.0557f, -0.2040f, 1.0570f)}));
+  return c.toWorkingSpace(rgb, "lin_rec709", c.nodeOrigin(n).location);
 }
 
 // pbrlib's hair helpers, for chiang_hair_bsdf.
@@ -727,6 +810,8 @@ const RuleTable& rules() {
       {"extract", extract},
       {"position", position},
       {"viewdirection", viewdirection},
+      {"facingratio", facingratio},
+      {"gooch_shade", goochShade},
       {"normal", normal},
       {"tangent", tangent},
       {"bitangent", bitangent},
@@ -759,6 +844,8 @@ const RuleTable& rules() {
       {"fractal3d", fractal3d},
       {"cellnoise2d", cellnoise2d},
       {"cellnoise3d", cellnoise3d},
+      {"randomfloat", randomfloat},
+      {"randomcolor", randomcolor},
       {"worleynoise2d", worleynoise2d},
       {"worleynoise3d", worleynoise3d},
       {"luminance", luminance},
@@ -777,6 +864,7 @@ const RuleTable& rules() {
       {"roughness_dual", roughnessDual},
       {"glossiness_anisotropy", glossinessAnisotropy},
       {"artistic_ior", artisticIor},
+      {"blackbody", blackbody},
       {"deon_hair_absorption_from_melanin", deonHairAbsorption},
       {"chiang_hair_absorption_from_color", chiangHairAbsorption},
       {"chiang_hair_roughness", chiangHairRoughness},

@@ -9,6 +9,8 @@
 #include <set>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "compiler/ir/Evaluate.h"
 #include "compiler/driver/Compiler.h"
 #include "support/TestSupport.h"
@@ -337,6 +339,106 @@ TEST(StdlibRules, ProceduralPatternsMatchMaterialXsGraphs) {
     EXPECT_GT(seen.size(), 1u) << pattern.nodedef << " " << pattern.inputs;
   }
   EXPECT_EQ(differing, 0);
+}
+
+}  // namespace
+}  // namespace mxc::test
+
+namespace mxc::test {
+namespace {
+
+/// The lattice points at which the emission colour of a document's material reads cell noise
+/// (each CellNoise2D's argument, folded), in the order found from the colour down.
+std::vector<std::vector<float>> cellNoisePoints(const std::string& body) {
+  Context context;
+  CompileRequest request;
+  request.document = "test.mtlx";
+  request.text = mtlx(body + "  <surface_unlit name=\"surf\" type=\"surfaceshader\">\n"
+                             "    <input name=\"emission_color\" type=\"color3\" nodename=\"v\"/>\n"
+                             "  </surface_unlit>\n  <surfacematerial name=\"M\" type=\"material\"><input "
+                             "name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"surf\"/></surfacematerial>\n");
+  Compiler compiler(context, std::move(request));
+  std::vector<ir::Material> materials = std::move(compiler.materials());
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  std::vector<std::vector<float>> points;
+  if (materials.empty() || materials[0].emissions.empty()) return points;
+  const ir::Material& m = materials[0];
+  std::set<ir::ExprId> seen;
+  std::vector<ir::ExprId> stack{m.emissions[0].slots.value(ir::Slot::Color)};
+  while (!stack.empty()) {
+    const ir::ExprId e = stack.back();
+    stack.pop_back();
+    if (e == ir::kNoExpr || !seen.insert(e).second) continue;
+    if (m.exprs[e].op == ir::Op::CellNoise2D) {
+      std::optional<ir::Constant> at = ir::evaluateExpr(m.exprs, m.exprs.argsOf(e)[0]);
+      points.push_back(at ? at->v : std::vector<float>{});
+      continue;
+    }
+    for (ir::ExprId a : m.exprs.argsOf(e)) stack.push_back(a);
+  }
+  std::sort(points.begin(), points.end());
+  return points;
+}
+
+// randomfloat and randomcolor hash where MaterialX's graphs of them do: the same cell-noise
+// lattice points (the input scaled by 4096 for a float, the seeds offset per channel), so the
+// rule and the graph read the same random numbers. (The numbers themselves are mxc's cell
+// noise, folded nowhere: the points are what the rule decides.)
+TEST(StdlibRules, RandomNodesHashWhereMaterialXsGraphsDo) {
+  struct Case {
+    const char* nodedef;
+    const char* category;
+    const char* inputs;
+    size_t points;
+  };
+  const Case cases[] = {
+      {"ND_randomfloat_float", "randomfloat", "<input name=\"in\" type=\"float\" value=\"0.37\"/><input name=\"seed\" type=\"integer\" value=\"5\"/>", 1},
+      {"ND_randomfloat_integer", "randomfloat", "<input name=\"in\" type=\"integer\" value=\"12\"/><input name=\"seed\" type=\"integer\" value=\"3\"/>", 1},
+      {"ND_randomcolor_float", "randomcolor", "<input name=\"in\" type=\"float\" value=\"2.5\"/><input name=\"seed\" type=\"integer\" value=\"7\"/>"
+       "<input name=\"saturationlow\" type=\"float\" value=\"0.2\"/><input name=\"brightnesslow\" type=\"float\" value=\"0.5\"/>", 3},
+      {"ND_randomcolor_integer", "randomcolor", "<input name=\"in\" type=\"integer\" value=\"4\"/><input name=\"seed\" type=\"integer\" value=\"-2\"/>"
+       "<input name=\"saturationlow\" type=\"float\" value=\"0.2\"/><input name=\"brightnesslow\" type=\"float\" value=\"0.5\"/>", 3},
+  };
+  for (const Case& k : cases) {
+    const std::string definitions = materialxGraphCopy("stdlib/stdlib_defs.mtlx", "stdlib/stdlib_ng.mtlx", k.nodedef);
+    ASSERT_FALSE(definitions.empty()) << k.nodedef;
+    const std::string type = std::string(k.category) == "randomfloat" ? "float" : "color3";
+    const std::string convert = type == "float" ? "  <convert name=\"v\" type=\"color3\"><input name=\"in\" type=\"float\" nodename=\"r\"/></convert>\n" : "";
+    const std::string name = type == "float" ? "r" : "v";
+    const auto ours = cellNoisePoints(fmt::format("  <{0} name=\"{1}\" type=\"{2}\">{3}</{0}>\n", k.category, name, type, k.inputs) + convert);
+    const auto theirs = cellNoisePoints(definitions + fmt::format("  <copy name=\"{0}\" type=\"{1}\">{2}</copy>\n", name, type, k.inputs) + convert);
+    EXPECT_EQ(ours.size(), k.points) << k.nodedef;
+    EXPECT_EQ(ours, theirs) << k.nodedef;
+  }
+}
+
+}  // namespace
+}  // namespace mxc::test
+
+namespace mxc::test {
+namespace {
+
+// blackbody: the colour's chromaticity is on the Planckian locus. Linear Rec.709 back to CIE
+// XYZ (IEC 61966-2-1), then x = X / (X + Y + Z), y = Y / (X + Y + Z), against the locus's
+// tabulated chromaticities (CIE 15:2004; Kang et al. 2002's fit is within 3e-4 of them).
+TEST(StdlibRules, BlackbodyLiesOnThePlanckianLocus) {
+  struct Point {
+    float kelvin, x, y;
+  };
+  const Point locus[] = {{2000, 0.5267f, 0.4133f}, {3000, 0.4369f, 0.4041f}, {5000, 0.3451f, 0.3516f}, {6500, 0.3135f, 0.3236f}};
+  for (const Point& p : locus) {
+    const std::vector<float> rgb =
+        valueOf(fmt::format("  <blackbody name=\"v\" type=\"color3\"><input name=\"temperature\" type=\"float\" value=\"{}\"/>"
+                            "</blackbody>\n", p.kelvin),
+                "color3");
+    ASSERT_EQ(rgb.size(), 3u);
+    const float X = 0.4124f * rgb[0] + 0.3576f * rgb[1] + 0.1805f * rgb[2];
+    const float Y = 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.0722f * rgb[2];
+    const float Z = 0.0193f * rgb[0] + 0.1192f * rgb[1] + 0.9505f * rgb[2];
+    EXPECT_NEAR(Y, 1.0f, 0.02f) << p.kelvin << " K: luminance 1";
+    EXPECT_NEAR(X / (X + Y + Z), p.x, 3e-3f) << p.kelvin << " K";
+    EXPECT_NEAR(Y / (X + Y + Z), p.y, 3e-3f) << p.kelvin << " K";
+  }
 }
 
 }  // namespace
