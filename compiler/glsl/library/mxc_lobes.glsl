@@ -305,7 +305,6 @@ float mxc_burley_albedo(float muo, float r) {
 // mxc_lobe_eval is the single-scattering lobe; the closure applies the factor, computed once per
 // lobe for its view (mxc_closure_prepare), and the lobe's albedo includes it. Other lobe kinds
 // have no factor.
-vec3 mxc_lobe_albedo_scaled(MxcLobe l, vec3 wo, vec3 ms);  // below: the albedo with a given factor
 
 vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo) {
   bool microfacet = l.kind == MXC_LOBE_DIELECTRIC || l.kind == MXC_LOBE_CONDUCTOR || l.kind == MXC_LOBE_SCHLICK;
@@ -324,16 +323,14 @@ vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo) {
 #ifdef MXC_THIN_FILM
     if (l.film.z > 0.0 && l.film.x > 0.0 && wo.z > 0.0) {
       // The bare interface's E_RT does not see the film's reflection (up to 1 near grazing
-      // over an index-matched base, where E_RT is small). A lobe that only reflects (over a
-      // base) is compensated as a reflector of the film's normal-incidence Fresnel, as the
-      // conductor below; every factor is kept at most 1 / E_R(film), so that the compensated
-      // reflection never exceeds what arrives.
+      // over an index-matched base, where E_RT is small, so 1 / E_RT would amplify it up to 20
+      // times). A filmed lobe that only reflects (over a base) is compensated as a reflector of
+      // the film's normal-incidence Fresnel instead, as the conductor below.
       if (!mxc_lobe_transmits(l)) {
         vec2 ab = mxc_split_sum(max(wo.z, 0.0), alpha);
         float w = ab.x + ab.y;
         k = 1.0 + mxc_lobe_fresnel(l, 1.0, true) * (1.0 - w) / max(w, 0.05);
       }
-      k = min(k, 1.0 / max(mxc_lobe_albedo_scaled(l, wo, vec3(1.0)), vec3(1e-3)));
     }
 #endif
     return k;
@@ -468,6 +465,9 @@ vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi) {
 #endif
     case MXC_LOBE_CONDUCTOR:
     case MXC_LOBE_SCHLICK:
+      // A Schlick lobe of MaterialX's scatter_mode T reflects nothing; its transmission (and a
+      // conductor's none) is the delta of mxc_lobe_sample.
+      if (l.kind == MXC_LOBE_SCHLICK && (l.mode & MXC_REFLECT) == 0) return vec3(0.0);
       return mxc_microfacet_reflect(l, wo, wi);
 #endif
 #ifdef MXC_HAS_DIFFUSE
@@ -530,7 +530,8 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi) {
       if (i.z > 0.0) {  // reflection: dwh/dwi = 1 / (4 |wo.h|)
         vec3 h = normalize(o + i);
         float p = mxc_ggx_pdf_vndf(o, h, l.alpha) / (4.0 * max(dot(o, h), 1e-6));
-        if (l.kind != MXC_LOBE_DIELECTRIC) return p;
+        if (l.kind == MXC_LOBE_CONDUCTOR) return p;
+        if ((l.mode & MXC_REFLECT) == 0) return 0.0;
         // Reflection is chosen with probability F when the lobe also transmits (a thin sheet
         // included: its transmission is the delta straight through).
         float fr = mxc_mean(mxc_lobe_fresnel(l, max(dot(o, h), 0.0), above));
@@ -602,12 +603,15 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u) {
       bool delta = mxc_is_delta(l.alpha);
       vec3 m = delta ? vec3(0.0, 0.0, 1.0) : mxc_ggx_sample_vndf(o, l.alpha, u.xy);
       float hm = dot(o, m);
-      bool transmits = l.kind == MXC_LOBE_DIELECTRIC && mxc_lobe_transmits(l);
-      bool reflects = l.kind != MXC_LOBE_DIELECTRIC || (l.mode & MXC_REFLECT) != 0;
+      // A dielectric refracts; a Schlick lobe that transmits (MaterialX's generalized_schlick_bsdf
+      // with scatter_mode T or RT over a medium) passes what it does not reflect straight on, an
+      // IOR ratio of 1, as the reference walk's mxc_micro_crosses does.
+      bool transmits = (l.kind == MXC_LOBE_DIELECTRIC || l.kind == MXC_LOBE_SCHLICK) && mxc_lobe_transmits(l);
+      bool reflects = l.kind == MXC_LOBE_CONDUCTOR || (l.mode & MXC_REFLECT) != 0;
       vec3 f = mxc_lobe_fresnel(l, max(hm, 0.0), above);
       // Reflection or transmission is chosen by the mean Fresnel (a thin film colours F); the
       // sample's value keeps the colour.
-      float fr = l.kind == MXC_LOBE_DIELECTRIC ? mxc_mean(f) : 1.0;
+      float fr = transmits ? mxc_mean(f) : 1.0;
       float pReflect = transmits ? (reflects ? fr : 0.0) : 1.0;
       if (u.z < pReflect) {
         vec3 i = reflect(-o, m);
@@ -636,11 +640,12 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u) {
         s.valid = s.pdf > 0.0;
         return s;
       }
-      if (mxc_index_matched(l)) {
-        // Straight on, attenuated by what this microfacet's (film-coloured) Fresnel reflects.
+      if (l.kind == MXC_LOBE_SCHLICK || mxc_index_matched(l)) {
+        // Straight on, attenuated by what this microfacet's (film-coloured) Fresnel reflects;
+        // a dielectric's transmission tint applies (a Schlick lobe's c1 is its F82 tint).
         s.wi = -wo;
         s.delta = true;
-        s.value = (1.0 - f) * l.c1;
+        s.value = (1.0 - f) * (l.kind == MXC_LOBE_DIELECTRIC ? l.c1 : vec3(1.0));
         s.pdf = 1.0 - pReflect;
         s.valid = s.pdf > 0.0;
         return s;
