@@ -398,6 +398,25 @@ ExprId gltfNormalmap(Context& c, const NodeRef& n, std::string_view, Type) {
                               c.material.exprs.named(Op::GeomProp, Type::Vec3, "Tworld"),
                               c.material.exprs.named(Op::GeomProp, Type::Vec3, "Bworld")});
 }
+ExprId gltfIridescenceThickness(Context& c, const NodeRef& n, std::string_view, Type) {
+  // KHR_materials_iridescence: thickness = mix(minimum, maximum, texture.g), in glTF's order of
+  // placement. (MaterialX 1.39's graph of this node mixes the other way round, giving the
+  // maximum where g = 0; the extension is followed.)
+  const ExprId g = c.b.extract(gltfTexture(c, n, Type::Vec3, true), 1);
+  return c.b.lerp(in(c, n, "thicknessMin"), in(c, n, "thicknessMax"), g);
+}
+ExprId gltfAnisotropyImage(Context& c, const NodeRef& n, std::string_view output, Type) {
+  // KHR_materials_anisotropy: the texture's red and green are a direction in [-1, 1]^2 of the
+  // tangent frame, its blue a strength. Strength: anisotropy_strength times blue; rotation:
+  // anisotropy_rotation plus the direction's angle atan2(y, x) (0 for a zero direction).
+  const ExprId texel = gltfTexture(c, n, Type::Vec3, true);
+  if (output == "anisotropy_strength_out") return c.b.mul(in(c, n, "anisotropy_strength"), c.b.extract(texel, 2));
+  auto signedChannel = [&](int k) { return c.b.sub(c.b.mul(c.b.extract(texel, k), c.b.f(2.0f)), c.b.f(1.0f)); };
+  const ExprId x = signedChannel(0), y = signedChannel(1);
+  // atan2(0, 0) is undefined in GLSL: a zero direction keeps the rotation as given.
+  const ExprId angle = c.b.select(c.b.greater(c.b.add(c.b.abs(x), c.b.abs(y)), c.b.f(0.0f)), c.b.atan2(y, x), c.b.f(0.0f));
+  return c.b.add(in(c, n, "anisotropy_rotation"), angle);
+}
 ExprId normalmap(Context& c, const NodeRef& n, std::string_view, Type) {
   ExprId scale = in(c, n, "scale");
   if (c.b.type(scale) == Type::Float) scale = c.b.splat(scale, Type::Vec2);
@@ -829,6 +848,8 @@ const RuleTable& rules() {
       {"gltf_image", gltfImage},
       {"gltf_colorimage", gltfColorImage},
       {"gltf_normalmap", gltfNormalmap},
+      {"gltf_iridescence_thickness", gltfIridescenceThickness},
+      {"gltf_anisotropy_image", gltfAnisotropyImage},
       {"heighttonormal", heighttonormal},
       {"ramp4", ramp4},
       {"line", line},

@@ -1211,6 +1211,32 @@ def build_gltf_pbr():
                        'doc': 'A glTF normal texture, as a world-space normal.'},
            clean(inputs) + [('output', {'name': 'out', 'type': 'vector3', 'value': '0, 0, 0'})])
     L.count += 1
+    # KHR_materials_iridescence's thickness texture (its G channel between the two thicknesses);
+    # MaterialX's definition has no operationorder and pivot (0, 0).
+    inputs = [i('file', 'filename', '', u=True, uifolder='Image'), i('default', 'vector3', '0, 0, 0', uifolder='Image'),
+              i('texcoord', 'vector2', g='UV0', uifolder='Image'), i('pivot', 'vector2', '0, 0', uifolder='Image'),
+              i('scale', 'vector2', '1, 1', uifolder='Image'), i('rotate', 'float', '0', uifolder='Image'),
+              i('offset', 'vector2', '0, 0', uifolder='Image'),
+              i('uaddressmode', 'string', 'periodic', u=True, enum='constant,clamp,periodic,mirror', uifolder='Image'),
+              i('vaddressmode', 'string', 'periodic', u=True, enum='constant,clamp,periodic,mirror', uifolder='Image'),
+              i('filtertype', 'string', 'linear', u=True, enum='closest,linear,cubic', uifolder='Image'),
+              i('thicknessMin', 'float', '100', uifolder='Thickness'), i('thicknessMax', 'float', '400', uifolder='Thickness')]
+    L.elem('nodedef', {'name': 'ND_gltf_iridescence_thickness_float_1_0', 'node': 'gltf_iridescence_thickness',
+                       'version': '1.0', 'isdefaultversion': 'true', 'nodegroup': 'texture2d',
+                       'doc': 'glTF iridescence thickness: the texture\'s green channel between the two thicknesses.'},
+           clean(inputs) + [('output', {'name': 'out', 'type': 'float', 'value': '0'})])
+    L.count += 1
+    # KHR_materials_anisotropy's texture: direction in red and green, strength in blue.
+    inputs = [i('file', 'filename', '', u=True, uifolder='Image'), i('default', 'vector3', '1.0, 0.5, 1', uifolder='Image')]
+    inputs += [(tag, dict(attrs, uifolder='Image')) for tag, attrs in placement('0')]
+    inputs += [i('anisotropy_strength', 'float', '1', uimin='0', uimax='1', uifolder='Anisotropy'),
+               i('anisotropy_rotation', 'float', '0', uimin='0', uimax='6.283185', uifolder='Anisotropy')]
+    L.elem('nodedef', {'name': 'ND_gltf_anisotropy_image', 'node': 'gltf_anisotropy_image', 'version': '1.0',
+                       'isdefaultversion': 'true', 'nodegroup': 'texture2d',
+                       'doc': 'glTF anisotropy texture: strength and rotation of the anisotropy.'},
+           clean(inputs) + [('output', {'name': 'anisotropy_strength_out', 'type': 'float', 'value': '0'}),
+                            ('output', {'name': 'anisotropy_rotation_out', 'type': 'float', 'value': '0'})])
+    L.count += 1
     return L
 
 

@@ -443,3 +443,75 @@ TEST(StdlibRules, BlackbodyLiesOnThePlanckianLocus) {
 
 }  // namespace
 }  // namespace mxc::test
+
+namespace mxc::test {
+namespace {
+
+/// `e` evaluated with every texture sample replaced by `texel` (its first components), other
+/// operations folded as the compiler folds them; nullopt when a leaf is not constant.
+std::optional<ir::Constant> withTexel(const ir::ExprGraph& g, ir::ExprId e, const std::vector<float>& texel) {
+  if (g[e].op == ir::Op::ImageSample) {
+    const int n = ir::componentCount(g[e].type);
+    return ir::Constant{g[e].type, std::vector<float>(texel.begin(), texel.begin() + n)};
+  }
+  if (g[e].op == ir::Op::Constant) return ir::evaluateExpr(g, e);
+  std::vector<ir::Constant> args;
+  for (ir::ExprId a : g.argsOf(e)) {
+    std::optional<ir::Constant> v = withTexel(g, a, texel);
+    if (!v) return std::nullopt;
+    args.push_back(*v);
+  }
+  return ir::evaluate(g[e].op, g[e].type, args, g[e].payload, ir::hasTextPayload(g[e].op) ? g.text(e) : std::string());
+}
+
+/// The emission colour of an unlit surface fed by the float node "v" (its elements `nodes`),
+/// for a texel: the arithmetic a texture node's rule does on what it samples.
+float floatFromTexel(const std::string& nodes, const std::vector<float>& texel) {
+  Context context;
+  CompileRequest request;
+  request.document = "test.mtlx";
+  request.text = mtlx(nodes + "  <convert name=\"c\" type=\"color3\"><input name=\"in\" type=\"float\" nodename=\"v\"/></convert>\n"
+                              "  <surface_unlit name=\"surf\" type=\"surfaceshader\"><input name=\"emission_color\" type=\"color3\" "
+                              "nodename=\"c\"/></surface_unlit>\n  <surfacematerial name=\"M\" type=\"material\"><input "
+                              "name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"surf\"/></surfacematerial>\n");
+  Compiler compiler(context, std::move(request));
+  std::vector<ir::Material> materials = std::move(compiler.materials());
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  if (materials.empty() || materials[0].emissions.empty()) return NAN;
+  std::optional<ir::Constant> v = withTexel(materials[0].exprs, materials[0].emissions[0].slots.value(ir::Slot::Color), texel);
+  return v && !v->v.empty() ? v->v[0] : NAN;
+}
+
+// glTF's iridescence thickness and anisotropy textures: what the rules compute from a texel,
+// against the KHR extensions (and, for the anisotropy, MaterialX's own graph run beside).
+TEST(StdlibRules, GltfIridescenceAndAnisotropyTextures) {
+  const std::string file = "<input name=\"file\" type=\"filename\" value=\"missing.png\"/>";
+  // KHR_materials_iridescence: thickness = mix(min, max, g): g = 0.25 between 100 and 500 is 200.
+  // (MaterialX 1.39's graph mixes the other way round, 400.)
+  EXPECT_NEAR(floatFromTexel("  <gltf_iridescence_thickness name=\"v\" type=\"float\">" + file +
+                                 "<input name=\"thicknessMin\" type=\"float\" value=\"100\"/>"
+                                 "<input name=\"thicknessMax\" type=\"float\" value=\"500\"/></gltf_iridescence_thickness>\n",
+                             {0.9f, 0.25f, 0.7f}),
+              200.0f, 1e-3f);
+  // KHR_materials_anisotropy: strength x blue; rotation + atan2(2g - 1, 2r - 1).
+  const std::string definitions = materialxGraphCopy("bxdf/gltf_pbr.mtlx", "bxdf/gltf_pbr.mtlx", "ND_gltf_anisotropy_image");
+  ASSERT_GT(definitions.size(), 500u);
+  const std::string inputs = file + "<input name=\"anisotropy_strength\" type=\"float\" value=\"0.8\"/>"
+                                    "<input name=\"anisotropy_rotation\" type=\"float\" value=\"0.5\"/>";
+  const std::vector<float> texel = {0.5f, 1.0f, 0.25f};  // the direction (0, 1): a quarter turn
+  for (const char* output : {"anisotropy_strength_out", "anisotropy_rotation_out"}) {
+    auto graph = [&](const std::string& category, const std::string& defs) {
+      return defs + "  <" + category + " name=\"a\" type=\"multioutput\">" + inputs + "</" + category + ">\n" +
+             "  <dot name=\"v\" type=\"float\"><input name=\"in\" type=\"float\" nodename=\"a\" output=\"" + output +
+             "\"/></dot>\n";
+    };
+    const float ours = floatFromTexel(graph("gltf_anisotropy_image", ""), texel);
+    const float theirs = floatFromTexel(graph("copy", definitions), texel);
+    const float expected = std::string(output) == "anisotropy_strength_out" ? 0.8f * 0.25f : 0.5f + 1.5707964f;
+    EXPECT_NEAR(ours, expected, 1e-5f) << output;
+    EXPECT_NEAR(ours, theirs, 1e-5f) << output;
+  }
+}
+
+}  // namespace
+}  // namespace mxc::test
