@@ -18,22 +18,28 @@
 namespace mxc::test {
 namespace {
 
+/// The materials of a document whose unlit surface emits the color3 node `source` among
+/// `nodes` (lowered, passes run); the test fails on any error.
+std::vector<ir::Material> unlitMaterials(const std::string& nodes, const std::string& source) {
+  Context context;
+  CompileRequest request;
+  request.document = "test.mtlx";
+  request.text = mtlx(nodes + "  <surface_unlit name=\"surf\" type=\"surfaceshader\">\n"
+                      "    <input name=\"emission_color\" type=\"color3\" nodename=\"" + source + "\"/>\n"
+                      "  </surface_unlit>\n  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
+                      "type=\"surfaceshader\" nodename=\"surf\"/></surfacematerial>\n");
+  Compiler compiler(context, std::move(request));
+  std::vector<ir::Material> materials = std::move(compiler.materials());
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  return materials;
+}
+
 /// The colour a value node `node` (its elements, the node named "v") gives, seen through an
 /// unlit surface's emission colour (a float result converted to color3).
 std::vector<float> valueOf(const std::string& node, const std::string& type) {
   const std::string convert = type == "color3" ? "" :
       "  <convert name=\"c\" type=\"color3\"><input name=\"in\" type=\"" + type + "\" nodename=\"v\"/></convert>\n";
-  const std::string source = type == "color3" ? "v" : "c";
-  Context context;
-  CompileRequest request;
-  request.document = "test.mtlx";
-  request.text = mtlx(node + convert + "  <surface_unlit name=\"surf\" type=\"surfaceshader\">\n"
-                    "    <input name=\"emission_color\" type=\"color3\" nodename=\"" + source + "\"/>\n"
-                    "  </surface_unlit>\n  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
-                    "type=\"surfaceshader\" nodename=\"surf\"/></surfacematerial>\n");
-  Compiler compiler(context, std::move(request));
-  std::vector<ir::Material> materials = std::move(compiler.materials());
-  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  std::vector<ir::Material> materials = unlitMaterials(node + convert, type == "color3" ? "v" : "c");
   if (materials.empty()) return {};
   const ir::Material& m = materials[0];
   // A black emission is removed by the passes (dark emission): the value was 0.
@@ -350,16 +356,7 @@ namespace {
 /// The lattice points at which the emission colour of a document's material reads cell noise
 /// (each CellNoise2D's argument, folded), in the order found from the colour down.
 std::vector<std::vector<float>> cellNoisePoints(const std::string& body) {
-  Context context;
-  CompileRequest request;
-  request.document = "test.mtlx";
-  request.text = mtlx(body + "  <surface_unlit name=\"surf\" type=\"surfaceshader\">\n"
-                             "    <input name=\"emission_color\" type=\"color3\" nodename=\"v\"/>\n"
-                             "  </surface_unlit>\n  <surfacematerial name=\"M\" type=\"material\"><input "
-                             "name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"surf\"/></surfacematerial>\n");
-  Compiler compiler(context, std::move(request));
-  std::vector<ir::Material> materials = std::move(compiler.materials());
-  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  std::vector<ir::Material> materials = unlitMaterials(body, "v");
   std::vector<std::vector<float>> points;
   if (materials.empty() || materials[0].emissions.empty()) return points;
   const ir::Material& m = materials[0];
@@ -467,16 +464,8 @@ std::optional<ir::Constant> withTexel(const ir::ExprGraph& g, ir::ExprId e, cons
 /// The emission colour of an unlit surface fed by the float node "v" (its elements `nodes`),
 /// for a texel: the arithmetic a texture node's rule does on what it samples.
 float floatFromTexel(const std::string& nodes, const std::vector<float>& texel) {
-  Context context;
-  CompileRequest request;
-  request.document = "test.mtlx";
-  request.text = mtlx(nodes + "  <convert name=\"c\" type=\"color3\"><input name=\"in\" type=\"float\" nodename=\"v\"/></convert>\n"
-                              "  <surface_unlit name=\"surf\" type=\"surfaceshader\"><input name=\"emission_color\" type=\"color3\" "
-                              "nodename=\"c\"/></surface_unlit>\n  <surfacematerial name=\"M\" type=\"material\"><input "
-                              "name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"surf\"/></surfacematerial>\n");
-  Compiler compiler(context, std::move(request));
-  std::vector<ir::Material> materials = std::move(compiler.materials());
-  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  std::vector<ir::Material> materials = unlitMaterials(
+      nodes + "  <convert name=\"c\" type=\"color3\"><input name=\"in\" type=\"float\" nodename=\"v\"/></convert>\n", "c");
   if (materials.empty() || materials[0].emissions.empty()) return NAN;
   std::optional<ir::Constant> v = withTexel(materials[0].exprs, materials[0].emissions[0].slots.value(ir::Slot::Color), texel);
   return v && !v->v.empty() ? v->v[0] : NAN;
