@@ -139,19 +139,69 @@ int foldThinFilmLayers(Document& doc, ScopeNodes scope, Diagnostics& diagnostics
   return edits;
 }
 
+// MaterialX 1.39 removed the swizzle node. A connected swizzle becomes a `dot` (the identity)
+// whose input takes the channels of the connected value, the 1.38 `channels` form the resolver
+// already applies; a swizzle of a value (or of nothing) becomes a `constant` of the swizzled
+// components, as MaterialX's upgrade does: channel r/x, g/y, b/z, a/w picks a component, 0 and
+// 1 are constants, and a missing or unknown channel repeats the first component.
+int convertSwizzleNodes(Document& doc, ScopeNodes scope) {
+  int edits = 0;
+  for (Node& n : *scope.nodes) {
+    if (n.category != "swizzle") continue;
+    Input* in = n.findInput("in");
+    const Input* channelsInput = n.findInput("channels");
+    const std::string_view channels = channelsInput && channelsInput->valueString ? *channelsInput->valueString : "";
+    const ValueType destination = valueTypeOf(n.type);
+    ++edits;
+    if (in && in->isConnected()) {
+      n.category = "dot";
+      in->type = n.type;
+      in->channels = channels;
+      std::erase_if(n.inputs, [](const Input& i) { return i.name == "channels"; });
+      continue;
+    }
+    std::vector<float> source{0.0f};
+    if (in && in->value && !in->value->components().empty()) source = in->value->components();
+    std::string text;
+    for (int k = 0; k < std::max(componentCount(destination), 1); ++k) {
+      const char c = k < static_cast<int>(channels.size()) ? channels[static_cast<size_t>(k)] : '?';
+      const std::string_view names = "rgbaxyzw";
+      const size_t at = names.find(c);
+      float v = source[0];
+      if (c == '0' || c == '1') v = c == '0' ? 0.0f : 1.0f;
+      else if (at != std::string_view::npos && at % 4 < source.size()) v = source[at % 4];
+      text += (k ? ", " : "") + formatFloat(v);
+    }
+    Input value;
+    value.name = "value";
+    value.type = n.type;
+    value.location = n.location;
+    value.valueString = doc.own(text);
+    value.value = tryParseValue(destination, *value.valueString);
+    value.valueLocation = n.location;
+    n.category = "constant";
+    n.inputs.clear();
+    n.inputs.push_back(value);
+  }
+  return edits;
+}
+
 }  // namespace
 
 void upgradeTo139(Document& doc, Diagnostics& diagnostics) {
   if (doc.versionNumber() >= Version{1, 39}) return;
   int atan2 = 0;
   int radius = 0;
+  int swizzles = 0;
   for (ScopeNodes scope : scopesOf(doc)) {
+    swizzles += convertSwizzleNodes(doc, scope);
     atan2 += renameAtan2Inputs(scope);
     radius += convertSubsurfaceRadius(doc, scope);
     foldThinFilmLayers(doc, scope, diagnostics);
   }
   if (atan2) doc.upgradeNotes.push_back(fmt::format("{} atan2 inputs renamed to iny/inx", atan2));
   if (radius) doc.upgradeNotes.push_back(fmt::format("{} subsurface_bsdf radius inputs made color3", radius));
+  if (swizzles) doc.upgradeNotes.push_back(fmt::format("{} swizzle nodes made dot (with channels) or constant nodes", swizzles));
   doc.link();
 }
 

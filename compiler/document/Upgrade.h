@@ -26,7 +26,9 @@ void upgradeTo138(Document& doc, Diagnostics& diagnostics);
 /// Rewrites a 1.38 document in place so that it resolves against a 1.39 library:
 /// - layer(thin_film_bsdf, B) becomes B with thinfilm_thickness/thinfilm_ior on its BSDFs;
 /// - subsurface_bsdf's vector3 radius becomes color3 (through a convert node when connected);
-/// - atan2's in1/in2 become iny/inx.
+/// - atan2's in1/in2 become iny/inx;
+/// - a swizzle node becomes a dot whose input takes the swizzle's channels (connected) or a
+///   constant of the swizzled components (a value).
 /// The 1.38 `channels` swizzle on inputs needs no rewrite: the resolver applies it.
 /// Each change is listed in Document::upgradeNotes. 1.39 documents are untouched.
 void upgradeTo139(Document& doc, Diagnostics& diagnostics);

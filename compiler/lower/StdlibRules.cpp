@@ -522,6 +522,38 @@ ExprId tiledcircles(Context& c, const NodeRef& n, std::string_view, Type) {
   ExprId staggered = c.b.max(c.b.max(lowerLeft, lowerRight), top);
   return c.b.splat(c.b.select(in(c, n, "staggered"), staggered, regular), Type::Vec3);
 }
+// 1 inside a cloverleaf of `radius` about the origin: four discs of radius radius / 2 centred
+// radius / 2 away along +-x and +-y, tested as MaterialX's graph tests them, in doubled
+// coordinates (d = 2 p; discs of radius r about (+-r, 0) and (0, +-r)).
+ExprId cloverleafMask(Context& c, ExprId p, ExprId radius) {
+  const ExprId d = c.b.mul(p, c.b.f(2.0f));
+  const ExprId zero = c.b.f(0.0f);
+  auto leaf = [&](ExprId dx, ExprId dy) { return discMask(c, c.b.add(d, c.b.construct(Type::Vec2, {dx, dy})), radius); };
+  return c.b.max(c.b.max(leaf(radius, zero), leaf(c.b.neg(radius), zero)),
+                 c.b.max(leaf(zero, c.b.neg(radius)), leaf(zero, radius)));
+}
+ExprId cloverleaf(Context& c, const NodeRef& n, std::string_view, Type) {
+  return cloverleafMask(c, c.b.sub(in(c, n, "texcoord"), in(c, n, "center")), in(c, n, "radius"));
+}
+ExprId tiledcloverleafs(Context& c, const NodeRef& n, std::string_view, Type) {
+  // Regular: a cloverleaf of radius `size` in each cell mapped to [-1, 1]^2. Staggered (as
+  // MaterialX's graph lays it out): rows half a cell high, every other one shifted by half a
+  // cell, each cell seeing cloverleafs of radius size / 2 at its lower corners and at the middle
+  // of its top edge.
+  ExprId uv = tiledCoordinate(c, n);
+  ExprId regular = cloverleafMask(c, c.b.sub(c.b.mul(c.b.mod(uv, c.b.f(1.0f)), c.b.f(2.0f)), c.b.f(1.0f)), in(c, n, "size"));
+  ExprId x = c.b.extract(uv, 0);
+  ExprId y = c.b.extract(uv, 1);
+  ExprId shift = c.b.select(c.b.greater(c.b.mod(y, c.b.f(1.0f)), c.b.f(0.5f)), c.b.f(0.5f), c.b.f(0.0f));
+  ExprId mx = c.b.mod(c.b.add(x, shift), c.b.f(1.0f));
+  ExprId my = c.b.mod(y, c.b.f(0.5f));
+  ExprId radius = c.b.div(in(c, n, "size"), c.b.f(2.0f));
+  ExprId lowerLeft = cloverleafMask(c, c.b.construct(Type::Vec2, {mx, my}), radius);
+  ExprId lowerRight = cloverleafMask(c, c.b.construct(Type::Vec2, {c.b.sub(c.b.f(1.0f), mx), my}), radius);
+  ExprId top = cloverleafMask(c, c.b.construct(Type::Vec2, {c.b.sub(mx, c.b.f(0.5f)), c.b.sub(c.b.f(0.5f), my)}), radius);
+  ExprId staggered = c.b.max(c.b.max(lowerLeft, lowerRight), top);
+  return c.b.splat(c.b.select(in(c, n, "staggered"), staggered, regular), Type::Vec3);
+}
 ExprId trianglewave(Context& c, const NodeRef& n, std::string_view, Type) {
   // Period 1, 0 at the integers and 0.5 half-way: 0.5 - |mod(|x|, 1) - 0.5|.
   ExprId x = c.b.mod(c.b.abs(in(c, n, "in")), c.b.f(1.0f));
@@ -855,6 +887,8 @@ const RuleTable& rules() {
       {"line", line},
       {"trianglewave", trianglewave},
       {"circle", circle},
+      {"cloverleaf", cloverleaf},
+      {"tiledcloverleafs", tiledcloverleafs},
       {"checkerboard", checkerboard},
       {"grid", grid},
       {"crosshatch", crosshatch},

@@ -163,6 +163,40 @@ TEST(DocumentLoader, Upgrades138SubsurfaceRadiusAndAtan2) {
   EXPECT_FLOAT_EQ(r.top.findNode("angle")->findInput("inx")->value->as<float>(), 2.0f);
 }
 
+TEST(DocumentModel, Upgrades138SwizzleNodes) {
+  // MaterialX 1.39 removed <swizzle>: a connected one becomes a dot taking the channels of its
+  // input (the 1.38 form the resolver applies), one of a value a constant of the components.
+  const std::string text =
+      "<?xml version=\"1.0\"?>\n"
+      "<materialx version=\"1.38\">\n"
+      "  <constant name=\"c\" type=\"color3\"><input name=\"value\" type=\"color3\" value=\"0.1, 0.2, 0.3\"/></constant>\n"
+      "  <swizzle name=\"connected\" type=\"color4\">\n"
+      "    <input name=\"in\" type=\"color3\" nodename=\"c\"/>\n"
+      "    <input name=\"channels\" type=\"string\" value=\"bgr1\"/>\n"
+      "  </swizzle>\n"
+      "  <swizzle name=\"valued\" type=\"vector3\">\n"
+      "    <input name=\"in\" type=\"vector3\" value=\"0.1, 0.2, 0.3\"/>\n"
+      "    <input name=\"channels\" type=\"string\" value=\"z0x\"/>\n"
+      "  </swizzle>\n"
+      "</materialx>\n";
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(text);
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  const resolve::ResolvedNode* connected = r.top.findNode("connected");
+  ASSERT_NE(connected, nullptr);
+  EXPECT_EQ(connected->category(), "dot");
+  ASSERT_NE(connected->findInput("in"), nullptr);
+  EXPECT_EQ(connected->findInput("in")->channels, "bgr1");
+  EXPECT_EQ(connected->findInput("in")->upstream.node->name(), "c");
+  const resolve::ResolvedNode* valued = r.top.findNode("valued");
+  ASSERT_NE(valued, nullptr);
+  EXPECT_EQ(valued->category(), "constant");
+  ASSERT_NE(valued->findInput("value"), nullptr);
+  ASSERT_TRUE(valued->findInput("value")->value.has_value());
+  const std::vector<float> v = valued->findInput("value")->value->components();
+  EXPECT_EQ(v, (std::vector<float>{0.3f, 0.0f, 0.1f}));
+}
+
 TEST(DocumentModel, ReadsACorpusDocument) {
   Context context;
   const doc::Document* d =

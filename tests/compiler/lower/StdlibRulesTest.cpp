@@ -317,6 +317,11 @@ TEST(StdlibRules, ProceduralPatternsMatchMaterialXsGraphs) {
       {"ND_tiledcircles_color3", "tiledcircles", "color3", "<input name=\"uvtiling\" type=\"vector2\" value=\"3, 3\"/>"},
       {"ND_tiledcircles_color3", "tiledcircles", "color3",
        "<input name=\"uvtiling\" type=\"vector2\" value=\"3, 3\"/><input name=\"staggered\" type=\"boolean\" value=\"true\"/>"},
+      {"ND_cloverleaf_float", "cloverleaf", "float",
+       "<input name=\"center\" type=\"vector2\" value=\"0.5, 0.45\"/><input name=\"radius\" type=\"float\" value=\"0.4\"/>"},
+      {"ND_tiledcloverleafs_color3", "tiledcloverleafs", "color3", "<input name=\"uvtiling\" type=\"vector2\" value=\"3, 3\"/>"},
+      {"ND_tiledcloverleafs_color3", "tiledcloverleafs", "color3",
+       "<input name=\"uvtiling\" type=\"vector2\" value=\"3, 3\"/><input name=\"staggered\" type=\"boolean\" value=\"true\"/>"},
   };
   int differing = 0;
   for (const Pattern& pattern : patterns) {
