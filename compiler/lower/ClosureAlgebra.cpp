@@ -70,6 +70,11 @@ Closure addClosures(Context& c, const Closure& a, const Closure& b, const ir::Or
   return scatter(c.material.addNode(std::move(node)));
 }
 
+Index withOpacity(Context& c, Index root, const ir::Param& opacity, const ir::Origin& origin) {
+  if (!opacity.present() || c.material.exprs.isConstantEqual(opacity.value, 1.0f)) return root;
+  return c.material.mix(c.material.leaf(ir::ScatterKind::Ambient, origin), root, opacity, origin);
+}
+
 Closure scaleClosure(Context& c, const Closure& closure, const ir::Param& factor, const ir::Origin& origin) {
   if (closure.kind == Closure::Kind::Emission) return scaleEmission(c, closure, factor.value, factor.origin);
   if (closure.kind == Closure::Kind::Medium) {

@@ -19,6 +19,11 @@ Closure mixClosures(Context& c, const Closure& fg, const Closure& bg, const ir::
 /// a + b. A sum of BSDFs is noted as not energy-bounded; emissions are concatenated.
 Closure addClosures(Context& c, const Closure& a, const Closure& b, const ir::Origin& origin);
 
+/// A surface present over `opacity` of its area, the ambient seen through the rest:
+/// Mix(Ambient, root, opacity) (MaterialX surface "opacity"); `root` itself for an absent or
+/// constant-1 opacity.
+ir::Index withOpacity(Context& c, ir::Index root, const ir::Param& opacity, const ir::Origin& origin);
+
 /// `closure` scaled by `factor` (a float or a colour): a float w on a BSDF is Mix(black, f, w), a
 /// colour a Tint; emissions and media are scaled in their coefficients.
 Closure scaleClosure(Context& c, const Closure& closure, const ir::Param& factor, const ir::Origin& origin);

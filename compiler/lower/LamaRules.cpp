@@ -396,11 +396,9 @@ Closure lamaSurface(Context& c, const NodeRef& n, std::string_view) {
   }
   Index root = front.kind == Closure::Kind::Scatter ? front.index : c.material.leaf(ir::ScatterKind::Absorber, c.nodeOrigin(n));
   const ir::Param presence = c.param(n, "presence");
-  if (presence.present() && !c.material.exprs.isConstantEqual(presence.value, 1.0f)) {
-    c.material.opacity = presence;
-    root = c.material.mix(c.material.leaf(ir::ScatterKind::Ambient, c.nodeOrigin(n)), root, presence, c.nodeOrigin(n));
-  }
-  return scatter(root);
+  const Index covered = withOpacity(c, root, presence, c.nodeOrigin(n));
+  if (covered != root) c.material.opacity = presence;  // for transparent shadows
+  return scatter(covered);
 }
 
 }  // namespace mxc::lower

@@ -254,12 +254,10 @@ Closure surface(Context& c, const NodeRef& n, std::string_view) {
     node.origin = c.nodeOrigin(n);
     root = c.material.addNode(std::move(node));
   }
-  ir::Param opacity = c.param(n, "opacity");
-  if (opacity.present() && !c.material.exprs.isConstantEqual(opacity.value, 1.0f)) {
-    c.material.opacity = opacity;
-    root = c.material.mix(c.material.leaf(ir::ScatterKind::Ambient, c.nodeOrigin(n)), root, opacity, c.nodeOrigin(n));
-  }
-  return scatter(root);
+  const ir::Param opacity = c.param(n, "opacity");
+  const Index covered = withOpacity(c, root, opacity, c.nodeOrigin(n));
+  if (covered != root) c.material.opacity = opacity;  // for transparent shadows
+  return scatter(covered);
 }
 
 Closure surfaceUnlit(Context& c, const NodeRef& n, std::string_view) {
@@ -282,11 +280,7 @@ Closure surfaceUnlit(Context& c, const NodeRef& n, std::string_view) {
   emissive.emission = c.material.addEmission(std::move(e));
   emissive.origin = c.nodeOrigin(n);
   root = c.material.addNode(std::move(emissive));
-  ir::Param opacity = c.param(n, "opacity");
-  if (opacity.present() && !c.material.exprs.isConstantEqual(opacity.value, 1.0f)) {
-    root = c.material.mix(c.material.leaf(ir::ScatterKind::Ambient, c.nodeOrigin(n)), root, opacity, c.nodeOrigin(n));
-  }
-  return scatter(root);
+  return scatter(withOpacity(c, root, c.param(n, "opacity"), c.nodeOrigin(n)));
 }
 
 Closure shadingModel(Context& c, const NodeRef& n, std::string_view output) {

@@ -352,16 +352,17 @@ vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo) { return vec3(1.0); }
 // of Heitz 2018 for a white reflector is G1(wi)). Eight fixed points of an R2 sequence
 // (Roberts 2018) over the VNDF: deterministic, so the albedo is smooth in wo.
 vec3 mxc_film_albedo(MxcLobe l, vec3 wo, float alpha) {
-  vec3 o = vec3(wo.xy, max(wo.z, 1e-4));  // above the surface, as the VNDF sampler needs
+  vec3 o = normalize(vec3(wo.xy, max(wo.z, 1e-4)));  // above the surface, as the VNDF sampler needs
+  vec2 alphas = mxc_rough_alpha(l.alpha);
   vec3 filmed = vec3(0.0);
   float weight = 0.0;
   for (int k = 0; k < 8; ++k) {
     vec2 u = fract(vec2(0.5) + float(k) * vec2(0.7548777, 0.5698403));
-    vec3 m = mxc_ggx_sample_vndf(normalize(o), mxc_rough_alpha(l.alpha), u);
-    vec3 i = reflect(-normalize(o), m);
+    vec3 m = mxc_ggx_sample_vndf(o, alphas, u);
+    vec3 i = reflect(-o, m);
     if (i.z <= 0.0) continue;
-    float g = mxc_ggx_g1(i, mxc_rough_alpha(l.alpha));
-    filmed += g * mxc_lobe_fresnel(l, max(dot(normalize(o), m), 0.0), true);
+    float g = mxc_ggx_g1(i, alphas);
+    filmed += g * mxc_lobe_fresnel(l, max(dot(o, m), 0.0), true);
     weight += g;
   }
   // weight > 0 unless every reflection left below the surface (then no reflection at all).
