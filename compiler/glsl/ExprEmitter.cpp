@@ -282,6 +282,7 @@ std::string ExprEmitter::emit(ExprId id) {
       value = fmt::format("{}(mxc_worley(vec3({}, 0.0), {}))", type, a(0), a(1));
       break;
     case Op::WorleyNoise3D: procedural_ = true; value = fmt::format("{}(mxc_worley({}, {}))", type, a(0), a(1)); break;
+    case Op::Flake: procedural_ = true; value = fmt::format("mxc_flake({}, {})", a(0), a(1)); break;
     case Op::ImageSample: {
       procedural_ = true;
       std::vector<std::string> modes = split(m_.exprs.text(id), ',');

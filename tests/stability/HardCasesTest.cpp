@@ -93,6 +93,20 @@ const HardCase kCases[] = {
   </open_pbr_surface>
   <surfacematerial name="M" type="material"><input name="surfaceshader" type="surfaceshader" nodename="s" /></surfacematerial>
 )", Energy::Bounded, "a NaN tangent computed at run time (0 / 0) falls back like a zero one"},
+  {"flake_normal_extremes", "document", R"(
+  <flake3d name="f" type="multioutput">
+    <input name="size" type="float" value="0" />
+    <input name="coverage" type="float" value="5" />
+    <input name="roughness" type="float" value="3" />
+    <input name="tangent" type="vector3" value="0, 0, 0" />
+  </flake3d>
+  <open_pbr_surface name="s" type="surfaceshader">
+    <input name="base_metalness" type="float" value="1" />
+    <input name="base_color" type="color3" value="1, 1, 1" />
+    <input name="geometry_normal" type="vector3" nodename="f" output="flakenormal" />
+  </open_pbr_surface>
+  <surfacematerial name="M" type="material"><input name="surfaceshader" type="surfaceshader" nodename="s" /></surfacematerial>
+)", Energy::Bounded, "flakes of size 0 and coverage above 1, normals of roughness 3 in a frame without tangent: a unit normal, no division by zero"},
   {"thin_film_thickness_0", "openpbr", R"(<input name="thin_film_weight" type="float" value="1" /><input name="thin_film_thickness" type="float" value="0" /><input name="base_color" type="color3" value="1, 1, 1" />)", Energy::Lossless,
    "no film: the interface's own Fresnel (OpenPBR 'Thin-film iridescence'); removed by the passes"},
   {"thin_film_thick", "openpbr", R"(<input name="thin_film_weight" type="float" value="1" /><input name="thin_film_thickness" type="float" value="1000" /><input name="base_color" type="color3" value="1, 1, 1" />)", Energy::Bounded,

@@ -67,6 +67,40 @@ float mxc_worley(vec3 p, float jitter) {
   return best;
 }
 
+// Glitter flakes (MaterialX "flake2d", "flake3d") as a Boolean model of random sets (Chiu,
+// Stoyan, Kendall and Mecke, "Stochastic Geometry and Its Applications", 3rd ed., ch. 3): each
+// unit cell holds a flake with probability `probability`, a cube of side sqrt(3) centred in the
+// cell and turned by a uniformly random rotation (Shoemake 1992, "Uniform Random Rotations",
+// Graphics Gems III). The cube's inscribed ball (radius sqrt(3)/2) reaches every corner of its
+// cell, so when every cell holds a flake every point is covered; its circumscribed ball (radius
+// 3/2) stays within the 27 cells around a point, so those hold every flake that can cover it.
+// Where flakes overlap, the one of highest priority (a random number per flake: the one lying
+// on top) is seen. Returns (priority, rand, xi0, xi1) of that flake, priority in (0, 1], all
+// zero where no flake is; xi0 and xi1 are in [0, 1) and sample its normal.
+vec4 mxc_flake(vec3 p, float probability) {
+  ivec3 cell = ivec3(floor(p));
+  vec4 seen = vec4(0.0);
+  for (int k = 0; k < 27; ++k) {
+    ivec3 c = cell + ivec3(k % 3 - 1, (k / 3) % 3 - 1, k / 9 - 1);
+    vec3 d = p - (vec3(c) + 0.5);
+    if (dot(d, d) > 2.25) continue;  // beyond the circumscribed ball: this cell's flake cannot cover p
+    if (mxc_hash(c + ivec3(0, 0, 7703)) >= probability) continue;  // the cell holds no flake
+    float priority = 1.0 - mxc_hash(c + ivec3(0, 6271, 0));  // in (0, 1]: 0 is kept for "no flake"
+    if (priority <= seen.x) continue;
+    // The unit quaternion of Shoemake's method; u.x in [0, 1) keeps both square roots real.
+    vec3 u = mxc_hash3(c + ivec3(4421, 0, 0));
+    float a = sqrt(1.0 - u.x);
+    float b = sqrt(u.x);
+    vec4 q = vec4(a * sin(6.28318531 * u.y), a * cos(6.28318531 * u.y), b * sin(6.28318531 * u.z),
+                  b * cos(6.28318531 * u.z));
+    vec3 t = 2.0 * cross(q.xyz, d);
+    vec3 r = d + q.w * t + cross(q.xyz, t);  // d turned by q
+    if (max(abs(r.x), max(abs(r.y), abs(r.z))) > 0.8660254) continue;  // outside the cube
+    seen = vec4(priority, mxc_hash3(c + ivec3(0, 0, 9157)));
+  }
+  return seen;
+}
+
 // HSV with hue in [0, 1) (Smith 1978).
 vec3 mxc_rgb_to_hsv(vec3 c) {
   float maxc = max(c.r, max(c.g, c.b));
