@@ -102,3 +102,32 @@ TEST(SpirvOptimisation, FixedSpecializationConstantsFoldTheirBranches) {
 
 }  // namespace
 }  // namespace mxc::test
+
+namespace mxc::test {
+namespace {
+
+// Validation skips SPIRV-Tools' friendly names for speed (they were a quarter of a material's
+// compile time); a module that fails is validated again with them, so the message still names
+// the ids it is about: here an entry point that is the buffer variable `o`, not a function.
+TEST(SpirvValidation, AnInvalidModulesMessageNamesItsIds) {
+  Diagnostics diagnostics;
+  auto words = spirv::compile(shader(chain("f", 1)), {}, diagnostics);
+  ASSERT_TRUE(words) << diagnostics.format();
+  uint32_t buffer = 0;  // the result id of the OpVariable (opcode 59) of the buffer o
+  size_t entryPoint = 0;  // where OpEntryPoint (opcode 15) is: model, function id, name, ...
+  for (size_t i = 5; i < words->size();) {
+    const uint32_t n = (*words)[i] >> 16;
+    const uint32_t opcode = (*words)[i] & 0xffffu;
+    if (opcode == 59u && (*words)[i + 3] != 7u) buffer = (*words)[i + 2];  // not a Function-storage local
+    if (opcode == 15u) entryPoint = i;
+    i += n;
+  }
+  ASSERT_NE(buffer, 0u);
+  ASSERT_NE(entryPoint, 0u);
+  (*words)[entryPoint + 2] = buffer;
+  const std::string message = spirv::validate(*words);
+  EXPECT_NE(message.find("[%o]"), std::string::npos) << message;  // with the names off: "[%20]"
+}
+
+}  // namespace
+}  // namespace mxc::test
