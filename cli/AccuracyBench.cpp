@@ -524,7 +524,7 @@ int runAccuracyBench(const AccuracyBenchOptions& options) {
 
   Device device(options.device);
   rt::AlbedoTables* tables = device.tables();
-  if (!tables) return kInvalidDocument;
+  if (!tables) return kNoDevice;
   AccuracyReport report;
   report.device = device.context()->deviceName();
   report.command = reproduce(options);

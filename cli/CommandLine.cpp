@@ -334,7 +334,7 @@ int runCommandLine(int argc, char** argv) {
   app.set_version_flag("--version", "mxc 0.1.0");
   app.footer(
       "Exit codes: 0 success, 1 invalid document or library (errors name file:line:column), 2 usage error, "
-      "3 an output could not be written, 4 out of memory.\nRun 'mxc COMMAND --help' for the options of a command.");
+      "3 an output could not be written, 4 out of memory, 5 no usable Vulkan device.\nRun 'mxc COMMAND --help' for the options of a command.");
   int exitCode = kOk;
   registerInspect(app, exitCode);
   registerCompile(app, exitCode);

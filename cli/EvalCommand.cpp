@@ -118,7 +118,7 @@ int runEval(const EvalOptions& options) {
   if (int code = declareReport(outputs, options.output, pipeline, options.dirs); code != kOk) return code;
   Device device(options.device);
   rt::AlbedoTables* tables = device.tables();
-  if (!tables) return kInvalidDocument;
+  if (!tables) return kNoDevice;
   std::string csv = "material,row,fcos_r,fcos_g,fcos_b,pdf\n";
   for (const ir::Material& material : pipeline.materials()) {
     auto program = prepareMaterial(pipeline, session, *device.context(), material, glsl::ShaderKind::Eval);
@@ -145,7 +145,7 @@ int runFurnace(const FurnaceOptions& options) {
   if (int code = declareReport(outputs, options.output, pipeline); code != kOk) return code;
   Device device(options.device);
   rt::AlbedoTables* tables = device.tables();
-  if (!tables) return kInvalidDocument;
+  if (!tables) return kNoDevice;
   // View angles theta_k = 90 deg * k / N, k = 0..N-1: normal incidence first, never exactly grazing.
   std::vector<glm::vec3> views;
   std::vector<double> thetas;

@@ -10,6 +10,7 @@ enum ExitCode : int {
   kUsage = 2,            ///< bad command line
   kOutputFailed = 3,     ///< an output could not be written (nothing partial is left behind)
   kOutOfMemory = 4,      ///< memory ran out (nothing partial is left behind)
+  kNoDevice = 5,         ///< no usable Vulkan device (none, none matching --device, or it failed to start)
 };
 
 }  // namespace mxc::cli

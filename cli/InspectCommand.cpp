@@ -17,6 +17,12 @@ namespace mxc::cli {
 
 int runInspect(const InspectOptions& options) {
   if (options.effects) return runInspectEffects(options);
+  if (!options.ir && (!options.inputs.set.empty() || !options.inputs.parameters.empty())) {
+    // The plain report shows the document as written; --set and --param change what is compiled.
+    std::fprintf(stderr, "error: --set and --param change the compiled material: use them with inspect --ir or "
+                         "--effects (the plain report shows the document as written)\n");
+    return kUsage;
+  }
   const std::string output = options.output.empty() ? "-" : options.output;
   OutputSet outputs;
   if (printError(outputs.declare(output, "-o"))) return kOutputFailed;

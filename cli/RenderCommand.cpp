@@ -235,7 +235,7 @@ int runRender(const RenderOptions& options) {
   }
   Device device(options.device);
   rt::AlbedoTables* tables = device.tables();
-  if (!tables) return kInvalidDocument;
+  if (!tables) return kNoDevice;
   // The image module (OpenImageIO, 0.2-0.4 s to load) loads while the shaders and pipelines
   // compile. It starts after the device: the dynamic loader loads one library at a time, and the
   // Vulkan driver would wait behind the module's 260. The environment image, which needs the

@@ -218,7 +218,7 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
 
   Device device(options.device);
   rt::AlbedoTables* tables = device.tables();
-  if (!tables) return kInvalidDocument;
+  if (!tables) return kNoDevice;
   // The image module loads while the shaders and pipelines compile, after the device (as in
   // runRender, cli/RenderCommand.cpp); the formats are checked before the first frame.
   rt::ImageModulePreload preload;

@@ -365,7 +365,7 @@ int runSpecializationBench(const SpecializationBenchOptions& options) {
   Device device(options.device);
   rt::AlbedoTables* tables = device.tables();
   rt::TextureCache* textures = device.textures();
-  if (!tables || !textures) return kInvalidDocument;
+  if (!tables || !textures) return kNoDevice;
   SpecializationReport report;
   report.device = device.context()->deviceName();
   report.command = reproduce(options);

@@ -58,6 +58,7 @@ std::vector<ir::Material>& Compiler::materials() {
   if (!request_.material.empty()) {
     std::erase_if(materials_, [&](const ir::Material& m) { return m.name != request_.material; });
   }
+  lower::checkUserInputs(materials_, lowering, workspace_.diagnostics);
   for (ir::Material& m : materials_) finishMaterial(m, request_);
   return materials_;
 }

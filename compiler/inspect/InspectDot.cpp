@@ -21,6 +21,14 @@ std::string quote(std::string_view text) {
   return out + "\"";
 }
 
+/// A two-line DOT label: each line quoted as `quote` does, joined by DOT's own line break (the
+/// escape \n, which quoting the joined text would turn into a literal backslash and n).
+std::string twoLines(std::string_view first, std::string_view second) {
+  const std::string a = quote(first);
+  const std::string b = quote(second);
+  return a.substr(0, a.size() - 1) + "\\n" + b.substr(1);
+}
+
 std::string graphOutputId(const ResolvedGraph& g, std::string_view output) {
   return fmt::format("{}/output:{}", g.name(), output);
 }
@@ -54,7 +62,7 @@ std::string inspectDot(const InspectInput& input) {
   auto nodeLine = [&](const ResolvedNode& n, const char* indent) {
     std::string shape = n.signature && n.signature->outputType() == "material" ? ", shape=doubleoctagon" : "";
     out += fmt::format("{}{} [label={}{}];\n", indent, quote(nodeId(n)),
-                       quote(fmt::format("{}\\n<{}>", n.name(), n.category())), shape);
+                       twoLines(n.name(), fmt::format("<{}>", n.category())), shape);
   };
   for (const auto& n : rd.top.nodes) nodeLine(*n, "  ");
   for (const auto& g : rd.graphs) {

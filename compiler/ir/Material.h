@@ -44,6 +44,7 @@ struct ShaderInput {
     Connected,  ///< connected to a node graph, a node or a geometric property
   };
   std::string_view name;
+  std::string_view type;    ///< its MaterialX type (color3, float, ...)
   Source source = Source::Default;
   std::string value;        ///< as written ("0.8, 0.8, 0.8"); empty when connected
   std::string range;        ///< the nodedef's UI range ("0 to 1"), empty when it declares none

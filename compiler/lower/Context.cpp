@@ -161,11 +161,9 @@ ir::ExprId Context::value(const ResolvedInput& in, Env& env) {
 ir::ExprId Context::userInput(const ResolvedInput& in, ir::ExprId v) {
   for (const auto& [name, text] : options.overrides) {
     if (name != in.name) continue;
-    doc::ValueError why;
-    std::optional<doc::Value> parsed = doc::tryParseValue(doc::valueTypeOf(in.type), text, &why);
-    if (!parsed) {
-      error(shaderNode->node->location, fmt::format("--set {}={}: not a valid {} value ({})", name, text, in.type, why.message));
-    } else {
+    // A value that does not parse as the input's type is reported once for the whole run, at
+    // the argument (lower::checkUserInputs); the document's value stays.
+    if (std::optional<doc::Value> parsed = doc::tryParseValue(doc::valueTypeOf(in.type), text)) {
       v = material.exprs.constant(*parsed);
     }
   }

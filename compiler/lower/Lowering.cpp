@@ -1,6 +1,9 @@
 #include "compiler/lower/Lowering.h"
 
+#include <algorithm>
+
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "compiler/lower/Context.h"
 
@@ -8,26 +11,12 @@ namespace mxc::lower {
 
 namespace {
 
-/// `--set` and `--param` must name inputs of the shading node.
-void checkUserInputs(Context& c, const LoweringOptions& options, const std::string& material) {
-  std::vector<std::string> names;
-  for (const auto& o : options.overrides) names.push_back(o.first);
-  names.insert(names.end(), options.parameters.begin(), options.parameters.end());
-  for (const std::string& name : names) {
-    if (!c.shaderNode) {
-      c.error({}, fmt::format("--set/--param {}: material '{}' has no shading node to set it on", name, material));
-    } else if (!c.shaderNode->findInput(name)) {
-      c.error(c.shaderNode->node->location,
-              fmt::format("--set/--param {}: <{}> has no input named '{}'", name, c.shaderNode->category(), name));
-    }
-  }
-}
-
 /// The shading node's inputs as the compilation sees them (ir::ShaderInput), after lowering.
 void recordShaderInputs(const resolve::ResolvedNode& node, const LoweringOptions& options, ir::Material& material) {
   for (const resolve::ResolvedInput& in : node.inputs) {
     ir::ShaderInput out;
     out.name = in.name;
+    out.type = in.type;
     out.location = in.location;
     const bool valued = in.source == resolve::InputSource::Value || in.source == resolve::InputSource::Default;
     out.source = in.source == resolve::InputSource::Value     ? ir::ShaderInput::Source::Document
@@ -35,7 +24,7 @@ void recordShaderInputs(const resolve::ResolvedNode& node, const LoweringOptions
                                                               : ir::ShaderInput::Source::Connected;
     if (valued && in.value) out.value = in.value->str();
     for (const auto& [name, text] : options.overrides) {
-      if (name == in.name) {
+      if (name == in.name && doc::tryParseValue(doc::valueTypeOf(in.type), text)) {
         out.source = ir::ShaderInput::Source::Override;
         out.value = text;
       }
@@ -65,7 +54,6 @@ ir::Material lowerShader(const resolve::ResolvedDocument& document, const Loweri
   if (!shader && graphOutput && graphOutput->source == resolve::InputSource::Connection) {
     c.shaderNode = graphOutput->upstream.node;
   }
-  checkUserInputs(c, options, material.name);
   if (shader) {
     material.shader = std::string(shader->category());
     material.origin = {shader->node->location, shader->name()};
@@ -130,6 +118,62 @@ std::vector<ir::Material> lowerDocument(const resolve::ResolvedDocument& documen
     materials.push_back(lowerShader(document, options, diagnostics, std::string(node->name()), node.get(), nullptr, nullptr));
   }
   return materials;
+}
+
+void checkUserInputs(const std::vector<ir::Material>& materials, const LoweringOptions& options,
+                     Diagnostics& diagnostics) {
+  if (materials.empty()) return;
+  std::vector<std::pair<std::string, std::string>> asked = options.overrides;  // (name, value); --param has none
+  for (const std::string& p : options.parameters) asked.emplace_back(p, std::string());
+  std::vector<std::string> done;
+  for (size_t k = 0; k < asked.size(); ++k) {
+    const auto& [name, text] = asked[k];
+    const bool isSet = k < options.overrides.size();
+    const std::string flag = isSet ? fmt::format("--set {}={}", name, text) : fmt::format("--param {}", name);
+    if (std::find(done.begin(), done.end(), flag) != done.end()) continue;  // said once
+    done.push_back(flag);
+    std::vector<const ir::Material*> with, without;
+    for (const ir::Material& m : materials) (m.shaderInput(name) ? with : without).push_back(&m);
+    if (with.empty()) {
+      if (materials.size() == 1) {
+        const ir::Material& m = materials.front();
+        if (m.shaderInputs.empty()) {
+          diagnostics.error({}, fmt::format("{}: material '{}' has no shading node to set it on", flag, m.name));
+        } else {
+          diagnostics.error(m.origin.location, fmt::format("{}: <{}> has no input named '{}'", flag, m.shader, name));
+        }
+      } else {
+        std::vector<std::string> which;
+        for (const ir::Material& m : materials) which.push_back(fmt::format("{} (<{}>)", m.name, m.shader));
+        diagnostics.error({}, fmt::format("{}: no material's shading node has an input named '{}': {}", flag, name,
+                                          fmt::join(which, ", ")));
+      }
+      continue;
+    }
+    if (isSet) {
+      // The value is checked against each type the input has among the materials (one, as a rule).
+      bool bad = false;
+      for (const ir::Material* m : with) {
+        const std::string_view type = m->shaderInput(name)->type;
+        doc::ValueError why;
+        if (!bad && !doc::tryParseValue(doc::valueTypeOf(type), text, &why)) {
+          // The parser's reason, when it says more than that ("expected 3 components, found 2").
+          const bool more = why.message.find(text) == std::string::npos || text.empty();
+          diagnostics.error({}, fmt::format("{}: '{}' is not a {}{}", flag, text, type,
+                                            more ? fmt::format(" ({})", why.message) : std::string()));
+          bad = true;
+        }
+      }
+      if (bad) continue;
+    }
+    if (!without.empty()) {
+      std::vector<std::string> applied, skipped;
+      for (const ir::Material* m : with) applied.push_back(m->name);
+      for (const ir::Material* m : without) skipped.push_back(fmt::format("{} (<{}>)", m->name, m->shader));
+      diagnostics.note({}, fmt::format("{} applies to {}; not to {}, whose shading node has no input '{}'", flag,
+                                       fmt::join(applied, ", "), fmt::join(skipped, ", "), name));
+    }
+  }
 }
 
 }  // namespace mxc::lower

@@ -48,4 +48,11 @@ struct LoweringOptions {
 std::vector<ir::Material> lowerDocument(const resolve::ResolvedDocument& document, const LoweringOptions& options,
                                         Diagnostics& diagnostics);
 
+/// Says once for the run what `--set` and `--param` did over `materials` (the materials a
+/// command compiles): an error when no material's shading node has the input (at that node when
+/// there is one material), an error at the argument when a --set value is not of the input's
+/// type, and a note naming the materials it applies to when only some have the input.
+void checkUserInputs(const std::vector<ir::Material>& materials, const LoweringOptions& options,
+                     Diagnostics& diagnostics);
+
 }  // namespace mxc::lower

@@ -141,7 +141,22 @@ TEST(InspectCommand, DotIsAGraphvizDigraph) {
   EXPECT_EQ(r.out.rfind("digraph ", 0), 0u);
   EXPECT_NE(r.out.find("subgraph \"cluster_NG_BrickPattern\""), std::string::npos);
   EXPECT_NE(r.out.find("\"NG_BrickPattern/node_clamp_0\" -> \"NG_BrickPattern/output:base_color_output\""), std::string::npos);
+  // Name and category on two lines: DOT's escape \n, one backslash (two would show a literal "\n").
+  EXPECT_NE(r.out.find("[label=\"N_StandardSurface\\n<standard_surface>\"]"), std::string::npos) << r.out.substr(0, 300);
+  EXPECT_EQ(r.out.find("\\\\n"), std::string::npos);
   EXPECT_EQ(r.out.back(), '\n');
+}
+
+// --set and --param change what is compiled, so they go with --ir (and --effects); the plain
+// report shows the document as written and refuses them rather than ignore them.
+TEST(InspectCommand, SetAndParamNeedTheIr) {
+  const std::string doc = corpus("openpbr-presets/open_pbr_default.mtlx");
+  CommandRun r = mxc("inspect " + doc + " --set base_color=0.1,0.2,0.3");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("use them with inspect --ir or --effects"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  r = mxc("inspect --ir " + doc + " --set base_color=0.1,0.2,0.3");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
 }
 
 TEST(InspectCommand, InvalidDocumentExitsOneWithPositionAndNoReport) {

@@ -115,12 +115,46 @@ TEST(CompileCommand, BadSetIsAnErrorAtTheShadingNode) {
   EXPECT_NE(r.err.find("open_pbr_default.mtlx:7:3:"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("has no input named 'nonsense'"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(spv)) << "nothing is written for a failed compile";
+  // A value that is not of the input's type: said once, at the argument, with no source line.
+  r = mxc("compile " + corpus(kDefault) + " --set base_color=red -o " + spv.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(r.err.rfind("error: --set base_color=red: 'red' is not a color3\n", 0), 0u) << r.err;
+  EXPECT_EQ(r.err.find("error:", 1), std::string::npos) << "reported once: " << r.err;
+  EXPECT_FALSE(fs::exists(spv));
   r = mxc("compile " + corpus(kDefault) + " --set base_color");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("expected INPUT=VALUE"), std::string::npos) << r.err;
   r = mxc("compile " + corpus(kDefault) + " --material Nope");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("has no material 'Nope' (it has: Default)"), std::string::npos) << r.err;
+}
+
+// --set on a document of several materials applies to those whose shading node has the input
+// and says which when some lack it; an input none of them has is one error naming them all.
+TEST(CompileCommand, SetOnSeveralMaterialsSaysWhichItAppliesTo) {
+  const fs::path doc = writeTemp("two_models.mtlx",
+                                 "<materialx version=\"1.39\">\n"
+                                 "  <open_pbr_surface name=\"o\" type=\"surfaceshader\"/>\n"
+                                 "  <surfacematerial name=\"A\" type=\"material\"><input name=\"surfaceshader\" "
+                                 "type=\"surfaceshader\" nodename=\"o\"/></surfacematerial>\n"
+                                 "  <standard_surface name=\"s\" type=\"surfaceshader\"/>\n"
+                                 "  <surfacematerial name=\"B\" type=\"material\"><input name=\"surfaceshader\" "
+                                 "type=\"surfaceshader\" nodename=\"s\"/></surfacematerial>\n"
+                                 "</materialx>\n");
+  TempFolder out("set_several");
+  CommandRun r = mxc("compile " + doc.string() + " --set base_color=0.5,0.5,0.5 --set coat_weight=1 -o " +
+                     (out / "m.spv").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("note: --set coat_weight=1 applies to A; not to B (<standard_surface>)"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("base_color"), std::string::npos) << "both have base_color: nothing to say: " << r.err;
+  EXPECT_TRUE(fs::exists(out / "m_A.spv") && fs::exists(out / "m_B.spv"));
+  r = mxc("compile " + doc.string() + " --set nonsense=1 -o " + (out / "n.spv").string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("error: --set nonsense=1: no material's shading node has an input named 'nonsense': "
+                       "A (<open_pbr_surface>), B (<standard_surface>)"),
+            std::string::npos)
+      << r.err;
+  fs::remove(doc);
 }
 
 // A document of definitions or node graphs only is valid and has nothing to compile: compile

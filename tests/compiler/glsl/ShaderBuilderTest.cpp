@@ -101,7 +101,7 @@ TEST(ShaderBuilder, SetOverridesAnInputAndReportsBadOnes) {
     Context context;
     lowerText(context, openPbr(), withInputs({{"base_color", "red"}}));
     ASSERT_TRUE(context.diagnostics.hasErrors());
-    EXPECT_NE(context.firstError().message.find("--set base_color=red: not a valid color3 value"), std::string::npos)
+    EXPECT_NE(context.firstError().message.find("--set base_color=red: 'red' is not a color3"), std::string::npos)
         << context.firstError().message;
   }
 }
