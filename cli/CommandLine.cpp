@@ -5,9 +5,11 @@
 
 #include "cli/CommandLine.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -16,12 +18,18 @@
 
 #include "cli/AccuracyBench.h"
 #include "cli/SpecializationBench.h"
+#include "cli/Verbosity.h"
 #include "cli/CompileCommand.h"
 #include "cli/EvalCommand.h"
 #include "cli/ExitCode.h"
 #include "cli/InspectCommand.h"
 #include "cli/RenderCommand.h"
 #include "compiler/common/ColorSpace.h"
+#include "runtime/ImageIO.h"
+#include "runtime/VulkanContext.h"
+
+#include <glslang/build_info.h>
+#include <spirv-tools/libspirv.h>
 
 namespace mxc::cli {
 
@@ -75,6 +83,7 @@ void addInputOptions(CLI::App& command, MaterialOptions& options) {
           "balanced (tables and multiple-scattering compensation; the default), reference (Monte Carlo random walk "
           "through the slab stacks: the ground truth, eval an unbiased estimate)")
       ->type_name(names)
+      ->default_str(std::string(accuracyName(options.accuracy)))
       ->check(CLI::Validator(
           [names](std::string& text) -> std::string {
             return parseAccuracy(text) ? std::string() : fmt::format("'{}' is not a tier ({})", text, names);
@@ -161,7 +170,6 @@ void registerCompile(CLI::App& app, int& exitCode) {
                       "shader of the directional albedo; sample: compute shader drawing sample directions")
       ->check(CLI::IsMember({"frag", "comp", "furnace", "sample"}));
   command->add_flag("-O,--optimize", options->optimize, "Optimise the module with SPIRV-Tools' performance passes");
-  command->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");
   const std::string linear = fmt::format("{}", fmt::join(linearColorSpaceNames(), ", "));
   command
       ->add_option("--working-space", options->materials.workingSpace,
@@ -222,7 +230,11 @@ void registerRender(CLI::App& app, int& exitCode) {
       "coverage alpha; .png (and other 8-bit formats): tone-mapped (--tonemap), sRGB, over --background or the "
       "environment image. With several materials, file names get _<material>");
   command->add_option("file", options->file, "The .mtlx document, or a scene file (.json: docs/scenes.md)")->required();
-  command->add_option("-o,--output", options->outputs, "Output image (.png, .exr, .jpg, ...); repeatable")->required();
+  command->add_option("-o,--output", options->outputs,
+                      "Output image (.png, .exr, .jpg, ...), or - for standard output (with --format); repeatable")
+      ->required();
+  command->add_option("--format", options->format,
+                      "The image format of -o - (standard output), as a file extension: png, exr, jpg, tif, hdr, ...");
   command->add_option("--size", options->size, "N (square) or WxH, in pixels, each 8 to 8192");
   command->add_option("--spp", options->spp, "Samples (frames) per pixel")->check(CLI::Range(1, 1 << 20));
   command->add_option("--light", options->lights,
@@ -326,15 +338,63 @@ void registerBench(CLI::App& app, int& exitCode) {
   command->callback([specialize, &exitCode] { exitCode = runSpecializationBench(*specialize); });
 }
 
+/// -q and -v on every command (cli/Verbosity.h): one setting for the process.
+void addVerbosityOptions(CLI::App& app) {
+  for (CLI::App* command : app.get_subcommands({})) {
+    if (!command->get_subcommands({}).empty()) {
+      addVerbosityOptions(*command);  // bench: on its own commands
+      continue;
+    }
+    CLI::Option* q = command->add_flag_callback(
+        "-q,--quiet", [] { setVerbosity(Verbosity::Quiet); },
+        "Print nothing but errors: no warnings, notes, summaries or progress (reports and data still go to -o or "
+        "stdout)");
+    CLI::Option* v = command->add_flag_callback(
+        "-v,--verbose", [] { setVerbosity(Verbosity::Verbose); },
+        "Also say on stderr what each stage did and how long it took (libraries, document, lowering, GLSL, SPIR-V, "
+        "device)");
+    q->excludes(v);
+  }
+}
+
+/// --help's defaults, shown as CLI11 captured them from the options structs, less those that
+/// mean nothing to a reader: an empty list ("[]"), and a 0 that stands for "chosen by the
+/// command" (the description says what is chosen). Recurses into every command.
+void tidyDefaults(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
+    const std::string shown = option->get_default_str();
+    if (shown == "[]" || (shown == "0" && option->get_description().find("(default:") != std::string::npos)) {
+      option->default_str("");
+    }
+  }
+  for (CLI::App* command : app.get_subcommands({})) tidyDefaults(*command);
+}
+
+/// `mxc --version`: mxc's version, then those of the libraries compiled in and loaded (glslang
+/// and SPIRV-Tools are linked; OpenImageIO is the image module's) and of each Vulkan device.
+std::string versionText() {
+  std::string text = fmt::format("mxc {}\n", MXC_VERSION);
+  text += fmt::format("glslang {}.{}.{}{}\n", GLSLANG_VERSION_MAJOR, GLSLANG_VERSION_MINOR, GLSLANG_VERSION_PATCH,
+                      GLSLANG_VERSION_FLAVOR);
+  text += fmt::format("{}\n", spvSoftwareVersionDetailsString());
+  text += rt::imageLibraryVersion() + "\n";
+  for (const std::string& device : rt::VulkanContext::describeDevices()) text += "Vulkan device " + device + "\n";
+  if (!text.empty() && text.back() == '\n') text.pop_back();  // CLI11 ends the line
+  return text;
+}
+
 }  // namespace
 
 int runCommandLine(int argc, char** argv) {
   CLI::App app{"mxc: compile MaterialX documents (Standard Surface, OpenPBR, pbrlib graphs) to shaders", "mxc"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "mxc 0.1.0");
+  app.set_version_flag("--version", versionText,
+                       "Print the versions of mxc and of the libraries and Vulkan devices it uses, and exit");
   app.footer(
       "Exit codes: 0 success, 1 invalid document or library (errors name file:line:column), 2 usage error, "
       "3 an output could not be written, 4 out of memory, 5 no usable Vulkan device.\nRun 'mxc COMMAND --help' for the options of a command.");
+  // --help shows each option's default: the value its options struct starts with.
+  app.option_defaults()->always_capture_default();
   int exitCode = kOk;
   registerInspect(app, exitCode);
   registerCompile(app, exitCode);
@@ -342,6 +402,29 @@ int runCommandLine(int argc, char** argv) {
   registerFurnace(app, exitCode);
   registerRender(app, exitCode);
   registerBench(app, exitCode);
+  addVerbosityOptions(app);
+  tidyDefaults(app);
+  // The first word that is not an option names the command (mxc has no option that takes a
+  // value before it); CLI11 would say only "A subcommand is required" of a misspelt one. The
+  // same for `bench`'s own commands.
+  const auto unknown = [](CLI::App& parent, int first, int count, char** words) -> std::optional<std::string> {
+    for (int i = first; i < count; ++i) {
+      const std::string word = words[i];
+      if (word.empty() || word[0] == '-') continue;
+      std::vector<std::string> names;
+      for (const CLI::App* sub : parent.get_subcommands({})) names.push_back(sub->get_name());
+      if (std::find(names.begin(), names.end(), word) != names.end()) return std::nullopt;
+      return fmt::format("unknown command '{}' (commands: {})", word, fmt::join(names, ", "));
+    }
+    return std::nullopt;
+  };
+  std::optional<std::string> problem = unknown(app, 1, argc, argv);
+  if (argc == 1) problem = "no command given (commands: inspect, compile, eval, furnace, render, bench)";
+  if (!problem && argc > 1 && std::string(argv[1]) == "bench") problem = unknown(*app.get_subcommand("bench"), 2, argc, argv);
+  if (problem) {
+    std::fprintf(stderr, "error: %s\nRun with --help for more information.\n", problem->c_str());
+    return kUsage;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -13,6 +13,7 @@
 #include "cli/MaterialPipeline.h"
 #include "cli/Scene.h"
 #include "cli/SceneDocuments.h"
+#include "cli/Verbosity.h"
 #include "compiler/document/Document.h"
 #include "compiler/glsl/ShaderBuilder.h"
 #include "compiler/spirv/SpirvCompiler.h"
@@ -39,6 +40,7 @@ struct Unit {
 int compileUnits(const CompileOptions& options, Session& session, const std::vector<Unit>& units,
                  const std::vector<MaterialPipeline*>& pipelines, std::chrono::steady_clock::time_point start) {
   const bool several = units.size() > 1;
+  if (printError(checkStandardOutput({options.output, options.glsl}, units.size()))) return kUsage;
   // Every output is declared and checked before anything is compiled or written.
   OutputSet outputs;
   for (const Unit& unit : units) {
@@ -52,13 +54,18 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
     if (printError(pipeline->checkOutputsAreNotInputs(outputs))) return kUsage;
   }
   // A module on standard output would be mixed with the summary lines.
-  const bool quiet = options.quiet || options.output == "-" || options.glsl == "-";
+  const bool quiet = cli::quiet() || options.output == "-" || options.glsl == "-";
   int result = kOk;
   for (const Unit& unit : units) {
     const ir::Material& material = *unit.material;
     Compiler& compiler = unit.pipeline->compiler();
+    auto stage = std::chrono::steady_clock::now();
     glsl::MaterialShader shader = compiler.shader(material);
+    detail("{}: GLSL generated in {:.1f} ms", material.name, millisecondsSince(stage));
+    stage = std::chrono::steady_clock::now();
     std::optional<std::vector<uint32_t>> words = compiler.spirv(shader);
+    detail("{}: SPIR-V compiled{} and validated in {:.1f} ms", material.name, options.optimize ? ", optimised" : "",
+           millisecondsSince(stage));
     session.printDiagnostics();
     if (!options.glsl.empty()) {
       // The GLSL is produced even when glslang rejects it, so that the failing line can be read.
@@ -163,7 +170,7 @@ int runCompile(const CompileOptions& options) {
   // said plainly, and not a failure (a batch over MaterialX's test suite meets many).
   if (int code = pipeline.run(std::move(request), options.materials, false); code != kOk) return code;
   if (pipeline.materials().empty()) {
-    std::printf("nothing to compile: %s has no material and no surface shader\n", options.file.c_str());
+    if (!quiet()) std::printf("nothing to compile: %s has no material and no surface shader\n", options.file.c_str());
     return kOk;
   }
   std::vector<Unit> units;

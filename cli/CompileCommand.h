@@ -15,7 +15,6 @@ struct CompileOptions {
   std::string glsl;
   std::string stage = "frag";
   bool optimize = false;
-  bool quiet = false;
   MaterialOptions materials;
 };
 

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/Verbosity.h"
 #include "compiler/common/Parallel.h"
 
 namespace mxc::cli {
@@ -16,7 +17,9 @@ namespace mxc::cli {
 rt::VulkanContext* Device::context() {
   if (context_) return context_.get();
   try {
+    const auto start = std::chrono::steady_clock::now();
     context_ = std::make_unique<rt::VulkanContext>(rt::DeviceOptions{options_.device, options_.validation});
+    detail("device {} ({:.0f} ms to start)", context_->deviceName(), millisecondsSince(start));
   } catch (const std::bad_alloc&) {
     throw;  // "out of memory", exit 4 (cli/Main.cpp)
   } catch (const std::exception& e) {
@@ -31,7 +34,9 @@ rt::AlbedoTables* Device::tables() {
   rt::VulkanContext* c = context();
   if (!c) return nullptr;
   try {
+    const auto start = std::chrono::steady_clock::now();
     tables_ = std::make_unique<rt::AlbedoTables>(*c);
+    detail("albedo tables computed on the device in {:.0f} ms", millisecondsSince(start));
   } catch (const std::bad_alloc&) {
     throw;  // "out of memory", exit 4 (cli/Main.cpp)
   } catch (const std::exception& e) {
@@ -101,7 +106,7 @@ std::optional<std::vector<MaterialProgram>> prepareMaterials(const std::vector<M
 }
 
 Progress::Progress(size_t total)
-    : total_(total), tty_(isatty(fileno(stderr)) != 0), start_(std::chrono::steady_clock::now()) {}
+    : total_(total), tty_(isatty(fileno(stderr)) != 0 && !quiet()), start_(std::chrono::steady_clock::now()) {}
 
 void Progress::step(const std::string& what) {
   ++done_;

@@ -1,11 +1,14 @@
 #include "cli/MaterialPipeline.h"
 
+#include <chrono>
 #include <cstdio>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "cli/ExitCode.h"
 #include "cli/SearchPaths.h"
+#include "cli/Verbosity.h"
 
 namespace mxc::cli {
 
@@ -35,11 +38,20 @@ int MaterialPipeline::run(CompileRequest request, const MaterialOptions& options
   const std::string file = request.document.string();
   const bool libraries = session_.loadLibraries(options.libraries);
   compiler_ = std::make_unique<Compiler>(session_.workspace, std::move(request));
+  auto start = std::chrono::steady_clock::now();
+  if (libraries && compiler_->document()) detail("{} read in {:.1f} ms", file, millisecondsSince(start));
   if (!libraries || !compiler_->document()) {
     session_.printDiagnostics();
     return kInvalidDocument;
   }
+  start = std::chrono::steady_clock::now();
   compiler_->materials();
+  if (verbose()) {
+    std::vector<std::string> names;
+    for (const ir::Material& m : compiler_->materials()) names.push_back(fmt::format("{} (<{}>)", m.name, m.shader));
+    detail("resolved and lowered in {:.1f} ms: {}", millisecondsSince(start),
+           names.empty() ? std::string("no material") : fmt::format("{}", fmt::join(names, ", ")));
+  }
   session_.printDiagnostics();
   if (session_.workspace.diagnostics.hasErrors()) {
     std::fprintf(stderr, "%s: %zu error(s)\n", file.c_str(), session_.workspace.diagnostics.errorCount());
@@ -69,8 +81,19 @@ std::optional<std::string> MaterialPipeline::checkOutputsAreNotInputs(const Outp
   return std::nullopt;
 }
 
+std::optional<std::string> checkStandardOutput(const std::vector<std::string>& outputs, size_t materials) {
+  size_t toStdout = 0;
+  for (const std::string& o : outputs) toStdout += o == "-" ? 1 : 0;
+  if (toStdout > 1) return "-o -: standard output can take one output";
+  if (toStdout == 1 && materials > 1) {
+    return fmt::format("-o -: standard output takes one material's output, and there are {}: choose one with --material",
+                       materials);
+  }
+  return std::nullopt;
+}
+
 std::filesystem::path perMaterialPath(const std::filesystem::path& path, const std::string& material, bool several) {
-  if (!several) return path;
+  if (!several || path == "-") return path;
   std::string safe;
   for (char c : material) safe += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
   std::filesystem::path out = path;

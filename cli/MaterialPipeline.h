@@ -55,6 +55,10 @@ class MaterialPipeline {
   std::unique_ptr<Compiler> compiler_;
 };
 
+/// A usage error when `-` (standard output) is more than one of `outputs`, or is the output of
+/// more than one material (each needs its own file).
+std::optional<std::string> checkStandardOutput(const std::vector<std::string>& outputs, size_t materials);
+
 /// `path` with `_<material>` inserted before its extension, for one output file per material.
 std::filesystem::path perMaterialPath(const std::filesystem::path& path, const std::string& material, bool several);
 

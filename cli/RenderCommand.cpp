@@ -1,3 +1,4 @@
+#include "cli/Verbosity.h"
 #include "cli/RenderCommand.h"
 
 #include <algorithm>
@@ -131,6 +132,7 @@ bool parseRenderSize(const std::string& text, uint32_t& width, uint32_t& height)
 }
 
 int runRender(const RenderOptions& options) {
+  if (printError(checkFormatOption(options.outputs, options.format))) return kUsage;
   if (isSceneFile(options.file)) return runSceneRender(options);
   rt::RenderSettings settings;
   if (!parseRenderSize(options.size, settings.width, settings.height)) {
@@ -220,6 +222,7 @@ int runRender(const RenderOptions& options) {
   request.document = options.file;
   if (int code = pipeline.run(std::move(request), options.materials); code != kOk) return code;
   const bool several = pipeline.materials().size() > 1;
+  if (printError(checkStandardOutput(options.outputs, pipeline.materials().size()))) return kUsage;
   OutputSet outputs;
   for (const ir::Material& material : pipeline.materials()) {
     for (const std::string& output : options.outputs) {
@@ -250,6 +253,7 @@ int runRender(const RenderOptions& options) {
   finish.exposure = options.exposure;
   finish.tone = toneMapping;
   finish.attributes = renderAttributes(options.file, settings.frames, options.exposure, toneMapping);
+  finish.format = options.format;
   int result = kOk;
   std::vector<std::string> wrote;
   try {
@@ -274,7 +278,7 @@ int runRender(const RenderOptions& options) {
     if (imageBackground) behind = rt::renderBackground(settings);
     finish.behind = imageBackground ? &behind : nullptr;
     auto checkOutputs = [&] {
-      if (int code = checkOutputFormats(options.outputs); code != kOk) throw OutputsRefused{code};
+      if (int code = checkOutputFormats(options.outputs, options.format); code != kOk) throw OutputsRefused{code};
     };
     rt::Renderer renderer(*device.context(), *tables);
     // One bar over every frame of every material: its estimate covers the whole command.
@@ -332,7 +336,10 @@ int runRender(const RenderOptions& options) {
   if (!device.checkValidation()) return kInvalidDocument;
   // Every image of every material, together (cli/OutputSet.h).
   if (printError(outputs.commit())) return kOutputFailed;
-  for (const std::string& line : wrote) std::printf("%s\n", line.c_str());
+  // An image on standard output would be mixed with the summary lines.
+  if (!quiet() && !std::count(options.outputs.begin(), options.outputs.end(), "-")) {
+    for (const std::string& line : wrote) std::printf("%s\n", line.c_str());
+  }
   return result;
 }
 

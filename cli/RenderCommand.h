@@ -25,6 +25,7 @@ struct RenderOptions {
   float environmentRotation = 0.0f;  ///< degrees about +y
   float emissionScale = 1.0f;
   float exposure = 0.0f;
+  std::string format;  ///< --format: the image format (an extension: png, exr, ...) of `-o -`
   std::string toneMapping = "aces";  ///< none, aces, neutral (runtime/ToneMapping.h)
   /// Linear R,G,B; empty: the environment image where there is one, else kDefaultBackground.
   std::string background;

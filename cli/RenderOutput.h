@@ -24,7 +24,15 @@ struct ImageFinish {
   float exposure = 0.0f;        ///< stops, in [-64, 64]: 8-bit formats only
   rt::ToneMapping tone = rt::ToneMapping::AcesFit;
   rt::ImageAttributes attributes;
+  std::string format;  ///< the extension standard output (`-`) is encoded as (--format)
 };
+
+/// The path whose extension gives `output`'s image format: `output` itself, or for `-`
+/// (standard output) one with the extension `format`.
+std::filesystem::path formatPath(const std::filesystem::path& output, const std::string& format);
+
+/// A usage error for `-o -` without --format, or --format without `-o -`.
+std::optional<std::string> checkFormatOption(const std::vector<std::string>& outputs, const std::string& format);
 
 /// What a reader of an image needs to know of how its values were made: "ImageDescription" and
 /// "mxc:exposure" (encodeImage adds "mxc:tonemap" to 8-bit formats).
@@ -33,7 +41,7 @@ rt::ImageAttributes renderAttributes(const std::string& input, uint32_t spp, flo
 /// Loads the image module (waiting for an rt::ImageModulePreload) and checks that every output's
 /// format can be written, before the render: kOk, or the exit code after printing why not
 /// (kOutputFailed without the module, kUsage for a format).
-int checkOutputFormats(const std::vector<std::string>& outputs);
+int checkOutputFormats(const std::vector<std::string>& outputs, const std::string& format);
 
 /// What a render's callbacks throw to stop it when an output is refused: checkOutputFormats in
 /// the renderer's `beforeFrames` (which runs once the pipelines are compiled, while the image

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
+#include "cli/Verbosity.h"
 #include "cli/ExitCode.h"
 #include "cli/Harness.h"
 #include "cli/MaterialPipeline.h"
@@ -230,6 +231,7 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
   finish.exposure = exposure;
   finish.tone = tone;
   finish.attributes = renderAttributes(options.file, settings.frames, exposure, tone);
+  finish.format = options.format;
 
   std::string summary;
   int result = kOk;
@@ -269,7 +271,7 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
         objects, settings,
         [&](uint32_t frame) { progress.step(fmt::format("{} objects, frame {}", scene.objects.size(), frame)); },
         [&] {
-          if (int code = checkOutputFormats(options.outputs); code != kOk) throw OutputsRefused{code};
+          if (int code = checkOutputFormats(options.outputs, options.format); code != kOk) throw OutputsRefused{code};
         });
     size_t bad = 0;
     for (float v : image.image.pixels) bad += std::isfinite(v) ? 0 : 1;
@@ -293,7 +295,7 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
   }
   if (!device.checkValidation()) return kInvalidDocument;
   if (printError(outputs.commit())) return kOutputFailed;
-  std::printf("%s\n", summary.c_str());
+  if (!quiet() && !std::count(options.outputs.begin(), options.outputs.end(), "-")) std::printf("%s\n", summary.c_str());
   return result;
 }
 

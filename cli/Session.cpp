@@ -1,22 +1,37 @@
 #include "cli/Session.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include <fmt/format.h>
+
+#include "cli/Verbosity.h"
 
 namespace mxc::cli {
 
 
 
 bool Session::loadLibraries(const LibraryOptions& options) {
-  return workspace.loadLibraries(!options.noBuiltin, options.folders);
+  const auto start = std::chrono::steady_clock::now();
+  const bool ok = workspace.loadLibraries(!options.noBuiltin, options.folders);
+  if (verbose()) {
+    std::string layers;
+    for (const auto& info : workspace.libraryInfo) {
+      layers += fmt::format("{}{} ({} nodedefs)", layers.empty() ? "" : ", ", info.name, info.nodedefs);
+    }
+    detail("libraries {} loaded in {:.1f} ms", layers.empty() ? "none" : layers, millisecondsSince(start));
+  }
+  return ok;
 }
 
 void Session::printDiagnostics() {
   const Diagnostics& diagnostics = workspace.diagnostics;
   const auto& all = diagnostics.all();
-  for (; printed_ < all.size(); ++printed_) std::fprintf(stderr, "%s\n", all[printed_].formatWithSource().c_str());
+  for (; printed_ < all.size(); ++printed_) {
+    if (quiet() && all[printed_].severity != Severity::Error) continue;  // -q: errors only
+    std::fprintf(stderr, "%s\n", all[printed_].formatWithSource().c_str());
+  }
   const size_t omitted = diagnostics.omittedErrors() + diagnostics.omittedWarnings();
   if (omitted > omittedPrinted_) {
     std::fprintf(stderr, "%s\n", diagnostics.omittedSummary().c_str());

@@ -134,6 +134,12 @@ std::optional<std::string> drawText(RgbaImage& image, int x, int y, const std::s
   return c->drawText(image, x, y, text, size, rgb, centred);
 }
 
+std::string imageLibraryVersion() {
+  std::string error;
+  const ImageCodec* c = codec(error);
+  return c ? "OpenImageIO " + c->libraryVersion() : "OpenImageIO: " + error;
+}
+
 std::optional<std::string> loadImageModule() {
   std::string error;
   if (!codec(error)) return error;

@@ -79,6 +79,9 @@ std::variant<std::string, std::string> encodeImage(const std::filesystem::path& 
 std::optional<std::string> drawText(RgbaImage& image, int x, int y, const std::string& text, int size,
                                     const float rgb[3], bool centred = false);
 
+/// "OpenImageIO 2.4.7" (the library the image module loaded), or why the module cannot be loaded.
+std::string imageLibraryVersion();
+
 /// Loads the image module (OpenImageIO) now: nullopt, or why it cannot be loaded. A command
 /// that writes images calls it before long work, so a missing module is known at once.
 std::optional<std::string> loadImageModule();
@@ -124,6 +127,8 @@ struct ImageCodec {
   /// drawText above.
   std::optional<std::string> (*drawText)(RgbaImage& image, int x, int y, const std::string& text, int size,
                                          const float rgb[3], bool centred);
+  /// The version of the OpenImageIO library loaded ("2.4.7").
+  std::string (*libraryVersion)();
 };
 
 /// The sRGB transfer function, decoded (IEC 61966-2-1): texture values to linear.

@@ -232,7 +232,13 @@ std::optional<std::string> drawText(RgbaImage& image, int x, int y, const std::s
   return std::nullopt;
 }
 
-const ImageCodec kCodec{read, encode, writable, drawText};
+std::string libraryVersion() {
+  // openimageio_version() is 10000 major + 100 minor + patch, of the library loaded at run time.
+  const int v = OIIO::openimageio_version();
+  return fmt::format("{}.{}.{}", v / 10000, v / 100 % 100, v % 100);
+}
+
+const ImageCodec kCodec{read, encode, writable, drawText, libraryVersion};
 
 }  // namespace
 }  // namespace mxc::rt

@@ -103,6 +103,48 @@ std::vector<std::string> VulkanContext::listDevices() {
   return out;
 }
 
+std::vector<std::string> VulkanContext::describeDevices() {
+  VkInstance instance = VK_NULL_HANDLE;
+  try {
+    instance = createInstance(false, nullptr, nullptr);
+  } catch (const VulkanError& e) {
+    return {e.what()};
+  }
+  uint32_t count = 0;
+  vkEnumeratePhysicalDevices(instance, &count, nullptr);
+  std::vector<VkPhysicalDevice> devices(count);
+  vkEnumeratePhysicalDevices(instance, &count, devices.data());
+  std::vector<std::string> out;
+  for (uint32_t i = 0; i < count; ++i) {
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(devices[i], &p);
+    std::string line = fmt::format("{}: {} ({}), Vulkan {}.{}.{}", i, p.deviceName, typeName(p.deviceType),
+                                   VK_API_VERSION_MAJOR(p.apiVersion), VK_API_VERSION_MINOR(p.apiVersion),
+                                   VK_API_VERSION_PATCH(p.apiVersion));
+    // The driver's name and version: VK_KHR_driver_properties (core in 1.2), chained only when
+    // the device has it.
+    uint32_t extensionCount = 0;
+    vkEnumerateDeviceExtensionProperties(devices[i], nullptr, &extensionCount, nullptr);
+    std::vector<VkExtensionProperties> extensions(extensionCount);
+    vkEnumerateDeviceExtensionProperties(devices[i], nullptr, &extensionCount, extensions.data());
+    bool driverProperties = false;
+    for (const VkExtensionProperties& e : extensions) {
+      driverProperties = driverProperties || std::strcmp(e.extensionName, VK_KHR_DRIVER_PROPERTIES_EXTENSION_NAME) == 0;
+    }
+    if (driverProperties) {
+      VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+      VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+      properties.pNext = &driver;
+      vkGetPhysicalDeviceProperties2(devices[i], &properties);
+      line += fmt::format(", driver {} {}", driver.driverName, driver.driverInfo);
+    }
+    out.push_back(std::move(line));
+  }
+  if (out.empty()) out.push_back("Vulkan reports no device: install mesa-vulkan-drivers for lavapipe");
+  vkDestroyInstance(instance, nullptr);
+  return out;
+}
+
 VulkanContext::VulkanContext(const DeviceOptions& options) {
   instance_ = createInstance(options.validation, messages_.get(), &messenger_);
   uint32_t count = 0;

@@ -1,0 +1,128 @@
+// The conventions of the command line (cli/CommandLine.cpp): `-` is standard output for every
+// -o, --help shows the defaults, -q and -v on every command, --version names the libraries and
+// devices, an unknown command is named, a missing device has its own exit code.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "support/CommandSupport.h"
+
+namespace mxc::test {
+namespace {
+
+const std::string kDefault = "materialx/examples/OpenPbr/open_pbr_default.mtlx";
+
+TEST(CommandLine, DashIsStandardOutputForEveryOutput) {
+  const std::string doc = corpus(kDefault);
+  CommandRun r = mxc("compile " + doc + " -o -");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_GE(r.out.size(), 4u);
+  EXPECT_EQ(r.out.substr(0, 4), std::string("\x03\x02\x23\x07", 4)) << "the SPIR-V magic number, little-endian, alone";
+  r = mxc("compile " + doc + " --glsl -");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("#version 450", 0), 0u) << r.out.substr(0, 80);
+  r = mxc("render " + doc + " -o - --format png --size 16 --spp 1");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << "a PNG and nothing else";
+  r = mxc("inspect " + doc + " -o -");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("document", 0), 0u);
+  r = mxc("furnace " + doc + " -o - --angles 1 --samples 64");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("{", 0), 0u);
+  const fs::path dirs = writeTemp("dash_dirs.csv", "0,0,1,0,0,1\n");
+  r = mxc("eval " + doc + " --dirs " + dirs.string() + " -o -");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("material,row,", 0), 0u);
+  fs::remove(dirs);
+  // An image needs its format; standard output holds one material's output.
+  r = mxc("render " + doc + " -o -");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("give it with --format"), std::string::npos) << r.err;
+  const fs::path two = writeTemp("dash_two.mtlx",
+                                 "<materialx version=\"1.39\">\n"
+                                 "  <open_pbr_surface name=\"o\" type=\"surfaceshader\"/>\n"
+                                 "  <surfacematerial name=\"A\" type=\"material\"><input name=\"surfaceshader\" "
+                                 "type=\"surfaceshader\" nodename=\"o\"/></surfacematerial>\n"
+                                 "  <surfacematerial name=\"B\" type=\"material\"><input name=\"surfaceshader\" "
+                                 "type=\"surfaceshader\" nodename=\"o\"/></surfacematerial>\n"
+                                 "</materialx>\n");
+  r = mxc("compile " + two.string() + " -o -");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("choose one with --material"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  r = mxc("compile " + two.string() + " -o - --material B");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  fs::remove(two);
+}
+
+TEST(CommandLine, HelpShowsTheDefaults) {
+  CommandRun r = mxc("render --help");
+  ASSERT_EQ(r.exitCode, 0);
+  for (const char* shown : {"--size TEXT=512", "=64", "--env TEXT=sky", "--mesh TEXT=sphere", "=45", "=aces", "=balanced"}) {
+    EXPECT_NE(r.out.find(shown), std::string::npos) << shown << " in\n" << r.out;
+  }
+  EXPECT_EQ(r.out.find("=[]"), std::string::npos) << "an empty list is no default worth showing";
+  r = mxc("furnace --help");
+  EXPECT_NE(r.out.find("=8"), std::string::npos) << r.out;      // angles
+  EXPECT_NE(r.out.find("=65536"), std::string::npos) << r.out;  // samples
+}
+
+TEST(CommandLine, QuietAndVerboseOnEveryCommand) {
+  const std::string doc = corpus(kDefault);
+  for (const char* command : {"inspect", "compile", "eval", "furnace", "render", "bench accuracy", "bench specialize"}) {
+    CommandRun help = mxc(std::string(command) + " --help");
+    EXPECT_NE(help.out.find("-q,--quiet"), std::string::npos) << command;
+    EXPECT_NE(help.out.find("-v,--verbose"), std::string::npos) << command;
+  }
+  const fs::path spv = fs::temp_directory_path() / ("mxc_cli_quiet_" + std::to_string(::getpid()) + ".spv");
+  CommandRun r = mxc("compile -q " + doc + " -o " + spv.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  r = mxc("compile -v " + doc + " -o " + spv.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("mxc: libraries builtin"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("SPIR-V compiled and validated in"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("compiled 1 material(s)"), std::string::npos) << "the summary stays on stdout";
+  r = mxc("compile -q -v " + doc);
+  EXPECT_EQ(r.exitCode, 2) << "-q and -v exclude each other";
+  fs::remove(spv);
+}
+
+TEST(CommandLine, VersionNamesTheLibrariesAndDevices) {
+  CommandRun r = mxc("--version");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("mxc ", 0), 0u) << r.out;
+  for (const char* part : {"\nglslang ", "\nSPIRV-Tools v", "\nOpenImageIO ", "\nVulkan device 0: "}) {
+    EXPECT_NE(r.out.find(part), std::string::npos) << part << " in\n" << r.out;
+  }
+}
+
+TEST(CommandLine, AnUnknownCommandIsNamed) {
+  CommandRun r = mxc("frobnicate x.mtlx");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("error: unknown command 'frobnicate' (commands: inspect, compile, eval, furnace, render, bench)"),
+            std::string::npos)
+      << r.err;
+  r = mxc("bench frobnicate");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("unknown command 'frobnicate' (commands: accuracy, specialize)"), std::string::npos) << r.err;
+  r = mxc("");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("no command given"), std::string::npos) << r.err;
+}
+
+TEST(CommandLine, AMissingDeviceHasItsOwnExitCode) {
+  const fs::path dirs = writeTemp("nodevice_dirs.csv", "0,0,1,0,0,1\n");
+  CommandRun r = mxc("eval " + corpus(kDefault) + " --dirs " + dirs.string() + " --device no-such-device");
+  EXPECT_EQ(r.exitCode, 5);
+  EXPECT_NE(r.err.find("no Vulkan device named like 'no-such-device'"), std::string::npos) << r.err;
+  r = mxc("render " + corpus(kDefault) + " -o x.png --device 99");
+  EXPECT_EQ(r.exitCode, 5);
+  fs::remove(dirs);
+}
+
+}  // namespace
+}  // namespace mxc::test
