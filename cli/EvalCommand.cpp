@@ -1,3 +1,5 @@
+#include "cli/Verbosity.h"
+#include "compiler/glsl/Contract.h"
 #include "cli/EvalCommand.h"
 
 #include <cmath>
@@ -94,6 +96,23 @@ int writeReport(OutputSet& outputs, const std::string& output, std::string repor
 /// A vec3 as a JSON array.
 nlohmann::json vec(glm::vec3 v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
+/// True when every lobe of `material` is a delta: microfacet lobes whose alpha is a constant
+/// below glsl::kDeltaAlpha, and nothing else that scatters.
+bool everyLobeIsDelta(const ir::Material& material) {
+  if (material.interfaces.empty()) return false;
+  for (const ir::Interface& i : material.interfaces) {
+    const bool microfacet = i.kind == ir::InterfaceKind::Dielectric || i.kind == ir::InterfaceKind::Conductor ||
+                            i.kind == ir::InterfaceKind::Schlick;
+    if (!microfacet) return false;
+    const ir::ExprId alpha = i.slots.value(ir::Slot::Alpha);
+    if (!material.exprs.isConstant(alpha)) return false;
+    for (float a : material.exprs.constantComponents(alpha)) {
+      if (!(a < glsl::kDeltaAlpha)) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 /// eval's walks per direction pair in the reference tier: its relative noise is then about
@@ -126,6 +145,12 @@ int runEval(const EvalOptions& options) {
     rt::MaterialEvaluator evaluator(*device.context(), *tables, *program->resources, program->shader.interface,
                                     program->spirv);
     std::vector<glm::vec4> values = evaluator.evaluate(rows, dispatches);
+    if (everyLobeIsDelta(material) && !quiet()) {
+      std::fprintf(stderr,
+                   "note: %s: every lobe is a delta (roughness 0): f cos is zero for almost every pair of directions, "
+                   "so eval prints zeros; 'mxc furnace' measures what it reflects and transmits\n",
+                   material.name.c_str());
+    }
     for (size_t i = 0; i < values.size(); ++i) {
       csv += fmt::format("{},{},{:.7g},{:.7g},{:.7g},{:.7g}\n", material.name, i + 1, values[i].x, values[i].y,
                          values[i].z, values[i].w);

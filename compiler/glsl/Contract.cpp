@@ -137,6 +137,7 @@ std::string codesHeader() {
   out += fmt::format("const int MXC_TRANSFORM_POINT = {};\n", int(TransformKind::Point));
   out += fmt::format("const int MXC_TRANSFORM_VECTOR = {};\n", int(TransformKind::Vector));
   out += fmt::format("const int MXC_TRANSFORM_NORMAL = {};\n", int(TransformKind::Normal));
+  out += fmt::format("const float MXC_DELTA_ALPHA = {:.9g};\n", kDeltaAlpha);
   return out;
 }
 

@@ -23,6 +23,10 @@ namespace mxc::glsl {
 /// the lobe carries, and whether transmission goes straight through (a thin sheet).
 enum LobeMode : int { kModeReflect = 1, kModeTransmit = 2, kModeThinWall = 4 };
 
+/// The GGX alpha below which a lobe is a perfect mirror or refraction (a delta): its f cos is 0
+/// for every pair of directions but the specular ones, and sampling draws those exactly.
+constexpr float kDeltaAlpha = 1e-4f;
+
 /// Lights the raster renderer passes (MxcView.lightVector and lightRadiance).
 constexpr uint32_t kMaxLights = 8;
 /// local_size_x of the compute stages that run a material (eval, furnace, sample).

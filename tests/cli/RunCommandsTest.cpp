@@ -253,6 +253,22 @@ TEST(EvalCommand, PrintsFCosPerRowAndReportsBadRows) {
   fs::remove(bad);
 }
 
+// A material of delta lobes only (a smooth metal) has f cos = 0 at every pair eval can be given:
+// eval says why its zeros are right and points to furnace; a rough one gets no such note.
+TEST(EvalCommand, SaysWhenEveryLobeIsADelta) {
+  const fs::path dirs = writeTemp("delta_dirs.csv", "0,0,1,0,0,1\n0,0.6,0.8,0,-0.6,0.8\n");
+  CommandRun r = mxc("eval " + corpus(kDefault) + " --dirs " + dirs.string() +
+                     " --set base_metalness=1 --set specular_roughness=0");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("Default,2,0,0,0,0"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("note: Default: every lobe is a delta"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("'mxc furnace'"), std::string::npos) << r.err;
+  r = mxc("eval " + corpus(kDefault) + " --dirs " + dirs.string() + " --set base_metalness=1");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err.find("delta"), std::string::npos) << r.err;
+  fs::remove(dirs);
+}
+
 TEST(RenderCommand, WritesAFiniteImage) {
   const fs::path exr = fs::temp_directory_path() / ("mxc_cli_render_" + std::to_string(::getpid()) + ".exr");
   CommandRun r = mxc("render " + corpus(kDefault) + " -o " + exr.string() + " --size 32 --spp 2 --env white --validation");

@@ -3,8 +3,8 @@
 // masking-shadowing and visible-normal sampling (Heitz 2018, "Sampling the GGX Distribution of
 // Visible Normals"). Directions are in the local frame (z = normal).
 
-// Smallest alpha used: below it a lobe is treated as a perfect mirror (a delta).
-const float MXC_DELTA_ALPHA = 1e-4;
+// Smallest alpha used: below MXC_DELTA_ALPHA (generated/mxc_codes.glsl, glsl::kDeltaAlpha) a lobe
+// is treated as a perfect mirror (a delta).
 
 bool mxc_is_delta(vec2 alpha) { return max(alpha.x, alpha.y) < MXC_DELTA_ALPHA; }
 
