@@ -6,6 +6,7 @@
 #include "cli/CommandLine.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -19,6 +20,7 @@
 #include "cli/AccuracyBench.h"
 #include "cli/SpecializationBench.h"
 #include "cli/Verbosity.h"
+#include "cli/CommandSpec.h"
 #include "cli/CompileCommand.h"
 #include "cli/EvalCommand.h"
 #include "cli/ExitCode.h"
@@ -111,13 +113,15 @@ void addSearchPathOption(CLI::App& command, MaterialOptions& options) {
 void addMaterialOptions(CLI::App& command, MaterialOptions& options) {
   addInputOptions(command, options);
   addSearchPathOption(command, options);
-  command.add_option("--material", options.material, "Only the material of this name (default: every material)");
+  command.add_option("--material", options.material, "Only the material of this name (default: every material)")
+      ->type_name("NAME");
   addLibraryOptions(command, options.libraries);
 }
 
 void addDeviceOptions(CLI::App& command, DeviceOptions& options) {
   command.add_option("--device", options.device,
-                     "Vulkan device: an index or part of its name (default: Mesa lavapipe when present)");
+                     "Vulkan device: an index or part of its name (default: Mesa lavapipe when present)")
+      ->type_name("INDEX|NAME");
   command.add_flag("--validation", options.validation,
                    "Enable the Khronos validation layer; any validation message fails the run (exit 1)");
 }
@@ -234,12 +238,15 @@ void registerRender(CLI::App& app, int& exitCode) {
                       "Output image (.png, .exr, .jpg, ...), or - for standard output (with --format); repeatable")
       ->required();
   command->add_option("--format", options->format,
-                      "The image format of -o - (standard output), as a file extension: png, exr, jpg, tif, hdr, ...");
-  command->add_option("--size", options->size, "N (square) or WxH, in pixels, each 8 to 8192");
+                      "The image format of -o - (standard output), as a file extension: png, exr, jpg, tif, hdr, ...")
+      ->type_name("EXT");
+  command->add_option("--size", options->size, "N (square) or WxH, in pixels, each 8 to 8192")
+      ->type_name("N|WxH");
   command->add_option("--spp", options->spp, "Samples (frames) per pixel")->check(CLI::Range(1, 1 << 20));
   command->add_option("--light", options->lights,
                       "dir:X,Y,Z[:INTENSITY[:R,G,B]] (towards the light) or point:X,Y,Z[:INTENSITY[:R,G,B]]; "
-                      "repeatable, up to 8; 'none' for no light (default: dir:-1,1.2,1.5:2, none with an --env image)");
+                      "repeatable, up to 8; 'none' for no light (default: dir:-1,1.2,1.5:2, none with an --env image)")
+      ->type_name("SPEC");
   command->add_option("--env", options->environment,
                       "Environment: none, white (the furnace), sky (analytic), or an equirectangular HDR image "
                       "(.exr, .hdr, ...: importance-sampled, and the background unless --background is given)");
@@ -257,17 +264,22 @@ void registerRender(CLI::App& app, int& exitCode) {
                       "or none (clamp); named in the file's metadata")
       ->check(CLI::IsMember({"none", "aces", "neutral"}));
   command->add_option("--background", options->background,
-                      "Background of 8-bit outputs, linear R,G,B (default: the environment image, else 0.05,0.05,0.05)");
+                      "Background of 8-bit outputs, linear R,G,B (default: the environment image, else 0.05,0.05,0.05)")
+      ->type_name("R,G,B");
   command->add_option("--mesh", options->mesh,
                       "sphere, plane, a name found on the search path as resources/Geometry/NAME.glb or .obj "
                       "(shaderball, teapot, cube, ...), or a .glb, .gltf or .obj file");
   command->add_option("--look", options->look,
                       "A look of the document: one image with its material assignments to the mesh's parts (glTF "
-                      "nodes, OBJ groups: Preview_Mesh and Calibration_Mesh of the shader ball) or to the mesh");
+                      "nodes, OBJ groups: Preview_Mesh and Calibration_Mesh of the shader ball) or to the mesh")
+      ->type_name("NAME");
   command->add_option("--camera-position", options->cameraPosition,
-                      "X,Y,Z (default: framed to fit the mesh, from the front; from above for the plane)");
-  command->add_option("--camera-target", options->cameraTarget, "X,Y,Z (default: the centre of the mesh's bounds)");
-  command->add_option("--camera-up", options->cameraUp, "X,Y,Z (default: 0,1,0)");
+                      "X,Y,Z (default: framed to fit the mesh, from the front; from above for the plane)")
+      ->type_name("X,Y,Z");
+  command->add_option("--camera-target", options->cameraTarget, "X,Y,Z (default: the centre of the mesh's bounds)")
+      ->type_name("X,Y,Z");
+  command->add_option("--camera-up", options->cameraUp, "X,Y,Z (default: 0,1,0)")
+      ->type_name("X,Y,Z");
   command->add_option("--fov", options->fovDegrees, "Vertical field of view in degrees")->check(CLI::Range(1.0, 170.0));
   addMaterialOptions(*command, options->materials);
   addDeviceOptions(*command, options->device);
@@ -383,19 +395,18 @@ std::string versionText() {
   return text;
 }
 
-}  // namespace
+constexpr const char* kExitCodes =
+    "Exit codes: 0 success, 1 invalid document or library (errors name file:line:column), 2 usage error, "
+    "3 an output could not be written, 4 out of memory, 5 no usable Vulkan device.";
 
-int runCommandLine(int argc, char** argv) {
-  CLI::App app{"mxc: compile MaterialX documents (Standard Surface, OpenPBR, pbrlib graphs) to shaders", "mxc"};
+/// Every command and option of mxc into `app`; a command's callback sets `exitCode`.
+void defineCommandLine(CLI::App& app, int& exitCode) {
   app.require_subcommand(1);
   app.set_version_flag("--version", versionText,
                        "Print the versions of mxc and of the libraries and Vulkan devices it uses, and exit");
-  app.footer(
-      "Exit codes: 0 success, 1 invalid document or library (errors name file:line:column), 2 usage error, "
-      "3 an output could not be written, 4 out of memory, 5 no usable Vulkan device.\nRun 'mxc COMMAND --help' for the options of a command.");
+  app.footer(std::string(kExitCodes) + "\nRun 'mxc COMMAND --help' for the options of a command.");
   // --help shows each option's default: the value its options struct starts with.
   app.option_defaults()->always_capture_default();
-  int exitCode = kOk;
   registerInspect(app, exitCode);
   registerCompile(app, exitCode);
   registerEval(app, exitCode);
@@ -404,6 +415,89 @@ int runCommandLine(int argc, char** argv) {
   registerBench(app, exitCode);
   addVerbosityOptions(app);
   tidyDefaults(app);
+}
+
+constexpr const char* kDescription = "mxc: compile MaterialX documents (Standard Surface, OpenPBR, pbrlib graphs) to shaders";
+
+/// The values an option names in its type ("TEXT:{none,aces,neutral}", "fast|balanced|reference").
+std::vector<std::string> choicesOf(const std::string& type) {
+  std::string list;
+  if (const size_t open = type.find('{'); open != std::string::npos && type.back() == '}') {
+    list = type.substr(open + 1, type.size() - open - 2);
+  } else if (type.find('|') != std::string::npos &&
+             std::all_of(type.begin(), type.end(), [](char c) { return std::islower(static_cast<unsigned char>(c)) || c == '|'; })) {
+    list = type;  // "fast|balanced|reference"; not a placeholder such as "N|WxH"
+  }
+  std::vector<std::string> out;
+  std::string item;
+  for (char c : list + ",") {
+    if (c == ',' || c == '|') {
+      if (!item.empty()) out.push_back(item);
+      item.clear();
+    } else {
+      item += c;
+    }
+  }
+  return out;
+}
+
+CommandSpec describe(const CLI::App& app) {
+  CommandSpec spec;
+  spec.name = app.get_name();
+  spec.description = app.get_description();
+  for (const CLI::Option* option : app.get_options()) {
+    if (option->get_group().empty()) continue;  // hidden
+    OptionSpec o;
+    for (const std::string& n : option->get_snames()) o.names.push_back("-" + n);
+    for (const std::string& n : option->get_lnames()) o.names.push_back("--" + n);
+    if (option->get_positional()) o.positional = option->get_name(true, false);
+    if (option->get_type_size() != 0) {
+      const std::string type = option->get_type_name();
+      o.choices = choicesOf(type);
+      o.value = type.substr(0, type.find(':'));
+      o.number = type.find("INT") != std::string::npos || type.find("FLOAT") != std::string::npos ||
+                 type.find("NUMBER") != std::string::npos || type == "N";
+    }
+    o.repeatable = option->get_expected_max() > 1 || option->get_items_expected_max() > 1;
+    o.required = option->get_required();
+    o.defaultValue = option->get_default_str();
+    o.description = option->get_description();
+    spec.options.push_back(std::move(o));
+  }
+  for (const CLI::App* command : app.get_subcommands({})) spec.commands.push_back(describe(*command));
+  return spec;
+}
+
+}  // namespace
+
+CommandSpec describeCommandLine() {
+  CLI::App app{kDescription, "mxc"};
+  int exitCode = kOk;
+  defineCommandLine(app, exitCode);
+  CommandSpec spec = describe(app);
+  spec.footer = kExitCodes;
+  return spec;
+}
+
+int runCommandLine(int argc, char** argv) {
+  // The build writes the shell completions and the man page from the definition (hidden).
+  if (argc == 3 && std::string(argv[1]) == "--generate") {
+    const std::string what = argv[2];
+    const CommandSpec spec = describeCommandLine();
+    const std::string text = what == "bash"  ? bashCompletion(spec)
+                             : what == "zsh" ? zshCompletion(spec)
+                             : what == "man" ? manPage(spec, MXC_VERSION)
+                                             : std::string();
+    if (text.empty()) {
+      std::fprintf(stderr, "error: --generate bash|zsh|man\n");
+      return kUsage;
+    }
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    return kOk;
+  }
+  CLI::App app{kDescription, "mxc"};
+  int exitCode = kOk;
+  defineCommandLine(app, exitCode);
   // The first word that is not an option names the command (mxc has no option that takes a
   // value before it); CLI11 would say only "A subcommand is required" of a misspelt one. The
   // same for `bench`'s own commands.

@@ -60,7 +60,7 @@ TEST(CommandLine, DashIsStandardOutputForEveryOutput) {
 TEST(CommandLine, HelpShowsTheDefaults) {
   CommandRun r = mxc("render --help");
   ASSERT_EQ(r.exitCode, 0);
-  for (const char* shown : {"--size TEXT=512", "=64", "--env TEXT=sky", "--mesh TEXT=sphere", "=45", "=aces", "=balanced"}) {
+  for (const char* shown : {"--size N|WxH=512", "=64", "--env TEXT=sky", "--mesh TEXT=sphere", "=45", "=aces", "=balanced"}) {
     EXPECT_NE(r.out.find(shown), std::string::npos) << shown << " in\n" << r.out;
   }
   EXPECT_EQ(r.out.find("=[]"), std::string::npos) << "an empty list is no default worth showing";
@@ -122,6 +122,63 @@ TEST(CommandLine, AMissingDeviceHasItsOwnExitCode) {
   r = mxc("render " + corpus(kDefault) + " -o x.png --device 99");
   EXPECT_EQ(r.exitCode, 5);
   fs::remove(dirs);
+}
+
+// The bash completion, generated from the definition, is valid bash and completes commands,
+// options and the values an option names (run in bash as the shell would call it).
+TEST(CommandLine, BashCompletionCompletesCommandsOptionsAndChoices) {
+  CommandRun script = mxc("--generate bash");
+  ASSERT_EQ(script.exitCode, 0) << script.err;
+  const fs::path file = writeTemp("mxc_completion.bash", script.out);
+  auto complete = [&](const std::string& words, int cword) {
+    const fs::path runner = writeTemp("mxc_complete_run.sh", "source '" + file.string() + "'\nCOMP_WORDS=(" + words +
+                                                               ")\nCOMP_CWORD=" + std::to_string(cword) +
+                                                               "\n_mxc\necho \"${COMPREPLY[*]}\"\n");
+    FILE* pipe = ::popen(("bash " + runner.string() + " 2>&1").c_str(), "r");
+    std::string out;
+    char buffer[512];
+    while (pipe && std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
+    if (pipe) ::pclose(pipe);
+    fs::remove(runner);
+    return out;
+  };
+  EXPECT_EQ(complete("mxc fu", 1), "furnace\n");
+  EXPECT_EQ(complete("mxc bench a", 2), "accuracy\n");
+  EXPECT_EQ(complete("mxc render --tonem", 2), "--tonemap\n");
+  EXPECT_EQ(complete("mxc render --tonemap n", 3), "none neutral\n");
+  EXPECT_EQ(complete("mxc compile --accuracy b", 3), "balanced\n");
+  EXPECT_EQ(complete("mxc render x.mtlx --spp ''", 4), "\n") << "a number: nothing to offer";
+  EXPECT_NE(complete("mxc bench specialize --rep", 3).find("--repeat"), std::string::npos);
+  fs::remove(file);
+}
+
+// The man page is generated from the same definition: every option of every command is in it,
+// and groff formats it without a warning.
+TEST(CommandLine, ManPageHasEveryOptionAndFormatsCleanly) {
+  CommandRun page = mxc("--generate man");
+  ASSERT_EQ(page.exitCode, 0) << page.err;
+  EXPECT_EQ(page.out.rfind(".TH MXC 1", 0), 0u);
+  for (const char* command : {"inspect", "compile", "eval", "furnace", "render", "bench accuracy", "bench specialize"}) {
+    EXPECT_NE(page.out.find(std::string(".SS mxc ") + command), std::string::npos) << command;
+    CommandRun help = mxc(std::string(command) + " --help");
+    // Each long option --help lists, as the page writes it (roff's \- for a hyphen).
+    for (size_t at = help.out.find("  --"); at != std::string::npos; at = help.out.find("  --", at + 1)) {
+      std::string name = help.out.substr(at + 2, help.out.find_first_of(" ,=\n", at + 2) - at - 2);
+      std::string escaped;
+      for (char c : name) escaped += c == '-' ? std::string("\\-") : std::string(1, c);
+      EXPECT_NE(page.out.find("\\fB" + escaped + "\\fR"), std::string::npos) << command << " " << name;
+    }
+  }
+  if (std::system("command -v groff > /dev/null 2>&1") != 0) GTEST_SKIP() << "groff is not installed";
+  const fs::path file = writeTemp("mxc.1", page.out);
+  FILE* pipe = ::popen(("groff -man -ww -z " + file.string() + " 2>&1").c_str(), "r");
+  std::string warnings;
+  char buffer[512];
+  while (pipe && std::fgets(buffer, sizeof buffer, pipe)) warnings += buffer;
+  const int status = pipe ? ::pclose(pipe) : -1;
+  EXPECT_EQ(status, 0);
+  EXPECT_TRUE(warnings.empty()) << warnings;
+  fs::remove(file);
 }
 
 }  // namespace

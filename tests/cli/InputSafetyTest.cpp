@@ -173,6 +173,11 @@ TEST(InputSafety, AnInstalledMxcRendersFromAnotherFolder) {
   const std::string install = std::string(MXC_CMAKE) + " --install " + MXC_BUILD_DIR + " --prefix " + first.string() +
                               " > /dev/null";
   ASSERT_EQ(std::system(install.c_str()), 0);
+  // The shell completions and the man page, generated from the command-line definition.
+  for (const char* doc : {"share/bash-completion/completions/mxc", "share/zsh/vendor-completions/_mxc",
+                          "share/man/man1/mxc.1"}) {
+    EXPECT_TRUE(fs::is_regular_file(first / doc) && fs::file_size(first / doc) > 1000) << doc;
+  }
   fs::rename(first, moved);  // relocatable: nothing of the first prefix may be needed
   const std::string binary = (moved / "bin/mxc").string();
   const std::string run = "cd " + folder.path().string() + " && " + binary + " render " + corpus(kDefault) +
