@@ -165,10 +165,19 @@ void registerCompile(CLI::App& app, int& exitCode) {
   CLI::App* command = app.add_subcommand(
       "compile",
       "Compile the materials of a document to GLSL 4.50 and SPIR-V (validated by SPIRV-Tools). With several "
-      "materials, output names get _<material> before their extension");
-  command->add_option("file", options->file, "The .mtlx document")->required();
-  command->add_option("-o,--output", options->output, "Write the SPIR-V module here");
-  command->add_option("--glsl", options->glsl, "Write the GLSL here");
+      "materials, output names get _<material> before their extension. Several documents, folders (every .mtlx "
+      "under them) or scenes compile in one process, -j at a time: -o and --glsl then name folders, written as "
+      "DIR/<document>/<material>.spv, each document's files together or not at all; a failing document does not "
+      "stop the others, and the exit code is 1 when any failed");
+  command->add_option("files", options->files, "The .mtlx documents, folders or scene files (.json)")
+      ->required()
+      ->type_name("FILE|DIR");
+  command->add_option("-o,--output", options->output, "Write the SPIR-V module here (a folder for several documents)")
+      ->type_name("FILE|DIR");
+  command->add_option("--glsl", options->glsl, "Write the GLSL here (a folder for several documents)")
+      ->type_name("FILE|DIR");
+  command->add_option("-j,--jobs", options->jobs, "Documents compiled at once in a batch (default: one per core)")
+      ->check(CLI::Range(1, 256));
   command->add_option("--stage", options->stage,
                       "frag: fragment shader of the renderer; comp: compute shader evaluating f cos; furnace: compute "
                       "shader of the directional albedo; sample: compute shader drawing sample directions")

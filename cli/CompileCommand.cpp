@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/CompileBatch.h"
 #include "cli/OutputSet.h"
 #include "cli/ExitCode.h"
 #include "cli/MaterialPipeline.h"
@@ -157,7 +158,10 @@ int compileScene(const CompileOptions& options, std::chrono::steady_clock::time_
 
 }  // namespace
 
-int runCompile(const CompileOptions& options) {
+int runCompile(const CompileOptions& batchOrSingle) {
+  if (isBatch(batchOrSingle)) return runCompileBatch(batchOrSingle);
+  CompileOptions options = batchOrSingle;
+  options.file = options.files.empty() ? std::string() : options.files.front();
   const auto start = std::chrono::steady_clock::now();
   if (isSceneFile(options.file)) return compileScene(options, start);
   Session session;

@@ -3,6 +3,7 @@
 /// `mxc compile`: materials to GLSL and SPIR-V.
 
 #include <string>
+#include <vector>
 
 #include "cli/MaterialPipeline.h"
 
@@ -10,11 +11,13 @@ namespace mxc::cli {
 
 /// The options of the command (cli/CommandLine.cpp defines them).
 struct CompileOptions {
-  std::string file;
+  std::vector<std::string> files;  ///< documents, folders and scenes; several (or a folder): a batch (cli/CompileBatch.h)
+  std::string file;                ///< the one document or scene of a single compile
   std::string output;
   std::string glsl;
   std::string stage = "frag";
   bool optimize = false;
+  int jobs = 0;  ///< -j: documents compiled at once in a batch (0: one per core)
   MaterialOptions materials;
 };
 

@@ -132,8 +132,11 @@ void Progress::step(const std::string& what) {
   std::fprintf(stderr, "\r\033[K%s", line.c_str());
 }
 
-Progress::~Progress() {
+void Progress::clear() {
   if (drawn_) std::fprintf(stderr, "\r\033[K");
+  drawn_ = false;
 }
+
+Progress::~Progress() { clear(); }
 
 }  // namespace mxc::cli

@@ -86,6 +86,8 @@ class Progress {
   explicit Progress(size_t total);
   /// One more unit of the total is done; `what` says where the work is.
   void step(const std::string& what);
+  /// Erases the bar, if drawn, so that a message can be printed; the next step draws it again.
+  void clear();
   ~Progress();
 
  private:

@@ -36,7 +36,8 @@ bool requestInputs(const MaterialOptions& options, CompileRequest& request) {
 int MaterialPipeline::run(CompileRequest request, const MaterialOptions& options, bool nothingIsAnError) {
   if (!requestInputs(options, request)) return kUsage;
   const std::string file = request.document.string();
-  const bool libraries = session_.loadLibraries(options.libraries);
+  // Libraries loaded once for many documents (a batch) are used as they are.
+  const bool libraries = request.libraries != nullptr || session_.loadLibraries(options.libraries);
   compiler_ = std::make_unique<Compiler>(session_.workspace, std::move(request));
   auto start = std::chrono::steady_clock::now();
   if (libraries && compiler_->document()) detail("{} read in {:.1f} ms", file, millisecondsSince(start));
@@ -54,16 +55,16 @@ int MaterialPipeline::run(CompileRequest request, const MaterialOptions& options
   }
   session_.printDiagnostics();
   if (session_.workspace.diagnostics.hasErrors()) {
-    std::fprintf(stderr, "%s: %zu error(s)\n", file.c_str(), session_.workspace.diagnostics.errorCount());
+    session_.printLine(fmt::format("{}: {} error(s)", file, session_.workspace.diagnostics.errorCount()));
     return kInvalidDocument;
   }
   if (!options.material.empty() && compiler_->materials().empty() && !compiler_->materialNames().empty()) {
-    std::fprintf(stderr, "error: %s has no material '%s' (it has: %s)\n", file.c_str(), options.material.c_str(),
-                 fmt::format("{}", fmt::join(compiler_->materialNames(), ", ")).c_str());
+    session_.printLine(fmt::format("error: {} has no material '{}' (it has: {})", file, options.material,
+                                   fmt::join(compiler_->materialNames(), ", ")));
     return kUsage;
   }
   if (compiler_->materials().empty() && nothingIsAnError) {
-    std::fprintf(stderr, "error: %s has no material and no surface shader to compile\n", file.c_str());
+    session_.printLine(fmt::format("error: {} has no material and no surface shader to compile", file));
     return kInvalidDocument;
   }
   return kOk;

@@ -30,13 +30,18 @@ void Session::printDiagnostics() {
   const auto& all = diagnostics.all();
   for (; printed_ < all.size(); ++printed_) {
     if (quiet() && all[printed_].severity != Severity::Error) continue;  // -q: errors only
-    std::fprintf(stderr, "%s\n", all[printed_].formatWithSource().c_str());
+    printLine(all[printed_].formatWithSource());
   }
   const size_t omitted = diagnostics.omittedErrors() + diagnostics.omittedWarnings();
   if (omitted > omittedPrinted_) {
-    std::fprintf(stderr, "%s\n", diagnostics.omittedSummary().c_str());
+    printLine(diagnostics.omittedSummary());
     omittedPrinted_ = omitted;
   }
+}
+
+void Session::printLine(const std::string& line) {
+  if (capture) *capture += line + "\n";
+  else std::fprintf(stderr, "%s\n", line.c_str());
 }
 
 std::optional<std::string> Session::checkOutputsAreNotSources(const OutputSet& outputs) const {

@@ -27,6 +27,12 @@ class Session {
   /// Prints the diagnostics not printed yet to stderr (with source lines), then a count of
   /// those not kept (Diagnostics::kMaxKept).
   void printDiagnostics();
+  /// Prints a line of the command's own (an error or a summary about the document) to stderr,
+  /// or into the capture.
+  void printLine(const std::string& line);
+  /// Where the session's messages go instead of stderr when set: a batch compiles documents at
+  /// once and prints each one's messages together when it is done.
+  std::string* capture = nullptr;
   /// A usage error when an output of `outputs` is a file this session read (the document, an
   /// included document, a library file).
   std::optional<std::string> checkOutputsAreNotSources(const OutputSet& outputs) const;

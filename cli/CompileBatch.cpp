@@ -1,0 +1,314 @@
+#include "cli/CompileBatch.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cli/ExitCode.h"
+#include "cli/Harness.h"
+#include "cli/MaterialPipeline.h"
+#include "cli/Scene.h"
+#include "cli/SceneDocuments.h"
+#include "cli/Verbosity.h"
+#include "compiler/common/Parallel.h"
+#include "compiler/glsl/ShaderBuilder.h"
+#include "compiler/spirv/SpirvCompiler.h"
+
+namespace mxc::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// One document (or scene) of the batch, and the folder of its outputs under -o / --glsl.
+struct Item {
+  fs::path file;
+  fs::path relative;  ///< "openpbr-presets/open_pbr_gold" for a folder's document, the stem for a file
+};
+
+enum class Outcome { Compiled, Nothing, Failed };
+
+struct ItemResult {
+  Outcome outcome = Outcome::Failed;
+  size_t materials = 0;
+  std::string messages;  ///< the document's diagnostics and errors, printed together
+};
+
+glsl::ShaderKind kindOf(const std::string& stage) {
+  if (stage == "comp") return glsl::ShaderKind::Eval;
+  if (stage == "furnace") return glsl::ShaderKind::Furnace;
+  if (stage == "sample") return glsl::ShaderKind::Sample;
+  return glsl::ShaderKind::Raster;
+}
+
+/// A material's name as a file name: letters, digits, '-' and '_' kept, anything else '_'.
+std::string fileName(const std::string& material) {
+  std::string out;
+  for (char c : material) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
+  return out.empty() ? "_" : out;
+}
+
+/// The documents the arguments name, in order: a folder's .mtlx files sorted by path.
+std::variant<std::vector<Item>, std::string> collect(const std::vector<std::string>& arguments) {
+  std::vector<Item> items;
+  for (const std::string& argument : arguments) {
+    const fs::path path(argument);
+    std::error_code error;
+    if (fs::is_directory(path, error)) {
+      std::vector<fs::path> found;
+      for (auto it = fs::recursive_directory_iterator(path, fs::directory_options::skip_permission_denied, error);
+           !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
+        if (it->is_regular_file(error) && it->path().extension() == ".mtlx") found.push_back(it->path());
+      }
+      if (error) return fmt::format("{}: cannot list the folder: {}", argument, error.message());
+      std::sort(found.begin(), found.end());
+      const fs::path base = fs::absolute(path).lexically_normal();
+      const fs::path name = base.has_filename() ? base.filename() : base.parent_path().filename();
+      for (const fs::path& f : found) {
+        fs::path relative = name / fs::absolute(f).lexically_normal().lexically_relative(base);
+        items.push_back({f, relative.replace_extension()});
+      }
+    } else if (fs::exists(path, error)) {
+      items.push_back({path, path.stem()});
+    } else {
+      return fmt::format("{}: no such file or folder", argument);
+    }
+  }
+  // Two documents must not write one folder of outputs.
+  std::map<fs::path, const Item*> seen;
+  for (const Item& item : items) {
+    auto [at, fresh] = seen.emplace(item.relative, &item);
+    if (!fresh) {
+      return fmt::format("{} and {} would both write their outputs to {}/: compile them in separate runs",
+                         at->second->file.string(), item.file.string(), item.relative.string());
+    }
+  }
+  return items;
+}
+
+/// Everything the workers share, read-only but for the counters.
+struct Batch {
+  const CompileOptions& options;
+  const lib::LibraryStack* libraries;
+  glsl::ShaderKind kind;
+};
+
+/// Compiles one document's (or scene's) materials; its outputs are committed together.
+ItemResult compileItem(const Batch& batch, const Item& item) {
+  const CompileOptions& options = batch.options;
+  ItemResult result;
+  Session session;
+  session.capture = &result.messages;
+  const std::string file = item.file.string();
+  // The materials to compile, each with the pipeline of its document.
+  std::vector<std::pair<MaterialPipeline*, const ir::Material*>> units;
+  std::unique_ptr<MaterialPipeline> single;
+  std::unique_ptr<SceneDocuments> scene;
+  if (isSceneFile(item.file)) {
+    auto read = readScene(item.file);
+    if (auto* why = std::get_if<std::string>(&read)) {
+      session.printLine(*why);
+      return result;
+    }
+    scene = std::make_unique<SceneDocuments>(session);
+    if (scene->load(std::get<Scene>(read), options.materials, batch.kind, options.optimize) != kOk) return result;
+    for (const SceneObjectSpec& object : std::get<Scene>(read).objects) {
+      auto found = scene->find(object.material);
+      if (auto* why = std::get_if<std::string>(&found)) {
+        session.printLine(fmt::format("{}: error: {}", file, *why));
+        return result;
+      }
+      const auto& hit = std::get<SceneDocuments::Found>(found);
+      const bool known = std::any_of(units.begin(), units.end(), [&](const auto& u) { return u.second == hit.material; });
+      if (!known) units.emplace_back(hit.pipeline, hit.material);
+    }
+  } else {
+    single = std::make_unique<MaterialPipeline>(session);
+    CompileRequest request;
+    request.document = item.file;
+    request.stage = batch.kind;
+    request.optimize = options.optimize;
+    request.libraries = batch.libraries;
+    if (single->run(std::move(request), options.materials, false) != kOk) return result;
+    for (const ir::Material& m : single->materials()) units.emplace_back(single.get(), &m);
+  }
+  if (units.empty()) {
+    result.outcome = Outcome::Nothing;
+    return result;
+  }
+  // The outputs: DIR/<document>/<material>.spv and .frag or .comp, declared before the work.
+  OutputSet outputs;
+  const std::string glslExtension = batch.kind == glsl::ShaderKind::Raster ? ".frag" : ".comp";
+  auto pathsOf = [&](const ir::Material& m) {
+    std::pair<fs::path, fs::path> paths;
+    if (!options.output.empty()) paths.first = fs::path(options.output) / item.relative / (fileName(m.name) + ".spv");
+    if (!options.glsl.empty()) paths.second = fs::path(options.glsl) / item.relative / (fileName(m.name) + glslExtension);
+    return paths;
+  };
+  for (const auto& [pipeline, material] : units) {
+    for (const fs::path& path : {pathsOf(*material).first, pathsOf(*material).second}) {
+      if (path.empty()) continue;
+      std::error_code error;
+      fs::create_directories(path.parent_path(), error);
+      if (auto why = outputs.declare(path, path.extension() == ".spv" ? "-o" : "--glsl")) {
+        session.printLine("error: " + *why);
+        return result;
+      }
+    }
+  }
+  if (auto why = outputs.checkDistinct()) {
+    session.printLine(fmt::format("error: {}: {}", file, *why));  // two materials whose names map to one file
+    return result;
+  }
+  bool failed = false;
+  for (const auto& [pipeline, material] : units) {
+    if (auto why = pipeline->checkOutputsAreNotInputs(outputs)) {
+      session.printLine("error: " + *why);
+      return result;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    Compiler& compiler = pipeline->compiler();
+    glsl::MaterialShader shader = compiler.shader(*material);
+    std::optional<std::vector<uint32_t>> words = compiler.spirv(shader);
+    session.printDiagnostics();
+    const auto [spv, glslPath] = pathsOf(*material);
+    if (!glslPath.empty()) {
+      if (auto why = outputs.stage(glslPath, shader.glsl.text)) {
+        session.printLine("error: " + *why);
+        return result;
+      }
+    }
+    if (!words) {
+      failed = true;
+      continue;
+    }
+    if (!spv.empty()) {
+      std::string bytes(reinterpret_cast<const char*>(words->data()), words->size() * sizeof(uint32_t));
+      if (auto why = outputs.stage(spv, std::move(bytes))) {
+        session.printLine("error: " + *why);
+        return result;
+      }
+    }
+    detail("{}: {}: {} SPIR-V instructions in {:.1f} ms", file, material->name, spirv::instructionCount(*words),
+           millisecondsSince(start));
+    ++result.materials;
+  }
+  // All or nothing for the document, as for a single compile.
+  if (failed || !outputs.complete()) {
+    session.printLine(fmt::format("error: {}: a shader did not compile; none of its outputs written", file));
+    result.materials = 0;
+    return result;
+  }
+  if (auto why = outputs.commit()) {
+    session.printLine("error: " + *why);
+    result.materials = 0;
+    return result;
+  }
+  result.outcome = Outcome::Compiled;
+  return result;
+}
+
+}  // namespace
+
+bool isBatch(const CompileOptions& options) {
+  std::error_code error;
+  return options.files.size() > 1 || (options.files.size() == 1 && fs::is_directory(options.files[0], error));
+}
+
+int runCompileBatch(const CompileOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  auto collected = collect(options.files);
+  if (auto* why = std::get_if<std::string>(&collected)) {
+    std::fprintf(stderr, "error: %s\n", why->c_str());
+    return kUsage;
+  }
+  const std::vector<Item>& items = std::get<std::vector<Item>>(collected);
+  if (options.output == "-" || options.glsl == "-") {
+    std::fprintf(stderr, "error: -o and --glsl name folders when compiling several documents\n");
+    return kUsage;
+  }
+  for (const std::string& folder : {options.output, options.glsl}) {
+    std::error_code error;
+    if (folder.empty()) continue;
+    if (fs::exists(folder, error) && !fs::is_directory(folder, error)) {
+      std::fprintf(stderr, "error: %s: with several documents, -o and --glsl name folders (one file per material)\n",
+                   folder.c_str());
+      return kUsage;
+    }
+    fs::create_directories(folder, error);
+    if (error) {
+      std::fprintf(stderr, "error: %s: cannot create the folder: %s\n", folder.c_str(), error.message().c_str());
+      return kOutputFailed;
+    }
+  }
+  // The libraries, once for every document.
+  Session libraries;
+  if (!libraries.loadLibraries(options.materials.libraries)) {
+    libraries.printDiagnostics();
+    return kInvalidDocument;
+  }
+  libraries.printDiagnostics();
+  const Batch batch{options, &libraries.workspace.libraries, kindOf(options.stage)};
+
+  const size_t workers = std::max<size_t>(1, std::min(items.size(), options.jobs > 0 ? size_t(options.jobs) : coreCount()));
+  detail("{} document(s) on {} worker(s)", items.size(), workers);
+  std::vector<ItemResult> results(items.size());
+  std::atomic<size_t> next{0};
+  std::mutex printing;
+  Progress progress(items.size());
+  auto work = [&] {
+    for (size_t i = next++; i < items.size(); i = next++) {
+      ItemResult r;
+      try {
+        r = compileItem(batch, items[i]);
+      } catch (const std::bad_alloc&) {
+        r.messages += fmt::format("error: {}: out of memory\n", items[i].file.string());
+      } catch (const std::exception& e) {
+        r.messages += fmt::format("error: {}: {}\n", items[i].file.string(), e.what());
+      }
+      std::lock_guard<std::mutex> lock(printing);
+      if (!r.messages.empty()) {
+        progress.clear();
+        std::fputs(r.messages.c_str(), stderr);
+      }
+      progress.step(items[i].file.filename().string());
+      results[i] = std::move(r);
+    }
+  };
+  std::vector<std::thread> threads;
+  for (size_t t = 1; t < workers; ++t) threads.emplace_back(work);
+  work();
+  for (std::thread& t : threads) t.join();
+  progress.clear();
+
+  size_t compiled = 0, nothing = 0, materials = 0;
+  std::vector<std::string> failed;
+  for (size_t i = 0; i < items.size(); ++i) {
+    materials += results[i].materials;
+    if (results[i].outcome == Outcome::Compiled) ++compiled;
+    else if (results[i].outcome == Outcome::Nothing) ++nothing;
+    else failed.push_back(items[i].file.string());
+  }
+  const double seconds = millisecondsSince(start) / 1000.0;
+  if (!quiet()) {
+    std::printf("compiled %zu material(s) of %zu document(s) in %.2f s (%.1f ms per material, %zu worker(s))%s\n",
+                materials, compiled, seconds, materials ? 1000.0 * seconds / double(materials) : 0.0, workers,
+                nothing ? fmt::format("; {} document(s) had nothing to compile", nothing).c_str() : "");
+  }
+  if (!failed.empty()) {
+    std::fprintf(stderr, "error: %zu of %zu document(s) failed:\n", failed.size(), items.size());
+    for (const std::string& f : failed) std::fprintf(stderr, "  %s\n", f.c_str());
+    return kInvalidDocument;
+  }
+  return kOk;
+}
+
+}  // namespace mxc::cli

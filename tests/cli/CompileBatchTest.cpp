@@ -1,0 +1,104 @@
+// `mxc compile` of many documents in one process (cli/CompileBatch.cpp): folders and files
+// together, one output per material under -o DIR, the run going on past a failing document,
+// a summary and exit 1 when any failed; -j workers give the very same files as one.
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+#include "support/CommandSupport.h"
+
+namespace mxc::test {
+namespace {
+
+std::string readBytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+/// Every file under `folder`, by its path relative to it, with its bytes.
+std::map<std::string, std::string> filesUnder(const fs::path& folder) {
+  std::map<std::string, std::string> out;
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    if (entry.is_regular_file()) out[fs::relative(entry.path(), folder).string()] = readBytes(entry.path());
+  }
+  return out;
+}
+
+const char* const kGood =
+    "<materialx version=\"1.39\">\n"
+    "  <open_pbr_surface name=\"o\" type=\"surfaceshader\"/>\n"
+    "  <surfacematerial name=\"RedPaint\" type=\"material\"><input name=\"surfaceshader\" type=\"surfaceshader\" "
+    "nodename=\"o\"/></surfacematerial>\n"
+    "  <standard_surface name=\"s\" type=\"surfaceshader\"/>\n"
+    "  <surfacematerial name=\"Plastic\" type=\"material\"><input name=\"surfaceshader\" type=\"surfaceshader\" "
+    "nodename=\"s\"/></surfacematerial>\n"
+    "</materialx>\n";
+
+TEST(CompileBatch, GoesOnPastAFailingDocumentAndSaysWhichFailed) {
+  TempFolder folder("batch");
+  fs::create_directories(folder / "docs/sub");
+  writeText(folder / "docs/good.mtlx", kGood);
+  writeText(folder / "docs/sub/broken.mtlx", "<materialx version=\"1.39\">\n  <nodegraph name=\"x\">\n</materialx>\n");
+  writeText(folder / "docs/graph_only.mtlx", "<materialx version=\"1.39\">\n  <constant name=\"c\" type=\"color3\"/>\n</materialx>\n");
+  writeText(folder / "single.mtlx", kGood);
+  const fs::path out = folder / "out";
+  CommandRun r = mxc("compile " + (folder / "docs").string() + " " + (folder / "single.mtlx").string() + " -o " +
+                     out.string() + " --glsl " + out.string() + " -j 2");
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  // The broken document's error, with its position, then the summary naming it.
+  EXPECT_NE(r.err.find("broken.mtlx:3:1: error: mismatched end tag"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("error: 1 of 4 document(s) failed:\n  " + (folder / "docs/sub/broken.mtlx").string()),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.out.find("compiled 4 material(s) of 2 document(s)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1 document(s) had nothing to compile"), std::string::npos) << r.out;
+  // One file per material under DIR/<document>/.
+  for (const char* path : {"docs/good/RedPaint.spv", "docs/good/Plastic.spv", "docs/good/RedPaint.frag",
+                           "single/RedPaint.spv", "single/Plastic.frag"}) {
+    EXPECT_TRUE(fs::is_regular_file(out / path)) << path;
+  }
+  EXPECT_EQ(readBytes(out / "docs/good/Plastic.spv").substr(0, 4), std::string("\x03\x02\x23\x07", 4));
+  EXPECT_FALSE(fs::exists(out / "docs/sub/broken")) << "nothing of a failed document";
+  // Without -o, a batch only checks that everything compiles.
+  r = mxc("compile " + (folder / "docs/good.mtlx").string() + " " + (folder / "single.mtlx").string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("compiled 4 material(s) of 2 document(s)"), std::string::npos) << r.out;
+}
+
+TEST(CompileBatch, RefusesOutputsItCannotSeparate) {
+  TempFolder folder("batch_refuse");
+  fs::create_directories(folder / "a");
+  fs::create_directories(folder / "b");
+  writeText(folder / "a/same.mtlx", kGood);
+  writeText(folder / "b/same.mtlx", kGood);
+  CommandRun r = mxc("compile " + (folder / "a/same.mtlx").string() + " " + (folder / "b/same.mtlx").string() + " -o " +
+                     (folder / "out").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("would both write their outputs to same/"), std::string::npos) << r.err;
+  writeText(folder / "file.spv", "x");
+  r = mxc("compile " + (folder / "a").string() + " -o " + (folder / "file.spv").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("-o and --glsl name folders"), std::string::npos) << r.err;
+  r = mxc("compile " + (folder / "a").string() + " " + (folder / "nope").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("no such file or folder"), std::string::npos) << r.err;
+}
+
+// The workers share the libraries and glslang: two of them write exactly the files one writes.
+TEST(CompileBatch, WorkersWriteWhatOneWrites) {
+  TempFolder folder("batch_jobs");
+  const std::string presets = corpus("openpbr-presets");
+  CommandRun one = mxc("compile " + presets + " -o " + (folder / "one").string() + " -j 1");
+  ASSERT_EQ(one.exitCode, 0) << one.err;
+  CommandRun two = mxc("compile " + presets + " -o " + (folder / "two").string() + " -j 2");
+  ASSERT_EQ(two.exitCode, 0) << two.err;
+  const auto a = filesUnder(folder / "one");
+  const auto b = filesUnder(folder / "two");
+  EXPECT_GT(a.size(), 10u);
+  EXPECT_TRUE(a == b) << a.size() << " against " << b.size() << " files";
+}
+
+}  // namespace
+}  // namespace mxc::test
