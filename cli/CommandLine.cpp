@@ -176,6 +176,10 @@ void registerCompile(CLI::App& app, int& exitCode) {
       ->type_name("FILE|DIR");
   command->add_option("--glsl", options->glsl, "Write the GLSL here (a folder for several documents)")
       ->type_name("FILE|DIR");
+  command->add_option("--tables", options->tables,
+                      "Write the albedo tables the shaders sample to this folder (mxc_albedo_tables.bin; the "
+                      "interface JSON beside each SPIR-V file names it)")
+      ->type_name("DIR");
   command->add_option("-j,--jobs", options->jobs, "Documents compiled at once in a batch (default: one per core)")
       ->check(CLI::Range(1, 256));
   command->add_option("--stage", options->stage,

@@ -14,6 +14,7 @@
 
 #include "cli/ExitCode.h"
 #include "cli/Harness.h"
+#include "cli/InterfaceOutputs.h"
 #include "cli/MaterialPipeline.h"
 #include "cli/Scene.h"
 #include "cli/SceneDocuments.h"
@@ -99,6 +100,7 @@ struct Batch {
   const CompileOptions& options;
   const lib::LibraryStack* libraries;
   glsl::ShaderKind kind;
+  fs::path tables;  ///< --tables' file, written once before the documents
 };
 
 /// Compiles one document's (or scene's) materials; its outputs are committed together.
@@ -162,6 +164,12 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
         session.printLine("error: " + *why);
         return result;
       }
+      if (path.extension() == ".spv") {
+        if (auto why = declareInterfaceOutputs(outputs, path, batch.kind)) {
+          session.printLine("error: " + *why);
+          return result;
+        }
+      }
     }
   }
   if (auto why = outputs.checkDistinct()) {
@@ -193,6 +201,11 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
     if (!spv.empty()) {
       std::string bytes(reinterpret_cast<const char*>(words->data()), words->size() * sizeof(uint32_t));
       if (auto why = outputs.stage(spv, std::move(bytes))) {
+        session.printLine("error: " + *why);
+        return result;
+      }
+      if (auto why = stageInterfaceOutputs(outputs, spv, *material, shader, batch.kind, batch.tables,
+                                           pipeline->documentFolder())) {
         session.printLine("error: " + *why);
         return result;
       }
@@ -256,7 +269,18 @@ int runCompileBatch(const CompileOptions& options) {
     return kInvalidDocument;
   }
   libraries.printDiagnostics();
-  const Batch batch{options, &libraries.workspace.libraries, kindOf(options.stage)};
+  Batch batch{options, &libraries.workspace.libraries, kindOf(options.stage), {}};
+  if (!options.tables.empty()) {
+    OutputSet tables;
+    std::string error;
+    auto declared = declareTables(tables, options.tables, error);
+    if (!declared) {
+      std::fprintf(stderr, "error: %s\n", error.c_str());
+      return kOutputFailed;
+    }
+    if (printError(stageTables(tables, *declared)) || printError(tables.commit())) return kOutputFailed;
+    batch.tables = *declared;
+  }
 
   const size_t workers = std::max<size_t>(1, std::min(items.size(), options.jobs > 0 ? size_t(options.jobs) : coreCount()));
   detail("{} document(s) on {} worker(s)", items.size(), workers);

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "cli/CompileBatch.h"
+#include "cli/InterfaceOutputs.h"
 #include "cli/OutputSet.h"
 #include "cli/ExitCode.h"
 #include "cli/MaterialPipeline.h"
@@ -44,11 +45,28 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
   if (printError(checkStandardOutput({options.output, options.glsl}, units.size()))) return kUsage;
   // Every output is declared and checked before anything is compiled or written.
   OutputSet outputs;
+  const glsl::ShaderKind kind = kindOf(options.stage);
+  // Beside a SPIR-V file, its interface for a host renderer (and the vertex stage of a raster shader).
+  const bool interfaces = !options.output.empty() && options.output != "-";
   for (const Unit& unit : units) {
     for (const auto& [path, option] : {std::pair{options.output, "-o"}, std::pair{options.glsl, "--glsl"}}) {
       if (path.empty()) continue;
       if (printError(outputs.declare(perMaterialPath(path, unit.material->name, several), option))) return kOutputFailed;
     }
+    if (interfaces && printError(declareInterfaceOutputs(outputs, perMaterialPath(options.output, unit.material->name, several), kind))) {
+      return kOutputFailed;
+    }
+  }
+  std::filesystem::path tables;
+  if (!options.tables.empty()) {
+    std::string error;
+    auto declared = declareTables(outputs, options.tables, error);
+    if (!declared) {
+      printError(error);
+      return kOutputFailed;
+    }
+    tables = *declared;
+    if (printError(stageTables(outputs, tables))) return kOutputFailed;
   }
   if (printError(outputs.checkDistinct())) return kUsage;
   for (MaterialPipeline* pipeline : pipelines) {
@@ -81,6 +99,8 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
       std::string bytes(reinterpret_cast<const char*>(words->data()), words->size() * sizeof(uint32_t));
       const auto path = perMaterialPath(options.output, material.name, several);
       if (printError(outputs.stage(path, std::move(bytes)))) return kOutputFailed;
+      if (interfaces && printError(stageInterfaceOutputs(outputs, path, material, shader, kind, tables,
+                                                           unit.pipeline->documentFolder()))) return kOutputFailed;
     }
     if (!quiet) {
       std::vector<std::string> lobes;

@@ -17,7 +17,8 @@ struct CompileOptions {
   std::string glsl;
   std::string stage = "frag";
   bool optimize = false;
-  int jobs = 0;  ///< -j: documents compiled at once in a batch (0: one per core)
+  int jobs = 0;
+  std::string tables;  ///< --tables DIR: write the albedo tables the shaders sample  ///< -j: documents compiled at once in a batch (0: one per core)
   MaterialOptions materials;
 };
 

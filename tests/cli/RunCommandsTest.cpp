@@ -157,6 +157,37 @@ TEST(CompileCommand, SetOnSeveralMaterialsSaysWhichItAppliesTo) {
   fs::remove(doc);
 }
 
+// Beside the SPIR-V, compile writes what a host renderer needs: the interface JSON naming the
+// files it goes with, the vertex stage, and with --tables the albedo tables in their format.
+TEST(CompileCommand, WritesTheInterfaceVertexStageAndTablesForAHost) {
+  TempFolder folder("interface");
+  CommandRun r = mxc("compile " + corpus(kDefault) + " -o " + (folder / "m.spv").string() + " --tables " +
+                     (folder / "tables").string() + " --param base_color");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_TRUE(fs::is_regular_file(folder / "m.json"));
+  const nlohmann::json j = nlohmann::json::parse(readAll(folder / "m.json"));
+  EXPECT_EQ(j["schema"], "mxc-shader-interface-1");
+  EXPECT_EQ(j["stages"]["fragment"]["spirv"], "m.spv");
+  EXPECT_EQ(j["stages"]["vertex"]["spirv"], "m.vert.spv");
+  EXPECT_EQ(j["tables"][0]["file"], "tables/mxc_albedo_tables.bin");
+  EXPECT_EQ(readAll(folder / "m.vert.spv").substr(0, 4), std::string("\x03\x02\x23\x07", 4));
+  const std::string tables = readAll(folder / "tables/mxc_albedo_tables.bin");
+  EXPECT_EQ(tables.substr(0, 8), "MXCTAB01");
+  const size_t texels = size_t(j["tables"][0]["width"].get<int>()) * size_t(j["tables"][0]["height"].get<int>());
+  EXPECT_EQ(tables.size(), 28 + texels * 4 * sizeof(float)) << "header, then RGBA float32 texels";
+  bool kept = false;
+  for (const auto& d : j["descriptors"]) {
+    if (d["name"] != "MxcParameters") continue;
+    for (const auto& m : d["members"]) kept = kept || (m.contains("input") && m["input"] == "base_color");
+  }
+  EXPECT_TRUE(kept) << "--param base_color is a member naming its input";
+  // A compute stage has no vertex stage.
+  r = mxc("compile " + corpus(kDefault) + " --stage comp -o " + (folder / "c.spv").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(folder / "c.json"));
+  EXPECT_FALSE(fs::exists(folder / "c.vert.spv"));
+}
+
 // A document of definitions or node graphs only is valid and has nothing to compile: compile
 // says so and succeeds, writing nothing; render, which needs a shader, refuses it.
 TEST(CompileCommand, ADocumentWithoutAShaderHasNothingToCompile) {
