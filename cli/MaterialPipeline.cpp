@@ -23,6 +23,10 @@ bool requestInputs(const MaterialOptions& options, CompileRequest& request) {
     request.lowering.overrides.emplace_back(s.substr(0, eq), s.substr(eq + 1));
   }
   request.lowering.parameters = options.parameters;
+  // --param-all: every input with a value a uniform, as a general-purpose generator makes them;
+  // the code is still only what the material's structure needs (unlike --no-specialize, which
+  // also compiles in every effect of the shading model).
+  request.lowering.everyInputVariable = options.parameterAll;
   request.lowering.imageSearchPaths = searchPaths(options.searchPaths);
   request.lowering.workingSpace = options.workingSpace;
   request.material = options.material;

@@ -22,6 +22,7 @@ struct MaterialOptions {
   Accuracy accuracy = Accuracy::Balanced;  ///< --accuracy TIER
   int referenceSamples = 0;                ///< --reference-samples N (0: the command's default)
   bool noSpecialize = false;               ///< --no-specialize: the general shader (CompileRequest::specialize)
+  bool parameterAll = false;               ///< --param-all: every input of the shading node a uniform
   std::vector<std::string> searchPaths;    ///< --search-path DIR (repeatable): images, meshes
   std::string workingSpace = "lin_rec709";  ///< --working-space NAME (compile): LoweringOptions::workingSpace
   LibraryOptions libraries;

@@ -5,6 +5,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <set>
 #include <tuple>
 
 #include <nlohmann/json.hpp>
@@ -181,6 +182,22 @@ TEST(CompileCommand, WritesTheInterfaceVertexStageAndTablesForAHost) {
     for (const auto& m : d["members"]) kept = kept || (m.contains("input") && m["input"] == "base_color");
   }
   EXPECT_TRUE(kept) << "--param base_color is a member naming its input";
+  // --param-all: every input of the shading node with a value is a member naming its input.
+  r = mxc("compile " + corpus(kDefault) + " -o " + (folder / "all.spv").string() + " --param-all");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json all = nlohmann::json::parse(readAll(folder / "all.json"));
+  std::set<std::string> inputs;
+  for (const auto& d : all["descriptors"]) {
+    if (d["name"] != "MxcParameters") continue;
+    for (const auto& m : d["members"]) {
+      if (m.contains("input")) inputs.insert(m["input"].get<std::string>());
+    }
+  }
+  for (const char* input : {"base_color", "base_weight", "specular_roughness", "coat_weight", "transmission_weight",
+                            "thin_film_thickness", "emission_luminance", "geometry_opacity"}) {
+    EXPECT_TRUE(inputs.count(input)) << input;
+  }
+  EXPECT_GT(inputs.size(), 30u);
   // A compute stage has no vertex stage.
   r = mxc("compile " + corpus(kDefault) + " --stage comp -o " + (folder / "c.spv").string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
