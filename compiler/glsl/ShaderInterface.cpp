@@ -148,6 +148,7 @@ json shaderInterfaceJson(const ir::Material& material, const MaterialShader& sha
     for (const ir::Parameter& p : material.parameters) {
       if (p.name != f.name) continue;
       member["input"] = std::string(p.origin.input);
+      if (!p.graph.empty()) member["graph"] = p.graph;
       if (p.origin.location.valid()) member["source"] = p.origin.location.str();
     }
     parameters.push_back(std::move(member));

@@ -25,6 +25,7 @@ struct Parameter {
   Type type = Type::Float;
   std::vector<float> value;  ///< default, componentCount(type) floats (1 for Bool and Int)
   Origin origin;
+  std::string graph;  ///< the document-level graph whose interface input it is; empty for the shading node's
 };
 
 /// An image file a material reads, with the input that names it (for errors about the file).
@@ -51,6 +52,14 @@ struct ShaderInput {
   SourceLocation location;  ///< where it is set: the document's element, else the nodedef's input
 };
 
+/// An interface input of a document-level node graph that a material reads: `--set` and
+/// `--param` reach it as GRAPH.INPUT, or as INPUT when the shading node has no input of that name.
+struct GraphInput {
+  std::string qualified;  ///< "NG_BrickPattern.brick_color"
+  std::string name;       ///< "brick_color"
+  std::string type;       ///< its MaterialX type
+};
+
 struct Material {
   std::string name;          ///< the material node's name (or a graph output's, for pbrlib graphs)
   std::string shader;        ///< the shading node's category (open_pbr_surface, standard_surface, surface)
@@ -68,6 +77,7 @@ struct Material {
   std::vector<Parameter> parameters;
   std::vector<ImageFile> images;
   std::vector<ShaderInput> shaderInputs;  ///< every input of the shading node, in nodedef order
+  std::vector<GraphInput> graphInputs;    ///< the document-level graphs' interface inputs it reads
 
   /// The shading node's input of this name, or null.
   const ShaderInput* shaderInput(std::string_view input) const {

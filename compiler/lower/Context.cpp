@@ -106,7 +106,7 @@ ir::ExprId Context::applyChannels(ir::ExprId value, std::string_view channels, i
   return b.construct(to, parts);
 }
 
-ir::ExprId Context::value(const ResolvedInput& in, Env& env) {
+ir::ExprId Context::value(const ResolvedInput& in, Env& env, const resolve::ResolvedGraph* interfaceOf) {
   ir::Type type = ir::Type::Float;
   const bool typed = ir::irTypeOf(in.type, type);
   if (!typed) return ir::kNoExpr;
@@ -130,7 +130,11 @@ ir::ExprId Context::value(const ResolvedInput& in, Env& env) {
       break;
     case InputSource::Interface: {
       Env* where = nullptr;
-      if (const ResolvedInput* iface = interfaceInput(env, in.interfaceName, where)) v = value(*iface, *where);
+      if (const ResolvedInput* iface = interfaceInput(env, in.interfaceName, where)) {
+        // A document-level graph's interface input is one a user may --set or --param.
+        const bool published = !env.caller && env.graph && env.graph->graph;
+        v = value(*iface, *where, published ? env.graph : nullptr);
+      }
       break;
     }
     case InputSource::Unset:
@@ -147,6 +151,8 @@ ir::ExprId Context::value(const ResolvedInput& in, Env& env) {
   }
   if (shaderNode && &in >= shaderNode->inputs.data() && &in < shaderNode->inputs.data() + shaderNode->inputs.size()) {
     v = userInput(in, v);
+  } else if (interfaceOf) {
+    v = graphInput(*interfaceOf, in, v);
   }
   // A colour written as a value is in its element's colour space (MaterialX 1.39, "Color
   // Spaces": inherited from the enclosing elements); a --set or --param value stands in for it,
@@ -182,18 +188,52 @@ ir::ExprId Context::userInput(const ResolvedInput& in, ir::ExprId v) {
   if (options.everyInputVariable && v != ir::kNoExpr && material.exprs.isConstant(v) && b.type(v) != ir::Type::String) {
     variable = true;
   }
-  if (variable && v != ir::kNoExpr) {
-    ir::Type type = b.type(v);
-    const std::string id = "p_" + std::string(in.name);
-    bool known = false;
-    for (const ir::Parameter& p : material.parameters) known = known || p.name == id;
-    if (!known) {
-      std::vector<float> value = material.exprs.constantComponents(v);
-      material.parameters.push_back({id, type, value, {in.location, in.name}});
-    }
-    v = material.exprs.named(ir::Op::Parameter, type, id);
-  }
+  if (variable && v != ir::kNoExpr) v = keepVariable("p_" + std::string(in.name), in.name, in.location, v);
   return v;
+}
+
+ir::ExprId Context::keepVariable(const std::string& id, std::string_view name, SourceLocation location, ir::ExprId v,
+                                 std::string_view graph) {
+  const ir::Type type = b.type(v);
+  bool known = false;
+  for (const ir::Parameter& p : material.parameters) known = known || p.name == id;
+  if (!known) {
+    material.parameters.push_back({id, type, material.exprs.constantComponents(v), {location, name}, std::string(graph)});
+  }
+  return material.exprs.named(ir::Op::Parameter, type, id);
+}
+
+ir::ExprId Context::graphInput(const resolve::ResolvedGraph& graph, const ResolvedInput& in, ir::ExprId v) {
+  const std::string qualified = fmt::format("{}.{}", graph.name(), in.name);
+  // Unqualified, the name is the shading node's when it has an input of that name.
+  const bool shaderHasIt = shaderNode && shaderNode->findInput(in.name);
+  auto names = [&](const std::string& name) { return name == qualified || (!shaderHasIt && name == in.name); };
+  bool recorded = false;
+  for (const ir::GraphInput& g : material.graphInputs) recorded = recorded || g.qualified == qualified;
+  if (!recorded) material.graphInputs.push_back({qualified, std::string(in.name), std::string(in.type)});
+  for (const auto& [name, text] : options.overrides) {
+    if (!names(name)) continue;
+    // A value not of the input's type is reported once, at the argument (checkUserInputs).
+    if (std::optional<doc::Value> parsed = doc::tryParseValue(doc::valueTypeOf(in.type), text)) {
+      v = material.exprs.constant(*parsed);
+    }
+  }
+  bool variable = false;
+  for (const std::string& name : options.parameters) variable = variable || names(name);
+  if (variable && v != ir::kNoExpr && !material.exprs.isConstant(v)) {
+    if (reportedParameters_.insert(qualified).second) {
+      error(in.location, fmt::format("--param {}: the graph's input is connected; only an input with a value can be a "
+                                     "parameter", qualified));
+    }
+    variable = false;
+  }
+  // --param-all and --no-specialize keep the shading node's inputs, not the graphs': a graph
+  // input often scales texture coordinates, and on lavapipe (Mesa 22.3) the screen derivatives
+  // of a coordinate computed from a parameter pick the wrong mip level (the image blurs to the
+  // texture's average), so the general shader would not render what the specialized one does.
+  if (!variable || v == ir::kNoExpr) return v;
+  // The uniform's name: p_GRAPH_INPUT, a GLSL identifier (MaterialX names are letters, digits and '_').
+  return keepVariable(fmt::format("p_{}_{}", graph.name(), in.name), in.name, in.location, v, graph.name());
 }
 
 std::string Context::colorspace(const NodeRef& n, std::string_view name) {

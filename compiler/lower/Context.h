@@ -95,7 +95,9 @@ class Context {
   ir::ExprId toWorkingSpace(ir::ExprId color, std::string_view space, SourceLocation where,
                             bool decodedByDevice = false);
   /// The value feeding a resolved input (of a node, a graph interface, or a graph output).
-  ir::ExprId value(const resolve::ResolvedInput& input, Env& env);
+  /// `interfaceOf`: the document-level graph whose interface input `input` is (--set and
+  /// --param reach those as GRAPH.INPUT, or as INPUT when the shading node has no such input).
+  ir::ExprId value(const resolve::ResolvedInput& input, Env& env, const resolve::ResolvedGraph* interfaceOf = nullptr);
   /// The output of a value-typed node.
   ir::ExprId nodeValue(const NodeRef& n, std::string_view output);
   /// The leaves (lib::StructType) of a struct-typed input: its literal, the struct a node graph
@@ -132,6 +134,11 @@ class Context {
   /// The value of a shading-node input with `--set` and `--param` applied; kNoExpr when neither
   /// names it.
   ir::ExprId userInput(const resolve::ResolvedInput& input, ir::ExprId documentValue);
+  /// --set / --param on an interface input of a document-level graph.
+  ir::ExprId graphInput(const resolve::ResolvedGraph& graph, const resolve::ResolvedInput& input, ir::ExprId documentValue);
+  /// Makes `v` the uniform `id` (a kept parameter) from the input `name` at `location`.
+  ir::ExprId keepVariable(const std::string& id, std::string_view name, SourceLocation location, ir::ExprId v,
+                          std::string_view graph = {});
   ir::ExprId applyChannels(ir::ExprId value, std::string_view channels, ir::Type to);
 
   Env top_;

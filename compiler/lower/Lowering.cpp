@@ -120,6 +120,20 @@ std::vector<ir::Material> lowerDocument(const resolve::ResolvedDocument& documen
   return materials;
 }
 
+namespace {
+
+/// The type of the input `name` names in `m` (its shading node's, else a graph interface input's:
+/// GRAPH.INPUT, or INPUT), or empty when it names none.
+std::string_view typeOfUserInput(const ir::Material& m, const std::string& name) {
+  if (const ir::ShaderInput* in = m.shaderInput(name)) return in->type;
+  for (const ir::GraphInput& g : m.graphInputs) {
+    if (g.qualified == name || g.name == name) return g.type;
+  }
+  return {};
+}
+
+}  // namespace
+
 void checkUserInputs(const std::vector<ir::Material>& materials, const LoweringOptions& options,
                      Diagnostics& diagnostics) {
   if (materials.empty()) return;
@@ -133,14 +147,18 @@ void checkUserInputs(const std::vector<ir::Material>& materials, const LoweringO
     if (std::find(done.begin(), done.end(), flag) != done.end()) continue;  // said once
     done.push_back(flag);
     std::vector<const ir::Material*> with, without;
-    for (const ir::Material& m : materials) (m.shaderInput(name) ? with : without).push_back(&m);
+    for (const ir::Material& m : materials) (typeOfUserInput(m, name).empty() ? without : with).push_back(&m);
     if (with.empty()) {
       if (materials.size() == 1) {
         const ir::Material& m = materials.front();
         if (m.shaderInputs.empty()) {
           diagnostics.error({}, fmt::format("{}: material '{}' has no shading node to set it on", flag, m.name));
         } else {
-          diagnostics.error(m.origin.location, fmt::format("{}: <{}> has no input named '{}'", flag, m.shader, name));
+          std::string graphs;
+          for (const ir::GraphInput& g : m.graphInputs) graphs += (graphs.empty() ? "" : ", ") + g.qualified;
+          diagnostics.error(m.origin.location,
+                            fmt::format("{}: <{}> has no input named '{}'{}", flag, m.shader, name,
+                                        graphs.empty() ? std::string() : fmt::format(", nor has a graph it reads (graph inputs: {})", graphs)));
         }
       } else {
         std::vector<std::string> which;
@@ -154,7 +172,7 @@ void checkUserInputs(const std::vector<ir::Material>& materials, const LoweringO
       // The value is checked against each type the input has among the materials (one, as a rule).
       bool bad = false;
       for (const ir::Material* m : with) {
-        const std::string_view type = m->shaderInput(name)->type;
+        const std::string_view type = typeOfUserInput(*m, name);
         doc::ValueError why;
         if (!bad && !doc::tryParseValue(doc::valueTypeOf(type), text, &why)) {
           // The parser's reason, when it says more than that ("expected 3 components, found 2").

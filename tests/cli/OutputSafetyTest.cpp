@@ -252,8 +252,9 @@ TEST(OutputSafety, ASetOfOutputsIsCommittedTogether) {
   r = mxc("compile " + (folder / "two.mtlx").string() + " -q -o " + (folder / "m.spv").string() + " --glsl " +
           (folder / "m.glsl").string());
   EXPECT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"m_first.glsl", "m_first.spv", "m_second.glsl", "m_second.spv",
-                                                        "texdir", "two.mtlx"}));
+  EXPECT_EQ(folder.entries(),
+            (std::vector<std::string>{"m_first.glsl", "m_first.json", "m_first.spv", "m_first.vert.spv", "m_second.glsl",
+                                      "m_second.json", "m_second.spv", "m_second.vert.spv", "texdir", "two.mtlx"}));
 }
 
 TEST(OutputSafety, TerminationSignalsRemoveTemporariesAndCommitNothing) {
@@ -303,11 +304,14 @@ TEST(OutputSafety, ConcurrentWritersOfOnePathAllSucceed) {
 
 TEST(OutputSafety, ALongFileNameIsWritten) {
   // 254 bytes is a legal name (NAME_MAX 255); a temporary named after it plus a suffix is not.
+  // The longest output is the vertex stage beside the SPIR-V (x.vert.spv for x.spv).
   TempFolder folder("long");
-  const std::string name = std::string(250, 'n') + ".spv";
-  CommandRun r = mxc("compile " + corpus(kDefault) + " -q -o " + (folder / name).string());
+  const std::string stem(245, 'n');
+  CommandRun r = mxc("compile " + corpus(kDefault) + " -q -o " + (folder / (stem + ".spv")).string());
   EXPECT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_TRUE(isSpirv(readFileBytes(folder / name)));
+  ASSERT_EQ((stem + ".vert.spv").size(), 254u);
+  EXPECT_TRUE(isSpirv(readFileBytes(folder / (stem + ".vert.spv"))));
+  EXPECT_TRUE(isSpirv(readFileBytes(folder / (stem + ".spv"))));
 }
 
 // --- Options checked before the work ------------------------------------------------------

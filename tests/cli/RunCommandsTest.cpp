@@ -205,6 +205,42 @@ TEST(CompileCommand, WritesTheInterfaceVertexStageAndTablesForAHost) {
   EXPECT_FALSE(fs::exists(folder / "c.vert.spv"));
 }
 
+// --set and --param reach the interface inputs of a document's node graphs: brick_color of
+// NG_BrickPattern, unqualified (the shading node has no brick_color) or as GRAPH.INPUT.
+TEST(CompileCommand, SetAndParamReachAGraphsInterfaceInputs) {
+  const std::string brick = corpus("materialx/examples/StandardSurface/standard_surface_brick_procedural.mtlx");
+  // Kept variable, the graph's input is a parameter named after the graph and the input, whose
+  // default is the --set value (unqualified) or the document's.
+  TempFolder folder("graph_param");
+  auto defaultOf = [&](const std::string& arguments) {
+    CommandRun run = mxc("compile " + brick + " " + arguments + " -o " + (folder / "b.spv").string());
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    const nlohmann::json j = nlohmann::json::parse(readAll(folder / "b.json"));
+    for (const auto& d : j["descriptors"]) {
+      if (d["name"] != "MxcParameters") continue;
+      for (const auto& m : d["members"]) {
+        if (m.contains("graph") && m["graph"] == "NG_BrickPattern" && m["input"] == "brick_color") {
+          return m["default"].get<std::vector<float>>();
+        }
+      }
+    }
+    return std::vector<float>{};
+  };
+  EXPECT_EQ(defaultOf("--param NG_BrickPattern.brick_color --set brick_color=0.125,0.5,0.875"),
+            (std::vector<float>{0.125f, 0.5f, 0.875f}));
+  const std::vector<float> document = defaultOf("--param brick_color");
+  ASSERT_EQ(document.size(), 3u) << "found by its unqualified name too";
+  EXPECT_NEAR(document[0], 0.661876f, 1e-5f) << "the document's brick_color";
+  CommandRun r;
+  r = mxc("compile " + brick + " --set NG_BrickPattern.brick_color=red");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("error: --set NG_BrickPattern.brick_color=red: 'red' is not a color3"), std::string::npos) << r.err;
+  r = mxc("compile " + brick + " --set nonsense=1");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("graph inputs: "), std::string::npos) << "the error lists what can be set: " << r.err;
+  EXPECT_NE(r.err.find("NG_BrickPattern.brick_color"), std::string::npos) << r.err;
+}
+
 // A document of definitions or node graphs only is valid and has nothing to compile: compile
 // says so and succeeds, writing nothing; render, which needs a shader, refuses it.
 TEST(CompileCommand, ADocumentWithoutAShaderHasNothingToCompile) {
