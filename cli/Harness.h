@@ -24,7 +24,6 @@ namespace mxc::cli {
 struct DeviceOptions {
   std::string device;       ///< --device: index or part of a name
   bool validation = false;  ///< --validation: Khronos validation layer on; a message fails the run
-  bool listDevices = false;
 };
 
 

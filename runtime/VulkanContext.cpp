@@ -87,22 +87,6 @@ VkInstance createInstance(bool validation, std::vector<std::string>* messages, V
 
 }  // namespace
 
-std::vector<std::string> VulkanContext::listDevices() {
-  VkInstance instance = createInstance(false, nullptr, nullptr);
-  uint32_t count = 0;
-  vkEnumeratePhysicalDevices(instance, &count, nullptr);
-  std::vector<VkPhysicalDevice> devices(count);
-  vkEnumeratePhysicalDevices(instance, &count, devices.data());
-  std::vector<std::string> out;
-  for (uint32_t i = 0; i < count; ++i) {
-    VkPhysicalDeviceProperties p;
-    vkGetPhysicalDeviceProperties(devices[i], &p);
-    out.push_back(fmt::format("{}: {} ({})", i, p.deviceName, typeName(p.deviceType)));
-  }
-  vkDestroyInstance(instance, nullptr);
-  return out;
-}
-
 std::vector<std::string> VulkanContext::describeDevices() {
   VkInstance instance = VK_NULL_HANDLE;
   try {

@@ -65,8 +65,6 @@ class VulkanContext {
   const std::string& deviceName() const { return deviceName_; }
   /// The largest width or height of a 2D image the device takes (VkPhysicalDeviceLimits).
   uint32_t maxImageDimension2D() const { return maxImageDimension2D_; }
-  /// Every device the loader sees, "index: name (type)".
-  static std::vector<std::string> listDevices();
   /// Each device as "INDEX: NAME (TYPE), Vulkan X.Y.Z, DRIVER DRIVER-INFO" (the driver from
   /// VK_KHR_driver_properties where the device has it: "llvmpipe Mesa 22.3.6 (LLVM 15.0.6)"),
   /// or why Vulkan cannot be used.

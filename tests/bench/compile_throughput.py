@@ -42,15 +42,17 @@ BATCH_FOLDERS = ["materialx/examples", "openpbr-presets"]
 GENERATOR = r'''
 import sys
 from pathlib import Path
+sys.path.insert(0, sys.argv[1])
+from materialx_compare import materialx_context
 import MaterialX as mx
 import MaterialX.PyMaterialXGenGlsl as mx_glsl
 import MaterialX.PyMaterialXGenShader as mx_gen
-out = Path(sys.argv[1])
+out = Path(sys.argv[2])
 library = mx.createDocument()
 search_path = mx.getDefaultDataSearchPath()
 mx.loadLibraries(mx.getDefaultDataLibraryFolders(), search_path, library)
 written = 0
-for path in sys.argv[2:]:
+for path in sys.argv[3:]:
     doc = mx.createDocument()
     mx.readFromXmlFile(doc, path)
     mx.flattenFilenames(doc, mx.FileSearchPath(str(Path(path).parent)))
@@ -60,15 +62,7 @@ for path in sys.argv[2:]:
         cms = mx_gen.DefaultColorManagementSystem.create(generator.getTarget())
         cms.loadLibrary(library)
         generator.setColorManagementSystem(cms)
-        context = mx_gen.GenContext(generator)
-        context.registerSourceCodeSearchPath(search_path)
-        options = context.getOptions()
-        options.hwSpecularEnvironmentMethod = mx_gen.HwSpecularEnvironmentMethod.SPECULAR_ENVIRONMENT_NONE
-        options.hwMaxActiveLightSources = 1
-        options.hwSrgbEncodeOutput = False
-        options.hwTransparency = False
-        options.targetColorSpaceOverride = "lin_rec709"
-        mx_gen.HwShaderGenerator.bindLightShader(library.getNodeDef("ND_directional_light"), 1, context)
+        context = materialx_context(generator, library, search_path)
         shader = generator.generate(element.getName(), element, context)
         pixel = shader.getSourceCode(mx_gen.PIXEL_STAGE)
         if "u_refractionTwoSided" in pixel and "bool u_refractionTwoSided" not in pixel:
@@ -93,7 +87,8 @@ def materialx_run(python: Path, documents, jobs: int):
     with tempfile.TemporaryDirectory() as scratch:
         out = Path(scratch)
         start = time.perf_counter()
-        generated = subprocess.run([str(python), "-c", GENERATOR, str(out)] + list(documents), check=True,
+        here = str(Path(__file__).resolve().parent)
+        generated = subprocess.run([str(python), "-c", GENERATOR, here, str(out)] + list(documents), check=True,
                                    capture_output=True, text=True)
         count = int(generated.stdout.strip().splitlines()[-1])
 

@@ -140,6 +140,23 @@ def venv_python(build: Path) -> Path:
     return python
 
 
+def materialx_context(generator, library, search_path):
+    """A GenContext with the options of this comparison (see the module's comment). Runs inside
+    the venv (MaterialX imported by the caller); compile_throughput.py uses it too."""
+    import MaterialX.PyMaterialXGenShader as mx_gen
+
+    context = mx_gen.GenContext(generator)
+    context.registerSourceCodeSearchPath(search_path)
+    options = context.getOptions()
+    options.hwSpecularEnvironmentMethod = mx_gen.HwSpecularEnvironmentMethod.SPECULAR_ENVIRONMENT_NONE
+    options.hwMaxActiveLightSources = 1
+    options.hwSrgbEncodeOutput = False
+    options.hwTransparency = False
+    options.targetColorSpaceOverride = "lin_rec709"
+    mx_gen.HwShaderGenerator.bindLightShader(library.getNodeDef("ND_directional_light"), 1, context)
+    return context
+
+
 def generate(documents, out_dir: Path, repeat: int) -> dict:
     """Runs inside the venv: MaterialX's Vulkan GLSL for each document, timed."""
     import MaterialX as mx
@@ -153,16 +170,7 @@ def generate(documents, out_dir: Path, repeat: int) -> dict:
     library_ms = 1000 * (time.perf_counter() - start)
 
     def new_context(generator):
-        context = mx_gen.GenContext(generator)
-        context.registerSourceCodeSearchPath(search_path)
-        options = context.getOptions()
-        options.hwSpecularEnvironmentMethod = mx_gen.HwSpecularEnvironmentMethod.SPECULAR_ENVIRONMENT_NONE
-        options.hwMaxActiveLightSources = 1
-        options.hwSrgbEncodeOutput = False
-        options.hwTransparency = False
-        options.targetColorSpaceOverride = "lin_rec709"
-        mx_gen.HwShaderGenerator.bindLightShader(library.getNodeDef("ND_directional_light"), 1, context)
-        return context
+        return materialx_context(generator, library, search_path)
 
     materials = []
     for relative in documents:
