@@ -92,9 +92,9 @@ void addInputOptions(CLI::App& command, MaterialOptions& options) {
           },
           ""));
   command.add_flag("--param-all", options.parameterAll,
-                   "Keep every input of the shading node that has a value a uniform of the shader (each named in the "
-                   "interface JSON with its input), as a general-purpose generator does; an effect an input can turn "
-                   "on stays compiled in");
+                   "Keep every input of the material that has a value (the shading node's and its graphs' interface "
+                   "inputs) a uniform of the shader, each named in the interface JSON with its input, as a "
+                   "general-purpose generator does; an effect an input can turn on stays compiled in");
   command.add_flag("--no-specialize", options.noSpecialize,
                    "Compile the general shader, for comparison: every input of the shading node a uniform, every "
                    "effect of the shading model and the library's refraction and absorption code compiled in, and "

@@ -173,7 +173,14 @@ std::string ExprEmitter::emit(ExprId id) {
     case Op::Texture: return ref(id);
     case Op::Local: return m_.exprs.text(id);  // the back end's own value, by its GLSL
     case Op::Parameter:
-      value = fmt::format("mxc_params.{}", m_.exprs.text(id));
+      // Read through subgroupBroadcastFirst: a parameter is the same for every invocation, and
+      // lavapipe (Mesa 22.3) gives helper invocations 0 for a storage-buffer load, so a texture
+      // coordinate computed from a parameter had wrong screen derivatives (the texture blurred to
+      // its average). The broadcast gives every invocation of the subgroup the value. Matrices
+      // are read as they are (the operation takes scalars and vectors).
+      value = e.type == Type::Mat3 || e.type == Type::Mat4
+                  ? fmt::format("mxc_params.{}", m_.exprs.text(id))
+                  : fmt::format("subgroupBroadcastFirst(mxc_params.{})", m_.exprs.text(id));
       parameters_.emplace(m_.exprs.text(id), e.type);
       break;
     case Op::GeomProp: {
@@ -299,7 +306,7 @@ std::string ExprEmitter::emit(ExprId id) {
       size_t k = textures_.size() - 1;
       for (size_t t = 0; t < textures_.size(); ++t) k = textures_[t].name == sampler ? t : k;
       std::string sample =
-          fmt::format("mxc_sample_image({}, {}, {}, {}, {}, {}, (mxc_params.missing_textures & {}u) != 0u)", sampler,
+          fmt::format("mxc_sample_image({}, {}, {}, {}, {}, {}, (subgroupBroadcastFirst(mxc_params.missing_textures) & {}u) != 0u)", sampler,
                       a(1), fallback4, addressMode(modes[0]), addressMode(modes[1]), filterMode(modes[2]),
                       1u << (k % 32));
       value = n == 1 ? sample + ".r" : n == 2 ? sample + ".rg" : n == 3 ? sample + ".rgb" : sample;

@@ -232,6 +232,9 @@ json shaderInterfaceJson(const ir::Material& material, const MaterialShader& sha
                                            "hash, then width x height RGBA float32 texels, row by row, little-endian"},
                                 {"width", kTableSize},
                                 {"height", kTableHeight}}});
+  // Parameters are read through subgroupBroadcastFirst (ExprEmitter, Op::Parameter).
+  out["requires"] = json::array({"Vulkan 1.1 subgroups with the ballot operations (VK_SUBGROUP_FEATURE_BALLOT_BIT) in "
+                                 "the shader's stage"});
   out["lobes"] = iface.lobes;
   return out;
 }

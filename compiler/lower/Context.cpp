@@ -227,10 +227,10 @@ ir::ExprId Context::graphInput(const resolve::ResolvedGraph& graph, const Resolv
     }
     variable = false;
   }
-  // --param-all and --no-specialize keep the shading node's inputs, not the graphs': a graph
-  // input often scales texture coordinates, and on lavapipe (Mesa 22.3) the screen derivatives
-  // of a coordinate computed from a parameter pick the wrong mip level (the image blurs to the
-  // texture's average), so the general shader would not render what the specialized one does.
+  // --param-all and --no-specialize: every input of the material with a value, the graphs' too.
+  if (options.everyInputVariable && v != ir::kNoExpr && material.exprs.isConstant(v) && b.type(v) != ir::Type::String) {
+    variable = true;
+  }
   if (!variable || v == ir::kNoExpr) return v;
   // The uniform's name: p_GRAPH_INPUT, a GLSL identifier (MaterialX names are letters, digits and '_').
   return keepVariable(fmt::format("p_{}_{}", graph.name(), in.name), in.name, in.location, v, graph.name());

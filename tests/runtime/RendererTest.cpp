@@ -231,6 +231,60 @@ TEST(Renderer, UdimTilesAreChosenByTheTextureCoordinate) {
   EXPECT_NEAR(outside / first, 2.0f, 1e-3f);
 }
 
+// A texture coordinate scaled by a parameter (a graph input kept by --param) renders as the same
+// coordinate scaled by the constant: the mip level comes from the coordinate's screen
+// derivatives, which on lavapipe were wrong while helper invocations read the parameter as 0
+// (parameters are now read through subgroupBroadcastFirst).
+TEST(Renderer, AParameterScaledTextureCoordinateFiltersAsAConstantOne) {
+  const fs::path folder = fs::temp_directory_path() / ("mxc_test_param_uv_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  rt::RgbaImage checker{64, 64, std::vector<float>(64 * 64 * 4, 1.0f)};
+  for (uint32_t y = 0; y < 64; ++y) {
+    for (uint32_t x = 0; x < 64; ++x) {
+      const float v = ((x / 8 + y / 8) % 2 == 0) ? 1.0f : 0.0f;
+      for (int c = 0; c < 3; ++c) checker.pixels[4 * (y * 64 + x) + c] = v;
+    }
+  }
+  ASSERT_EQ(rt::writeImage(folder / "checker.exr", checker), std::nullopt);
+  const std::string body =
+      "  <nodegraph name=\"G\">\n"
+      "    <input name=\"tile\" type=\"float\" value=\"2\"/>\n"
+      "    <texcoord name=\"uv\" type=\"vector2\"/>\n"
+      "    <multiply name=\"m\" type=\"vector2\"><input name=\"in1\" type=\"vector2\" nodename=\"uv\"/>"
+      "<input name=\"in2\" type=\"float\" interfacename=\"tile\"/></multiply>\n"
+      "    <image name=\"img\" type=\"color3\"><input name=\"file\" type=\"filename\" value=\"" +
+      (folder / "checker.exr").string() +
+      "\"/><input name=\"texcoord\" type=\"vector2\" nodename=\"m\"/></image>\n"
+      "    <output name=\"out\" type=\"color3\" nodename=\"img\"/>\n"
+      "  </nodegraph>\n"
+      "  <surface_unlit name=\"s\" type=\"surfaceshader\"><input name=\"emission_color\" type=\"color3\" "
+      "nodegraph=\"G\" output=\"out\"/></surface_unlit>\n"
+      "  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" type=\"surfaceshader\" "
+      "nodename=\"s\"/></surfacematerial>\n";
+  auto renderWith = [&](const std::vector<std::string>& parameters) {
+    lower::LoweringOptions options;
+    options.parameters = parameters;
+    Context context;
+    std::vector<ir::Material> materials = lowerText(context, mtlx(body), options);
+    EXPECT_EQ(materials.size(), 1u) << context.diagnostics.format();
+    if (materials.size() != 1) return rt::RgbaImage{};
+    if (!parameters.empty()) {
+      EXPECT_EQ(materials[0].parameters.size(), 1u) << "tile is a parameter";
+    }
+    rt::RenderSettings settings = oneSamplePerPixel();
+    settings.width = settings.height = 96;
+    return render(materials[0], settings, folder);
+  };
+  const rt::RgbaImage constant = renderWith({});
+  const rt::RgbaImage parameter = renderWith({"tile"});
+  fs::remove_all(folder);
+  ASSERT_EQ(constant.pixels.size(), parameter.pixels.size());
+  ASSERT_FALSE(constant.pixels.empty());
+  double largest = 0.0;
+  for (size_t i = 0; i < constant.pixels.size(); ++i) largest = std::max(largest, double(std::abs(constant.pixels[i] - parameter.pixels[i])));
+  EXPECT_LT(largest, 1e-4) << "the same image, to rounding";
+}
+
 // heighttonormal of h = u (u the texture coordinate) with scale 2: dh/du = 1, dh/dv = 0 wherever
 // the sphere is seen, so every pixel has the normal normalize(-2, 0, 1), encoded in [0, 1] — recovered from
 // screen derivatives through the texture coordinate's own (the chain rule), whatever the
