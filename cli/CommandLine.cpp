@@ -518,19 +518,23 @@ int runCommandLine(int argc, char** argv) {
   // The first word that is not an option names the command (mxc has no option that takes a
   // value before it); CLI11 would say only "A subcommand is required" of a misspelt one. The
   // same for `bench`'s own commands.
-  const auto unknown = [](CLI::App& parent, int first, int count, char** words) -> std::optional<std::string> {
+  const auto commands = [](CLI::App& parent) {
+    std::vector<std::string> names;
+    for (const CLI::App* sub : parent.get_subcommands({})) names.push_back(sub->get_name());
+    return names;
+  };
+  const auto unknown = [&](CLI::App& parent, int first, int count, char** words) -> std::optional<std::string> {
     for (int i = first; i < count; ++i) {
       const std::string word = words[i];
       if (word.empty() || word[0] == '-') continue;
-      std::vector<std::string> names;
-      for (const CLI::App* sub : parent.get_subcommands({})) names.push_back(sub->get_name());
+      const std::vector<std::string> names = commands(parent);
       if (std::find(names.begin(), names.end(), word) != names.end()) return std::nullopt;
       return fmt::format("unknown command '{}' (commands: {})", word, fmt::join(names, ", "));
     }
     return std::nullopt;
   };
   std::optional<std::string> problem = unknown(app, 1, argc, argv);
-  if (argc == 1) problem = "no command given (commands: inspect, compile, eval, furnace, render, bench)";
+  if (argc == 1) problem = fmt::format("no command given (commands: {})", fmt::join(commands(app), ", "));
   if (!problem && argc > 1 && std::string(argv[1]) == "bench") problem = unknown(*app.get_subcommand("bench"), 2, argc, argv);
   if (problem) {
     std::fprintf(stderr, "error: %s\nRun with --help for more information.\n", problem->c_str());

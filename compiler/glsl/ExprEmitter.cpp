@@ -44,17 +44,12 @@ std::vector<std::string> split(const std::string& text, char separator) {
   return parts;
 }
 
-/// The code of a MaterialX address mode (compiler/glsl/Contract.h, MXC_ADDRESS_*).
-int addressMode(const std::string& mode) {
-  if (mode == "constant") return int(AddressMode::Constant);
-  if (mode == "clamp") return int(AddressMode::Clamp);
-  if (mode == "mirror") return int(AddressMode::Mirror);
-  return int(AddressMode::Periodic);  // periodic (and hex, sampled periodically)
-}
-
-/// The code of a MaterialX filter type (compiler/glsl/Contract.h, MXC_FILTER_*).
-int filterMode(const std::string& filter) {
-  return int(filter == "closest" ? FilterMode::Closest : FilterMode::Linear);  // cubic is sampled as linear
+/// A MaterialX address mode (compiler/glsl/Contract.h, MXC_ADDRESS_*).
+AddressMode addressMode(const std::string& mode) {
+  if (mode == "constant") return AddressMode::Constant;
+  if (mode == "clamp") return AddressMode::Clamp;
+  if (mode == "mirror") return AddressMode::Mirror;
+  return AddressMode::Periodic;  // periodic (and hex, sampled periodically)
 }
 
 /// The GLSL of a geometric property, by geompropdef name.
@@ -89,6 +84,24 @@ std::string geomprop(const std::string& name, Type type, const std::string& fall
 }
 
 }  // namespace
+
+ImageSampling imageSampling(const std::string& payload) {
+  std::vector<std::string> modes = split(payload, ',');
+  while (modes.size() < 4) modes.emplace_back();
+  // MaterialX filter types: cubic is sampled as linear (compiler/glsl/Contract.h, MXC_FILTER_*).
+  return {addressMode(modes[0]), addressMode(modes[1]), modes[2] == "closest" ? FilterMode::Closest : FilterMode::Linear,
+          modes[3]};
+}
+
+std::string_view addressModeName(AddressMode mode) {
+  switch (mode) {
+    case AddressMode::Constant: return "constant";
+    case AddressMode::Clamp: return "clamp";
+    case AddressMode::Periodic: return "periodic";
+    case AddressMode::Mirror: return "mirror";
+  }
+  return "periodic";
+}
 
 ExprEmitter::ExprEmitter(const ir::Material& material, uint32_t firstTexture) : m_(material), nextTexture_(firstTexture) {
   // Origins: each expression gets the location of the first parameter reaching it.
@@ -292,9 +305,8 @@ std::string ExprEmitter::emit(ExprId id) {
     case Op::Flake: procedural_ = true; value = fmt::format("mxc_flake({}, {})", a(0), a(1)); break;
     case Op::ImageSample: {
       procedural_ = true;
-      std::vector<std::string> modes = split(m_.exprs.text(id), ',');
-      while (modes.size() < 4) modes.push_back("");
-      std::string sampler = texture(m_.exprs.text(args[0]), modes[3]);
+      const ImageSampling sampling = imageSampling(m_.exprs.text(id));
+      std::string sampler = texture(m_.exprs.text(args[0]), sampling.colorspace);
       std::string fallback = a(2);
       const int n = ir::componentCount(e.type);
       std::string fallback4 = n == 1   ? fmt::format("vec4({})", fallback)
@@ -307,7 +319,7 @@ std::string ExprEmitter::emit(ExprId id) {
       for (size_t t = 0; t < textures_.size(); ++t) k = textures_[t].name == sampler ? t : k;
       std::string sample =
           fmt::format("mxc_sample_image({}, {}, {}, {}, {}, {}, (subgroupBroadcastFirst(mxc_params.missing_textures) & {}u) != 0u)", sampler,
-                      a(1), fallback4, addressMode(modes[0]), addressMode(modes[1]), filterMode(modes[2]),
+                      a(1), fallback4, int(sampling.uaddress), int(sampling.vaddress), int(sampling.filter),
                       1u << (k % 32));
       value = n == 1 ? sample + ".r" : n == 2 ? sample + ".rg" : n == 3 ? sample + ".rgb" : sample;
       break;

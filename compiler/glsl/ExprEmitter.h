@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "compiler/glsl/Contract.h"
 #include "compiler/ir/Material.h"
 #include "compiler/spirv/SpirvCompiler.h"
 
@@ -36,6 +37,18 @@ struct Lines {
 };
 
 std::string glslType(ir::Type type);
+
+/// How an image sample reads its texture: Op::ImageSample's payload
+/// "uaddress,vaddress,filtertype,colorspace" as MaterialX writes the modes.
+struct ImageSampling {
+  AddressMode uaddress = AddressMode::Periodic;
+  AddressMode vaddress = AddressMode::Periodic;
+  FilterMode filter = FilterMode::Linear;
+  std::string colorspace;  ///< the file input's colour space
+};
+ImageSampling imageSampling(const std::string& payload);
+/// MaterialX's name of an address mode ("constant", "clamp", "periodic", "mirror").
+std::string_view addressModeName(AddressMode mode);
 /// A float as a GLSL literal that always reads as a float ("1.0", "0.5", "1e-07").
 std::string glslFloat(float value);
 

@@ -109,10 +109,6 @@ std::vector<UniformField> parameterLayout(const ir::Material& material, const Ex
   return fields;
 }
 
-std::string fieldType(const UniformField& f) {
-  if (f.name == "missing_textures") return "uint";
-  return glslType(f.type);
-}
 
 void header(Writer& w, const ir::Material& material, std::string_view purpose) {
   w.line("#version 450");
@@ -194,7 +190,7 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   w.line("// ---- the material's parameters ----");
   w.line(fmt::format("layout(set = 0, binding = {}, std140) readonly buffer MxcParameters {{", static_cast<uint32_t>(kParameterBinding)));
   for (const UniformField& f : iface.parameters) {
-    w.line(fmt::format("  layout(offset = {}) {} {};", f.offset, fieldType(f), f.name));
+    w.line(fmt::format("  layout(offset = {}) {} {};", f.offset, parameterType(f), f.name));
   }
   w.line("} mxc_params;");
   for (const TextureBinding& t : iface.textures) {
@@ -273,6 +269,11 @@ spirv::GlslSource buildEnvironmentSampleShader() {
 }  // namespace mxc::glsl
 
 namespace mxc::glsl {
+
+std::string parameterType(const UniformField& f) {
+  if (f.name == "missing_textures") return "uint";
+  return glslType(f.type);
+}
 
 std::vector<uint8_t> packParameters(const std::vector<UniformField>& fields, uint32_t bytes) {
   std::vector<uint8_t> out(bytes, 0);

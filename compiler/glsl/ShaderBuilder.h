@@ -86,4 +86,6 @@ namespace mxc::glsl {
 /// The bytes of the parameter block: each field's value at its std140 offset (matrices given
 /// row by row, as ExprGraph::constantComponents lists them, are stored as padded columns).
 std::vector<uint8_t> packParameters(const std::vector<UniformField>& fields, uint32_t bytes);
+/// The GLSL type a parameter block member is declared with (missing_textures is a uint).
+std::string parameterType(const UniformField& field);
 }  // namespace mxc::glsl

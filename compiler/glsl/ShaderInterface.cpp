@@ -5,27 +5,13 @@
 #include "compiler/common/ColorSpace.h"
 #include "compiler/glsl/AlbedoTableFile.h"
 #include "compiler/glsl/Contract.h"
+#include "compiler/glsl/ExprEmitter.h"
 
 namespace mxc::glsl {
 
 namespace {
 
 using nlohmann::json;
-
-std::string_view glslTypeName(ir::Type type) {
-  switch (type) {
-    case ir::Type::Bool: return "bool";
-    case ir::Type::Int: return "int";
-    case ir::Type::Float: return "float";
-    case ir::Type::Vec2: return "vec2";
-    case ir::Type::Vec3: return "vec3";
-    case ir::Type::Vec4: return "vec4";
-    case ir::Type::Mat3: return "mat3";
-    case ir::Type::Mat4: return "mat4";
-    case ir::Type::String: return "string";
-  }
-  return "?";
-}
 
 /// A std140 block of the contract (MxcView, MxcBatch): each member with its offset.
 json blockMembers(std::span<const Member> members) {
@@ -43,34 +29,18 @@ json blockMembers(std::span<const Member> members) {
 
 uint32_t blockSize(std::span<const Member> members) { return std140Layout(members).size; }
 
-std::string_view addressName(const std::string& mode) {
-  if (mode == "constant" || mode == "clamp" || mode == "mirror") return mode;
-  return "periodic";  // MaterialX's default (and "hex", sampled periodically)
-}
-
 /// How the shader addresses and filters a texture: from the image samples of the IR that read
 /// it (the shader applies them itself; several samples may read one file differently).
 json textureSampling(const ir::Material& material, const TextureBinding& binding) {
   json uses = json::array();
   for (ir::ExprId id = 0; id < material.exprs.size(); ++id) {
     if (material.exprs[id].op != ir::Op::ImageSample) continue;
-    const ir::ExprId file = material.exprs.arg(id, 0);
-    if (material.exprs.text(file) != binding.path) continue;
-    std::vector<std::string> modes;
-    std::string mode;
-    for (char c : material.exprs.text(id) + ",") {
-      if (c == ',') {
-        modes.push_back(mode);
-        mode.clear();
-      } else {
-        mode += c;
-      }
-    }
-    while (modes.size() < 4) modes.emplace_back();
-    if (modes[3] != binding.colorspace) continue;
-    json use{{"uaddress", addressName(modes[0])},
-             {"vaddress", addressName(modes[1])},
-             {"filter", modes[2] == "closest" ? "closest" : "linear"}};
+    if (material.exprs.text(material.exprs.arg(id, 0)) != binding.path) continue;
+    const ImageSampling sampling = imageSampling(material.exprs.text(id));
+    if (sampling.colorspace != binding.colorspace) continue;
+    json use{{"uaddress", addressModeName(sampling.uaddress)},
+             {"vaddress", addressModeName(sampling.vaddress)},
+             {"filter", sampling.filter == FilterMode::Closest ? "closest" : "linear"}};
     if (std::find(uses.begin(), uses.end(), use) == uses.end()) uses.push_back(std::move(use));
   }
   return uses;
@@ -139,7 +109,7 @@ json shaderInterfaceJson(const ir::Material& material, const MaterialShader& sha
   json parameters = json::array();
   for (const UniformField& f : iface.parameters) {
     json member{{"name", f.name},
-                {"type", f.name == "missing_textures" ? std::string_view("uint") : glslTypeName(f.type)},
+                {"type", parameterType(f)},
                 {"offset", f.offset},
                 {"default", f.value}};
     if (f.name == "missing_textures") member["meaning"] = "bit k set: texture k could not be read, the image node's default is used";

@@ -165,8 +165,30 @@ ir::ExprId Context::value(const ResolvedInput& in, Env& env, const resolve::Reso
 }
 
 ir::ExprId Context::userInput(const ResolvedInput& in, ir::ExprId v) {
+  return applyUserInput(in, v,
+                        {{}, true, "p_" + std::string(in.name), {}, shaderNode->node->location,
+                         "the input is connected to a node graph"});
+}
+
+ir::ExprId Context::graphInput(const resolve::ResolvedGraph& graph, const ResolvedInput& in, ir::ExprId v) {
+  const std::string qualified = fmt::format("{}.{}", graph.name(), in.name);
+  bool recorded = false;
+  for (const ir::GraphInput& g : material.graphInputs) recorded = recorded || g.qualified == qualified;
+  if (!recorded) material.graphInputs.push_back({qualified, std::string(in.name), std::string(in.type)});
+  // Unqualified, the name is the shading node's when it has an input of that name. The uniform's
+  // name, p_GRAPH_INPUT, is a GLSL identifier (MaterialX names are letters, digits and '_').
+  const bool shaderHasIt = shaderNode && shaderNode->findInput(in.name);
+  return applyUserInput(in, v,
+                        {qualified, !shaderHasIt, fmt::format("p_{}_{}", graph.name(), in.name), graph.name(),
+                         in.location, "the graph's input is connected"});
+}
+
+ir::ExprId Context::applyUserInput(const ResolvedInput& in, ir::ExprId v, const UserInput& u) {
+  auto names = [&](const std::string& name) {
+    return (!u.qualified.empty() && name == u.qualified) || (u.plainName && name == in.name);
+  };
   for (const auto& [name, text] : options.overrides) {
-    if (name != in.name) continue;
+    if (!names(name)) continue;
     // A value that does not parse as the input's type is reported once for the whole run, at
     // the argument (lower::checkUserInputs); the document's value stays.
     if (std::optional<doc::Value> parsed = doc::tryParseValue(doc::valueTypeOf(in.type), text)) {
@@ -174,66 +196,30 @@ ir::ExprId Context::userInput(const ResolvedInput& in, ir::ExprId v) {
     }
   }
   bool variable = false;
-  for (const std::string& name : options.parameters) variable = variable || name == in.name;
-  if (variable && v != ir::kNoExpr && !material.exprs.isConstant(v)) {
-    // Reported once per input, however often the lowering reads it.
-    if (reportedParameters_.insert(std::string(in.name)).second) {
-      error(shaderNode->node->location,
-            fmt::format("--param {}: the input is connected to a node graph; only an input with a value can be a parameter",
-                        in.name));
-    }
-    variable = false;
-  }
-  // --no-specialize: every input with a value, not a string (names, enumerations, file names).
-  if (options.everyInputVariable && v != ir::kNoExpr && material.exprs.isConstant(v) && b.type(v) != ir::Type::String) {
-    variable = true;
-  }
-  if (variable && v != ir::kNoExpr) v = keepVariable("p_" + std::string(in.name), in.name, in.location, v);
-  return v;
-}
-
-ir::ExprId Context::keepVariable(const std::string& id, std::string_view name, SourceLocation location, ir::ExprId v,
-                                 std::string_view graph) {
-  const ir::Type type = b.type(v);
-  bool known = false;
-  for (const ir::Parameter& p : material.parameters) known = known || p.name == id;
-  if (!known) {
-    material.parameters.push_back({id, type, material.exprs.constantComponents(v), {location, name}, std::string(graph)});
-  }
-  return material.exprs.named(ir::Op::Parameter, type, id);
-}
-
-ir::ExprId Context::graphInput(const resolve::ResolvedGraph& graph, const ResolvedInput& in, ir::ExprId v) {
-  const std::string qualified = fmt::format("{}.{}", graph.name(), in.name);
-  // Unqualified, the name is the shading node's when it has an input of that name.
-  const bool shaderHasIt = shaderNode && shaderNode->findInput(in.name);
-  auto names = [&](const std::string& name) { return name == qualified || (!shaderHasIt && name == in.name); };
-  bool recorded = false;
-  for (const ir::GraphInput& g : material.graphInputs) recorded = recorded || g.qualified == qualified;
-  if (!recorded) material.graphInputs.push_back({qualified, std::string(in.name), std::string(in.type)});
-  for (const auto& [name, text] : options.overrides) {
-    if (!names(name)) continue;
-    // A value not of the input's type is reported once, at the argument (checkUserInputs).
-    if (std::optional<doc::Value> parsed = doc::tryParseValue(doc::valueTypeOf(in.type), text)) {
-      v = material.exprs.constant(*parsed);
-    }
-  }
-  bool variable = false;
   for (const std::string& name : options.parameters) variable = variable || names(name);
   if (variable && v != ir::kNoExpr && !material.exprs.isConstant(v)) {
-    if (reportedParameters_.insert(qualified).second) {
-      error(in.location, fmt::format("--param {}: the graph's input is connected; only an input with a value can be a "
-                                     "parameter", qualified));
+    // Reported once per input, however often the lowering reads it.
+    const std::string reported = u.qualified.empty() ? std::string(in.name) : u.qualified;
+    if (reportedParameters_.insert(reported).second) {
+      error(u.errorAt,
+            fmt::format("--param {}: {}; only an input with a value can be a parameter", reported, u.connected));
     }
     variable = false;
   }
-  // --param-all and --no-specialize: every input of the material with a value, the graphs' too.
+  // --param-all and --no-specialize: every input with a value, not a string (names,
+  // enumerations, file names).
   if (options.everyInputVariable && v != ir::kNoExpr && material.exprs.isConstant(v) && b.type(v) != ir::Type::String) {
     variable = true;
   }
   if (!variable || v == ir::kNoExpr) return v;
-  // The uniform's name: p_GRAPH_INPUT, a GLSL identifier (MaterialX names are letters, digits and '_').
-  return keepVariable(fmt::format("p_{}_{}", graph.name(), in.name), in.name, in.location, v, graph.name());
+  const ir::Type type = b.type(v);
+  bool known = false;
+  for (const ir::Parameter& p : material.parameters) known = known || p.name == u.id;
+  if (!known) {
+    material.parameters.push_back(
+        {u.id, type, material.exprs.constantComponents(v), {in.location, in.name}, std::string(u.graph)});
+  }
+  return material.exprs.named(ir::Op::Parameter, type, u.id);
 }
 
 std::string Context::colorspace(const NodeRef& n, std::string_view name) {

@@ -136,9 +136,18 @@ class Context {
   ir::ExprId userInput(const resolve::ResolvedInput& input, ir::ExprId documentValue);
   /// --set / --param on an interface input of a document-level graph.
   ir::ExprId graphInput(const resolve::ResolvedGraph& graph, const resolve::ResolvedInput& input, ir::ExprId documentValue);
-  /// Makes `v` the uniform `id` (a kept parameter) from the input `name` at `location`.
-  ir::ExprId keepVariable(const std::string& id, std::string_view name, SourceLocation location, ir::ExprId v,
-                          std::string_view graph = {});
+  /// An input --set and --param may reach: the names they give it, the uniform it becomes when
+  /// kept, and where an input that cannot be kept is reported.
+  struct UserInput {
+    std::string qualified;  ///< "GRAPH.INPUT" for a graph's interface input, else empty
+    bool plainName = true;  ///< the input's own name reaches it too
+    std::string id;         ///< the uniform ("p_base_color", "p_NG_BrickPattern_brick_color")
+    std::string_view graph;  ///< the graph of an interface input, else empty
+    SourceLocation errorAt;
+    std::string_view connected;  ///< why a connected input cannot be a parameter, for the message
+  };
+  /// --set, --param, --param-all and --no-specialize on the input `in` whose document value is `v`.
+  ir::ExprId applyUserInput(const resolve::ResolvedInput& in, ir::ExprId v, const UserInput& u);
   ir::ExprId applyChannels(ir::ExprId value, std::string_view channels, ir::Type to);
 
   Env top_;
