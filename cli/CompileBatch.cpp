@@ -43,20 +43,6 @@ struct ItemResult {
   std::string messages;  ///< the document's diagnostics and errors, printed together
 };
 
-glsl::ShaderKind kindOf(const std::string& stage) {
-  if (stage == "comp") return glsl::ShaderKind::Eval;
-  if (stage == "furnace") return glsl::ShaderKind::Furnace;
-  if (stage == "sample") return glsl::ShaderKind::Sample;
-  return glsl::ShaderKind::Raster;
-}
-
-/// A material's name as a file name: letters, digits, '-' and '_' kept, anything else '_'.
-std::string fileName(const std::string& material) {
-  std::string out;
-  for (char c : material) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
-  return out.empty() ? "_" : out;
-}
-
 /// The documents the arguments name, in order: a folder's .mtlx files sorted by path.
 std::variant<std::vector<Item>, std::string> collect(const std::vector<std::string>& arguments) {
   std::vector<Item> items;
@@ -122,15 +108,14 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
     }
     scene = std::make_unique<SceneDocuments>(session);
     if (scene->load(std::get<Scene>(read), options.materials, batch.kind, options.optimize) != kOk) return result;
-    for (const SceneObjectSpec& object : std::get<Scene>(read).objects) {
-      auto found = scene->find(object.material);
-      if (auto* why = std::get_if<std::string>(&found)) {
-        session.printLine(fmt::format("{}: error: {}", file, *why));
-        return result;
-      }
-      const auto& hit = std::get<SceneDocuments::Found>(found);
-      const bool known = std::any_of(units.begin(), units.end(), [&](const auto& u) { return u.second == hit.material; });
-      if (!known) units.emplace_back(hit.pipeline, hit.material);
+    // What a single compile of the scene compiles: its objects' materials and its look's.
+    auto used = scene->used(std::get<Scene>(read));
+    if (auto* why = std::get_if<std::string>(&used)) {
+      session.printLine(fmt::format("{}: error: {}", file, *why));
+      return result;
+    }
+    for (const SceneDocuments::Found& hit : std::get<std::vector<SceneDocuments::Found>>(used)) {
+      units.emplace_back(hit.pipeline, hit.material);
     }
   } else {
     single = std::make_unique<MaterialPipeline>(session);
@@ -151,8 +136,8 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
   const std::string glslExtension = batch.kind == glsl::ShaderKind::Raster ? ".frag" : ".comp";
   auto pathsOf = [&](const ir::Material& m) {
     std::pair<fs::path, fs::path> paths;
-    if (!options.output.empty()) paths.first = fs::path(options.output) / item.relative / (fileName(m.name) + ".spv");
-    if (!options.glsl.empty()) paths.second = fs::path(options.glsl) / item.relative / (fileName(m.name) + glslExtension);
+    if (!options.output.empty()) paths.first = fs::path(options.output) / item.relative / (fileSafeName(m.name) + ".spv");
+    if (!options.glsl.empty()) paths.second = fs::path(options.glsl) / item.relative / (fileSafeName(m.name) + glslExtension);
     return paths;
   };
   for (const auto& [pipeline, material] : units) {

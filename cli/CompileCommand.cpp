@@ -22,14 +22,14 @@
 
 namespace mxc::cli {
 
-namespace {
-
 glsl::ShaderKind kindOf(const std::string& stage) {
   if (stage == "comp") return glsl::ShaderKind::Eval;
   if (stage == "furnace") return glsl::ShaderKind::Furnace;
   if (stage == "sample") return glsl::ShaderKind::Sample;
   return glsl::ShaderKind::Raster;
 }
+
+namespace {
 
 
 /// One material to compile, in the pipeline of its document.
@@ -146,26 +146,13 @@ int compileScene(const CompileOptions& options, std::chrono::steady_clock::time_
   Session session;
   SceneDocuments documents(session);
   if (int code = documents.load(scene, options.materials, kindOf(options.stage), options.optimize); code != kOk) return code;
-  // The names: the objects' own, then every assignment of the look, in order, once each.
-  std::vector<std::string> names;
-  auto use = [&](const std::string& name) {
-    if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-  };
-  for (const SceneObjectSpec& object : scene.objects) use(object.material);
-  if (!scene.look.empty() &&
-      !documents.forEachAssign(scene.look, [&](const doc::MaterialAssign& assign) { use(std::string(assign.material)); })) {
-    std::fprintf(stderr, "%s: error: look: no document of the scene has a look named '%s'\n", options.file.c_str(),
-                 scene.look.c_str());
+  auto used = documents.used(scene);
+  if (auto* why = std::get_if<std::string>(&used)) {
+    std::fprintf(stderr, "%s: error: %s\n", options.file.c_str(), why->c_str());
     return kInvalidDocument;
   }
   std::vector<Unit> units;
-  for (const std::string& name : names) {
-    auto found = documents.find(name);
-    if (auto* why = std::get_if<std::string>(&found)) {
-      std::fprintf(stderr, "%s: error: %s\n", options.file.c_str(), why->c_str());
-      return kInvalidDocument;
-    }
-    const auto& hit = std::get<SceneDocuments::Found>(found);
+  for (const SceneDocuments::Found& hit : std::get<std::vector<SceneDocuments::Found>>(used)) {
     units.push_back({hit.pipeline, hit.material});
   }
   if (units.empty()) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/MaterialPipeline.h"
+#include "compiler/glsl/ShaderBuilder.h"
 
 namespace mxc::cli {
 
@@ -23,5 +24,8 @@ struct CompileOptions {
 };
 
 int runCompile(const CompileOptions& options);
+
+/// The shader kind `--stage` names (frag, comp, furnace, sample).
+glsl::ShaderKind kindOf(const std::string& stage);
 
 }  // namespace mxc::cli

@@ -97,12 +97,16 @@ std::optional<std::string> checkStandardOutput(const std::vector<std::string>& o
   return std::nullopt;
 }
 
-std::filesystem::path perMaterialPath(const std::filesystem::path& path, const std::string& material, bool several) {
-  if (!several || path == "-") return path;
+std::string fileSafeName(const std::string& material) {
   std::string safe;
   for (char c : material) safe += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
+  return safe;
+}
+
+std::filesystem::path perMaterialPath(const std::filesystem::path& path, const std::string& material, bool several) {
+  if (!several || path == "-") return path;
   std::filesystem::path out = path;
-  out.replace_filename(fmt::format("{}_{}{}", path.stem().string(), safe, path.extension().string()));
+  out.replace_filename(fmt::format("{}_{}{}", path.stem().string(), fileSafeName(material), path.extension().string()));
   return out;
 }
 

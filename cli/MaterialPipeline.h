@@ -60,6 +60,9 @@ class MaterialPipeline {
 /// more than one material (each needs its own file).
 std::optional<std::string> checkStandardOutput(const std::vector<std::string>& outputs, size_t materials);
 
+/// A material's name as part of a file name: letters, digits, '-' and '_' kept, anything else '_'.
+std::string fileSafeName(const std::string& material);
+
 /// `path` with `_<material>` inserted before its extension, for one output file per material.
 std::filesystem::path perMaterialPath(const std::filesystem::path& path, const std::string& material, bool several);
 

@@ -1,5 +1,7 @@
 #include "cli/SceneDocuments.h"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "cli/ExitCode.h"
@@ -38,6 +40,25 @@ std::variant<SceneDocuments::Found, std::string> SceneDocuments::find(const std:
   if (matches.size() == 1) return matches[0];
   return fmt::format("{} material named '{}'",
                      matches.empty() ? "no document of the scene has a" : "more than one document has a", name);
+}
+
+std::variant<std::vector<SceneDocuments::Found>, std::string> SceneDocuments::used(const Scene& scene) const {
+  std::vector<std::string> names;
+  auto use = [&](const std::string& name) {
+    if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  };
+  for (const SceneObjectSpec& object : scene.objects) use(object.material);
+  if (!scene.look.empty() &&
+      !forEachAssign(scene.look, [&](const doc::MaterialAssign& assign) { use(std::string(assign.material)); })) {
+    return fmt::format("look: no document of the scene has a look named '{}'", scene.look);
+  }
+  std::vector<Found> out;
+  for (const std::string& name : names) {
+    auto found = find(name);
+    if (auto* why = std::get_if<std::string>(&found)) return *why;
+    out.push_back(std::get<Found>(found));
+  }
+  return out;
 }
 
 bool SceneDocuments::forEachAssign(const std::string& look,

@@ -34,6 +34,11 @@ class SceneDocuments {
   /// the scene has a material named 'X'", "more than one document has ...").
   std::variant<Found, std::string> find(const std::string& name) const;
 
+  /// The materials `scene` uses, for `mxc compile` of it: those its objects name, then those its
+  /// look assigns, in order, each once; or why one cannot be had (a look no document has, a
+  /// name no document or several have).
+  std::variant<std::vector<Found>, std::string> used(const Scene& scene) const;
+
   /// Calls `visit` with every <materialassign> of the looks named `look`, document by document
   /// in order; false when no document has such a look.
   bool forEachAssign(const std::string& look, const std::function<void(const doc::MaterialAssign&)>& visit) const;

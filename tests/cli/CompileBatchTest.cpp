@@ -86,6 +86,27 @@ TEST(CompileBatch, RefusesOutputsItCannotSeparate) {
   EXPECT_NE(r.err.find("no such file or folder"), std::string::npos) << r.err;
 }
 
+// A scene in a batch compiles what `mxc compile SCENE` compiles: its objects' materials and
+// those its look assigns (here the objects name none; the look assigns both).
+TEST(CompileBatch, ASceneCompilesTheMaterialsItsLookAssigns) {
+  TempFolder folder("batch_scene");
+  std::string looked = kGood;
+  looked.replace(looked.find("</materialx>"), std::string::npos,
+                 "  <look name=\"Dressed\">\n    <materialassign name=\"a\" geom=\"/left\" material=\"RedPaint\"/>\n"
+                 "    <materialassign name=\"b\" geom=\"/right\" material=\"Plastic\"/>\n  </look>\n</materialx>\n");
+  writeText(folder / "looked.mtlx", looked);
+  writeText(folder / "dressed.json",
+            R"({"mxc_scene": 1, "documents": [")" + (folder / "looked.mtlx").string() +
+                R"("], "look": "Dressed", "objects": [{"name": "left"}, {"name": "right"}]})");
+  writeText(folder / "single.mtlx", kGood);
+  CommandRun r = mxc("compile " + (folder / "dressed.json").string() + " " + (folder / "single.mtlx").string() + " -o " +
+                     (folder / "out").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(folder / "out/dressed/RedPaint.spv"));
+  EXPECT_TRUE(fs::is_regular_file(folder / "out/dressed/Plastic.spv"));
+  EXPECT_NE(r.out.find("compiled 4 material(s) of 2 document(s)"), std::string::npos) << r.out;
+}
+
 // The workers share the libraries and glslang: two of them write exactly the files one writes.
 TEST(CompileBatch, WorkersWriteWhatOneWrites) {
   TempFolder folder("batch_jobs");
