@@ -168,7 +168,9 @@ void registerCompile(CLI::App& app, int& exitCode) {
   auto options = std::make_shared<CompileOptions>();
   CLI::App* command = app.add_subcommand(
       "compile",
-      "Compile the materials of a document to GLSL 4.50 and SPIR-V (validated by SPIRV-Tools). With several "
+      "Compile the materials of a document to SPIR-V (validated by SPIRV-Tools), or with --target to GLSL, ESSL, "
+      "MSL, HLSL (SPIRV-Cross) or WGSL (naga), each validated by its own toolchain where one runs here; beside "
+      "each shader, its interface (.json) and vertex stage for a host renderer. With several "
       "materials, output names get _<material> before their extension. Several documents, folders (every .mtlx "
       "under them) or scenes compile in one process, -j at a time: -o and --glsl then name folders, written as "
       "DIR/<document>/<material>.spv, each document's files together or not at all; a failing document does not "
@@ -176,9 +178,17 @@ void registerCompile(CLI::App& app, int& exitCode) {
   command->add_option("files", options->files, "The .mtlx documents, folders or scene files (.json)")
       ->required()
       ->type_name("FILE|DIR");
-  command->add_option("-o,--output", options->output, "Write the SPIR-V module here (a folder for several documents)")
+  command->add_option("-o,--output", options->output,
+                      "Write the shader here, in --target's language (a folder for several documents)")
       ->type_name("FILE|DIR");
-  command->add_option("--glsl", options->glsl, "Write the GLSL here (a folder for several documents)")
+  command
+      ->add_option("--target", options->target,
+                   "The language -o is written in: spirv (Vulkan 1.1), glsl (OpenGL 4.5), essl (OpenGL ES 3.2), msl "
+                   "(Metal 2.1), hlsl (shader model 6.0) or wgsl (WebGPU). Default: the one -o's extension names "
+                   "(.spv .glsl .essl .metal .hlsl .wgsl), else spirv")
+      ->check(CLI::IsMember(std::vector<std::string>{"spirv", "glsl", "essl", "msl", "hlsl", "wgsl"}));
+  command->add_option("--glsl", options->glsl,
+                      "Write the Vulkan GLSL 4.50 that mxc compiles to SPIR-V here (a folder for several documents)")
       ->type_name("FILE|DIR");
   command->add_option("--tables", options->tables,
                       "Write the albedo tables the shaders sample to this folder (mxc_albedo_tables.bin; the "

@@ -107,7 +107,9 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
       return result;
     }
     scene = std::make_unique<SceneDocuments>(session);
-    if (scene->load(std::get<Scene>(read), options.materials, batch.kind, options.optimize) != kOk) return result;
+    if (scene->load(std::get<Scene>(read), options.materials, batch.kind, options.optimize, options.resolvedTarget) != kOk) {
+      return result;
+    }
     // What a single compile of the scene compiles: its objects' materials and its look's.
     auto used = scene->used(std::get<Scene>(read));
     if (auto* why = std::get_if<std::string>(&used)) {
@@ -123,6 +125,7 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
     request.document = item.file;
     request.stage = batch.kind;
     request.optimize = options.optimize;
+    request.target = options.resolvedTarget;
     request.libraries = batch.libraries;
     if (single->run(std::move(request), options.materials, false) != kOk) return result;
     for (const ir::Material& m : single->materials()) units.emplace_back(single.get(), &m);
@@ -131,25 +134,28 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
     result.outcome = Outcome::Nothing;
     return result;
   }
-  // The outputs: DIR/<document>/<material>.spv and .frag or .comp, declared before the work.
+  // The outputs: DIR/<document>/<material>.spv (or the target's extension) and .frag or .comp,
+  // declared before the work.
   OutputSet outputs;
+  const std::string shaderExtension(target::fileExtension(options.resolvedTarget));
   const std::string glslExtension = batch.kind == glsl::ShaderKind::Raster ? ".frag" : ".comp";
   auto pathsOf = [&](const ir::Material& m) {
     std::pair<fs::path, fs::path> paths;
-    if (!options.output.empty()) paths.first = fs::path(options.output) / item.relative / (fileSafeName(m.name) + ".spv");
+    if (!options.output.empty()) paths.first = fs::path(options.output) / item.relative / (fileSafeName(m.name) + shaderExtension);
     if (!options.glsl.empty()) paths.second = fs::path(options.glsl) / item.relative / (fileSafeName(m.name) + glslExtension);
     return paths;
   };
   for (const auto& [pipeline, material] : units) {
-    for (const fs::path& path : {pathsOf(*material).first, pathsOf(*material).second}) {
+    const auto [shaderPath, glslPath] = pathsOf(*material);
+    for (const fs::path& path : {shaderPath, glslPath}) {
       if (path.empty()) continue;
       std::error_code error;
       fs::create_directories(path.parent_path(), error);
-      if (auto why = outputs.declare(path, path.extension() == ".spv" ? "-o" : "--glsl")) {
+      if (auto why = outputs.declare(path, path == shaderPath ? "-o" : "--glsl")) {
         session.printLine("error: " + *why);
         return result;
       }
-      if (path.extension() == ".spv") {
+      if (path == shaderPath) {
         if (auto why = declareInterfaceOutputs(outputs, path, batch.kind)) {
           session.printLine("error: " + *why);
           return result;
@@ -184,15 +190,17 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
       continue;
     }
     if (!spv.empty()) {
-      std::string bytes(reinterpret_cast<const char*>(words->data()), words->size() * sizeof(uint32_t));
-      if (auto why = outputs.stage(spv, std::move(bytes))) {
-        session.printLine("error: " + *why);
+      std::string error;
+      const Staged staged = stageShaderOutputs(outputs, spv, true, compiler, *material, shader, *words, batch.kind,
+                                               batch.tables, pipeline->documentFolder(), error);
+      session.printDiagnostics();
+      if (staged == Staged::OutputFailed) {
+        session.printLine("error: " + error);
         return result;
       }
-      if (auto why = stageInterfaceOutputs(outputs, spv, *material, shader, batch.kind, batch.tables,
-                                           pipeline->documentFolder())) {
-        session.printLine("error: " + *why);
-        return result;
+      if (staged == Staged::TranslationFailed) {
+        failed = true;
+        continue;
       }
     }
     detail("{}: {}: {} SPIR-V instructions in {:.1f} ms", file, material->name, spirv::instructionCount(*words),

@@ -46,6 +46,7 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
   // Every output is declared and checked before anything is compiled or written.
   OutputSet outputs;
   const glsl::ShaderKind kind = kindOf(options.stage);
+  const target::Target target = options.resolvedTarget;
   // Beside a SPIR-V file, its interface for a host renderer (and the vertex stage of a raster shader).
   const bool interfaces = !options.output.empty() && options.output != "-";
   for (const Unit& unit : units) {
@@ -95,20 +96,36 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
       result = kInvalidDocument;
       continue;
     }
+    size_t lines = 0;
     if (!options.output.empty()) {
-      std::string bytes(reinterpret_cast<const char*>(words->data()), words->size() * sizeof(uint32_t));
       const auto path = perMaterialPath(options.output, material.name, several);
-      if (printError(outputs.stage(path, std::move(bytes)))) return kOutputFailed;
-      if (interfaces && printError(stageInterfaceOutputs(outputs, path, material, shader, kind, tables,
-                                                           unit.pipeline->documentFolder()))) return kOutputFailed;
+      std::string error;
+      stage = std::chrono::steady_clock::now();
+      const Staged staged = stageShaderOutputs(outputs, path, interfaces, compiler, material, shader, *words, kind,
+                                               tables, unit.pipeline->documentFolder(), error, &lines);
+      if (target != target::Target::Spirv) {
+        detail("{}: {} written and checked in {:.1f} ms", material.name, target::targetName(target), millisecondsSince(stage));
+      }
+      session.printDiagnostics();
+      if (staged == Staged::OutputFailed) {
+        printError(error);
+        return kOutputFailed;
+      }
+      if (staged == Staged::TranslationFailed) {
+        result = kInvalidDocument;
+        continue;
+      }
     }
     if (!quiet) {
       std::vector<std::string> lobes;
       shader.interface.lobeKinds.forEach([&](ir::LobeKind k) { lobes.emplace_back(ir::lobeKindName(k)); });
       std::sort(lobes.begin(), lobes.end());
-      std::printf("%s: %s shader, %zu GLSL lines, %zu SPIR-V instructions; lobes %d (%s)%s%s\n", material.name.c_str(),
+      const std::string written = target == target::Target::Spirv || lines == 0
+                                      ? std::string()
+                                      : fmt::format(", {} {} lines", target::targetName(target), lines);
+      std::printf("%s: %s shader, %zu GLSL lines, %zu SPIR-V instructions%s; lobes %d (%s)%s%s\n", material.name.c_str(),
                   std::string(glsl::shaderKindName(kindOf(options.stage))).c_str(),
-                  shader.glsl.origins.size(), spirv::instructionCount(*words), shader.interface.lobes,
+                  shader.glsl.origins.size(), spirv::instructionCount(*words), written.c_str(), shader.interface.lobes,
                   fmt::format("{}", fmt::join(lobes, ", ")).c_str(),
                   shader.interface.textures.empty() ? "" : fmt::format("; {} texture(s)", shader.interface.textures.size()).c_str(),
                   shader.interface.parameters.size() > 3
@@ -145,7 +162,10 @@ int compileScene(const CompileOptions& options, std::chrono::steady_clock::time_
   const Scene& scene = std::get<Scene>(read);
   Session session;
   SceneDocuments documents(session);
-  if (int code = documents.load(scene, options.materials, kindOf(options.stage), options.optimize); code != kOk) return code;
+  if (int code = documents.load(scene, options.materials, kindOf(options.stage), options.optimize, options.resolvedTarget);
+      code != kOk) {
+    return code;
+  }
   auto used = documents.used(scene);
   if (auto* why = std::get_if<std::string>(&used)) {
     std::fprintf(stderr, "%s: error: %s\n", options.file.c_str(), why->c_str());
@@ -165,9 +185,42 @@ int compileScene(const CompileOptions& options, std::chrono::steady_clock::time_
 
 }  // namespace
 
-int runCompile(const CompileOptions& batchOrSingle) {
-  if (isBatch(batchOrSingle)) return runCompileBatch(batchOrSingle);
-  CompileOptions options = batchOrSingle;
+namespace {
+
+/// Decides options.resolvedTarget; a message when --target and -o disagree.
+std::optional<std::string> resolveTarget(CompileOptions& options, bool batch) {
+  // -o's extension, when it names a language (a batch's -o is a folder).
+  const std::string extension = std::filesystem::path(options.output).extension().string();
+  // (A plain value and a flag, not an optional: GCC 12 warns of an optional enum read after a test.)
+  target::Target named = target::Target::Spirv;
+  bool extensionNames = false;
+  if (!batch && options.output != "-") {
+    if (auto t = target::targetOfExtension(extension)) named = *t, extensionNames = true;
+  }
+  if (options.target.empty()) {
+    options.resolvedTarget = named;
+    return std::nullopt;
+  }
+  auto chosen = target::parseTarget(options.target);
+  if (!chosen) return fmt::format("--target {}: not one of {}", options.target, target::targetNames());
+  if (extensionNames && named != *chosen) {
+    return fmt::format("--target {} writes {} but -o {} names a {} file", options.target,
+                       target::fileExtension(*chosen), options.output, target::targetName(named));
+  }
+  options.resolvedTarget = *chosen;
+  return std::nullopt;
+}
+
+}  // namespace
+
+int runCompile(const CompileOptions& given) {
+  CompileOptions options = given;
+  const bool batch = isBatch(options);
+  if (auto why = resolveTarget(options, batch)) {
+    std::fprintf(stderr, "error: %s\n", why->c_str());
+    return kUsage;
+  }
+  if (batch) return runCompileBatch(options);
   options.file = options.files.empty() ? std::string() : options.files.front();
   const auto start = std::chrono::steady_clock::now();
   if (isSceneFile(options.file)) return compileScene(options, start);
@@ -177,6 +230,7 @@ int runCompile(const CompileOptions& batchOrSingle) {
   request.document = options.file;
   request.stage = kindOf(options.stage);
   request.optimize = options.optimize;
+  request.target = options.resolvedTarget;
   // A library of definitions, or a document of only node graphs, is valid and has no shader:
   // said plainly, and not a failure (a batch over MaterialX's test suite meets many).
   if (int code = pipeline.run(std::move(request), options.materials, false); code != kOk) return code;

@@ -7,6 +7,7 @@
 
 #include "cli/MaterialPipeline.h"
 #include "compiler/glsl/ShaderBuilder.h"
+#include "compiler/target/Target.h"
 
 namespace mxc::cli {
 
@@ -18,8 +19,12 @@ struct CompileOptions {
   std::string glsl;
   std::string stage = "frag";
   bool optimize = false;
-  int jobs = 0;
-  std::string tables;  ///< --tables DIR: write the albedo tables the shaders sample  ///< -j: documents compiled at once in a batch (0: one per core)
+  int jobs = 0;        ///< -j: documents compiled at once in a batch (0: one per core)
+  std::string tables;  ///< --tables DIR: write the albedo tables the shaders sample
+  std::string target;  ///< --target as given (empty: from -o's extension, else SPIR-V)
+  /// The language -o is written in: --target, else the one -o's extension names, else SPIR-V
+  /// (set by runCompile).
+  target::Target resolvedTarget = target::Target::Spirv;
   MaterialOptions materials;
 };
 

@@ -1,29 +1,33 @@
 #include "cli/InterfaceOutputs.h"
 
+#include <algorithm>
 #include <mutex>
 #include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "compiler/common/Diagnostic.h"
 #include "compiler/glsl/ShaderInterface.h"
 #include "compiler/spirv/SpirvCompiler.h"
+#include "compiler/target/Target.h"
 
 namespace mxc::cli {
 
 namespace fs = std::filesystem;
 
-fs::path interfacePath(const fs::path& spirv) {
-  fs::path out = spirv;
+fs::path interfacePath(const fs::path& shader) {
+  fs::path out = shader;
   return out.replace_extension(".json");
 }
 
-fs::path vertexPath(const fs::path& spirv) {
-  fs::path out = spirv;
-  return out.replace_extension(".vert.spv");
+fs::path vertexPath(const fs::path& shader) {
+  fs::path out = shader;
+  return out.replace_extension(".vert" + shader.extension().string());
 }
 
-std::optional<std::string> declareInterfaceOutputs(OutputSet& outputs, const fs::path& spirv, glsl::ShaderKind kind) {
-  if (auto why = outputs.declare(interfacePath(spirv), "-o (its interface)")) return why;
-  if (kind == glsl::ShaderKind::Raster) return outputs.declare(vertexPath(spirv), "-o (its vertex stage)");
+std::optional<std::string> declareInterfaceOutputs(OutputSet& outputs, const fs::path& shader, glsl::ShaderKind kind) {
+  if (auto why = outputs.declare(interfacePath(shader), "-o (its interface)")) return why;
+  if (kind == glsl::ShaderKind::Raster) return outputs.declare(vertexPath(shader), "-o (its vertex stage)");
   return std::nullopt;
 }
 
@@ -40,25 +44,79 @@ const std::vector<uint32_t>& vertexStageSpirv() {
   return words;
 }
 
-std::optional<std::string> stageInterfaceOutputs(OutputSet& outputs, const fs::path& spirv, const ir::Material& material,
-                                                 const glsl::MaterialShader& shader, glsl::ShaderKind kind,
-                                                 const fs::path& tables, const fs::path& documentFolder) {
-  const fs::path json = interfacePath(spirv);
+namespace {
+
+std::string bytesOf(const std::vector<uint32_t>& words) {
+  return std::string(reinterpret_cast<const char*>(words.data()), words.size() * sizeof(uint32_t));
+}
+
+/// The interface JSON told which language its stages are in and where that language binds each
+/// descriptor (docs/shader-interface.md, "Targets").
+void describeTarget(nlohmann::json& interface, target::Target target, const std::vector<target::Placement>& placements,
+                    const std::string& fragmentEntry, const std::string& vertexEntry) {
+  interface["target"] = std::string(target::targetName(target));
+  for (auto& [name, stage] : interface["stages"].items()) {
+    stage["entryPoint"] = name == "vertex" ? vertexEntry : fragmentEntry;
+    if (target != target::Target::Spirv) stage.erase("spirv");  // "file" names the target's text
+  }
+  if (target == target::Target::Spirv) return;
+  for (size_t i = 0; i < placements.size() && i < interface["descriptors"].size(); ++i) {
+    interface["descriptors"][i]["target"] = target::placementJson(placements[i], target);
+  }
+  // naga reads no specialization: the WGSL has the defaults, which read the values from MxcView.
+  if (target == target::Target::Wgsl && interface.contains("specializationConstants")) {
+    interface["specializationConstants"] = nlohmann::json::array();
+  }
+}
+
+}  // namespace
+
+Staged stageShaderOutputs(OutputSet& outputs, const fs::path& path, bool interface, Compiler& compiler,
+                          const ir::Material& material, const glsl::MaterialShader& shader,
+                          const std::vector<uint32_t>& words, glsl::ShaderKind kind, const fs::path& tables,
+                          const fs::path& documentFolder, std::string& error, size_t* lines) {
+  const target::Target target = compiler.request().target;
+  const bool raster = kind == glsl::ShaderKind::Raster;
   glsl::InterfaceFiles files;
+  const fs::path json = interfacePath(path);
   // Paths relative to the interface file, so that the folder can be moved whole.
   const fs::path folder = fs::absolute(json).parent_path();
-  files.shader = spirv.filename().string();
+  files.shader = path.filename().string();
   files.documentFolder = fs::absolute(documentFolder).lexically_normal().string();
-  if (kind == glsl::ShaderKind::Raster) files.vertex = vertexPath(spirv).filename().string();
+  if (raster) files.vertex = vertexPath(path).filename().string();
   if (!tables.empty()) files.tables = fs::absolute(tables).lexically_relative(folder).string();
-  const std::string text = glsl::shaderInterfaceJson(material, shader, kind, files).dump(2) + "\n";
-  if (auto why = outputs.stage(json, text)) return why;
-  if (kind == glsl::ShaderKind::Raster) {
-    const std::vector<uint32_t>& words = vertexStageSpirv();
-    std::string bytes(reinterpret_cast<const char*>(words.data()), words.size() * sizeof(uint32_t));
-    if (auto why = outputs.stage(vertexPath(spirv), std::move(bytes))) return why;
+  nlohmann::json description = glsl::shaderInterfaceJson(material, shader, kind, files);
+
+  std::string text = bytesOf(words), vertexText;
+  std::string fragmentEntry = "main", vertexEntry = "main";
+  std::vector<target::Placement> placements;
+  if (target != target::Target::Spirv) {
+    // One placement of the descriptors for both stages, so that they agree.
+    placements = target::placeResources(target::resourcesOfInterface(description), target);
+    const spirv::Stage stage = raster ? spirv::Stage::Fragment : spirv::Stage::Compute;
+    auto translated = compiler.translate(words, stage, placements,
+                                         fmt::format("material {} ({})", material.name, spirv::stageName(stage)));
+    if (!translated) return Staged::TranslationFailed;
+    text = std::move(translated->text);
+    fragmentEntry = translated->entryPoint;
+    if (lines) *lines = static_cast<size_t>(std::count(text.begin(), text.end(), '\n'));
+    if (interface && raster) {
+      auto vertex = compiler.translate(vertexStageSpirv(), spirv::Stage::Vertex, placements, "the vertex stage");
+      if (!vertex) return Staged::TranslationFailed;
+      vertexText = std::move(vertex->text);
+      vertexEntry = vertex->entryPoint;
+    }
+  } else if (interface && raster) {
+    vertexText = bytesOf(vertexStageSpirv());
   }
-  return std::nullopt;
+  if (auto why = outputs.stage(path, std::move(text))) return error = *why, Staged::OutputFailed;
+  if (!interface) return Staged::Ok;
+  describeTarget(description, target, placements, fragmentEntry, vertexEntry);
+  if (auto why = outputs.stage(json, description.dump(2) + "\n")) return error = *why, Staged::OutputFailed;
+  if (raster) {
+    if (auto why = outputs.stage(vertexPath(path), std::move(vertexText))) return error = *why, Staged::OutputFailed;
+  }
+  return Staged::Ok;
 }
 
 std::optional<fs::path> declareTables(OutputSet& outputs, const std::string& folder, std::string& error) {

@@ -8,7 +8,8 @@
 
 namespace mxc::cli {
 
-int SceneDocuments::load(const Scene& scene, MaterialOptions options, glsl::ShaderKind stage, bool optimize) {
+int SceneDocuments::load(const Scene& scene, MaterialOptions options, glsl::ShaderKind stage, bool optimize,
+                         target::Target target) {
   options.material.clear();
   // The scene's own search paths find its documents' images too, after --search-path's.
   for (const std::filesystem::path& folder : scene.searchPaths) options.searchPaths.push_back(folder.string());
@@ -19,6 +20,7 @@ int SceneDocuments::load(const Scene& scene, MaterialOptions options, glsl::Shad
     request.document = document;
     request.stage = stage;
     request.optimize = optimize;
+    request.target = target;
     if (int code = pipelines_.back()->run(std::move(request), options); code != kOk) return code;
   }
   return kOk;

@@ -22,7 +22,8 @@ class SceneDocuments {
   /// Runs the compiler to IR on each document of `scene`, with `options` (every material: the
   /// scene chooses; its accuracy tier when it states one) and the request's `stage` and
   /// `optimize`. Returns kOk, or the exit code to stop with (diagnostics printed).
-  int load(const Scene& scene, MaterialOptions options, glsl::ShaderKind stage, bool optimize);
+  int load(const Scene& scene, MaterialOptions options, glsl::ShaderKind stage, bool optimize,
+           target::Target target = target::Target::Spirv);
 
   std::vector<MaterialPipeline*> pipelines() const;
 

@@ -1,5 +1,7 @@
 #include "compiler/driver/Compiler.h"
 
+#include <fmt/format.h>
+
 #include "compiler/ir/passes/Pass.h"
 #include "compiler/resolve/Resolver.h"
 
@@ -82,8 +84,19 @@ std::optional<std::vector<uint32_t>> Compiler::spirv(const glsl::MaterialShader&
   return compileShader(shader, request_, workspace_.diagnostics);
 }
 
+std::optional<target::Translation> Compiler::translate(const std::vector<uint32_t>& words, spirv::Stage stage,
+                                                       const std::vector<target::Placement>& placements,
+                                                       const std::string& what) {
+  std::string error;
+  std::optional<target::Translation> out = target::translate(words, stage, request_.target, placements, error);
+  if (!out) workspace_.diagnostics.error({}, fmt::format("{}: {}", what, error));
+  return out;
+}
+
 glsl::MaterialShader buildShader(const ir::Material& material, glsl::ShaderKind kind, const CompileRequest& request) {
   glsl::BuildOptions options;
+  options.subgroups = request.target == target::Target::Spirv;
+  options.separateSamplers = request.target == target::Target::Wgsl;
   options.expandLibrary = request.expandLibrary;
   options.accuracy = request.accuracy;
   options.referenceSamples = request.referenceSamples;

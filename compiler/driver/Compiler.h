@@ -29,6 +29,7 @@
 #include "compiler/lower/Lowering.h"
 #include "compiler/resolve/ResolvedGraph.h"
 #include "compiler/spirv/SpirvCompiler.h"
+#include "compiler/target/Translate.h"
 
 namespace mxc {
 
@@ -81,6 +82,10 @@ struct CompileRequest {
   bool expandLibrary = true;
   /// SPIRV-Tools' performance passes (`-O`).
   bool optimize = false;
+  /// The language the shader is written in (`--target`). Other than SPIR-V, the shader is built
+  /// for hosts without mxc's renderer: no subgroup operations, and for WGSL separate textures and
+  /// samplers (glsl::BuildOptions); translate() then writes it from the SPIR-V.
+  target::Target target = target::Target::Spirv;
   /// Compile only what the material and the scene use (the default). False (`--no-specialize`):
   /// the general shader, for comparison: every input of the shading node a uniform (so no effect
   /// of the shading model is folded away; LoweringOptions::everyInputVariable) and the library's
@@ -125,6 +130,12 @@ class Compiler {
   /// The shader compiled to validated SPIR-V (optimised when the request says so); nullopt when
   /// glslang rejects it (reported at the document elements the failing lines came from).
   std::optional<std::vector<uint32_t>> spirv(const glsl::MaterialShader& shader);
+  /// A stage's SPIR-V in the request's target, each resource at its placement
+  /// (target::placeResources), validated by the target's toolchain; nullopt when it fails
+  /// (reported, naming `what`: "material Glass (fragment)").
+  std::optional<target::Translation> translate(const std::vector<uint32_t>& words, spirv::Stage stage,
+                                               const std::vector<target::Placement>& placements,
+                                               const std::string& what);
 
  private:
   Workspace& workspace_;

@@ -18,6 +18,12 @@ enum Binding : uint32_t {
   kFirstTextureBinding = 5 ///< sampler2D per image file, in ExprEmitter order
 };
 
+/// Under MXC_SEPARATE_SAMPLERS (the WGSL target, which has no combined image sampler), the
+/// sampler of the texture at binding b of a set is at binding b + kSeparateSamplerOffset of that
+/// set. Below WebGPU's limit on binding numbers (maxBindingsPerBindGroup, 1000) with room for
+/// every texture a material can name.
+constexpr uint32_t kSeparateSamplerOffset = 512;
+
 /// Texels per axis of each albedo table (view cosine across, roughness down).
 constexpr uint32_t kTableSize = 32;
 /// Number of dielectric reflection tables, one per IOR step (stages/mxc_tables.comp).

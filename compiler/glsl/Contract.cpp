@@ -138,6 +138,32 @@ std::string codesHeader() {
   out += fmt::format("const int MXC_TRANSFORM_VECTOR = {};\n", int(TransformKind::Vector));
   out += fmt::format("const int MXC_TRANSFORM_NORMAL = {};\n", int(TransformKind::Normal));
   out += fmt::format("const float MXC_DELTA_ALPHA = {:.9g};\n", kDeltaAlpha);
+  // A value the same for every invocation (a material parameter). Under MXC_SUBGROUPS (mxc's own
+  // renderer) it is read through subgroupBroadcastFirst: lavapipe (Mesa 22.3) gives helper
+  // invocations 0 for a storage-buffer load, so a texture coordinate computed from a parameter had
+  // wrong screen derivatives (the texture blurred to its average); the broadcast gives every
+  // invocation of the subgroup the value. Hosts of the other targets need no subgroups.
+  out += "#ifdef MXC_SUBGROUPS\n#define MXC_PARAMETER(X) subgroupBroadcastFirst(X)\n#else\n#define MXC_PARAMETER(X) (X)\n#endif\n";
+  // A 2D texture with its sampler: one combined image sampler at the binding, or, with
+  // MXC_SEPARATE_SAMPLERS (WGSL, which has no combined image sampler), the texture at the binding
+  // and its sampler kSeparateSamplerOffset bindings above it, in the same set. A sampler made of
+  // the two may only be built where it is used (GL_KHR_vulkan_glsl), hence the argument and
+  // parameter forms for functions that take one.
+  out += "#ifdef MXC_SEPARATE_SAMPLERS\n";
+  out += fmt::format(
+      "#define MXC_DECLARE_SAMPLER2D(SET, BINDING, NAME) "
+      "layout(set = SET, binding = BINDING) uniform texture2D NAME##_texture; "
+      "layout(set = SET, binding = (BINDING) + {}) uniform sampler NAME##_sampler\n",
+      kSeparateSamplerOffset);
+  out += "#define MXC_SAMPLER2D(NAME) sampler2D(NAME##_texture, NAME##_sampler)\n";
+  out += "#define MXC_SAMPLER2D_PARAMETER(NAME) texture2D NAME##_texture, sampler NAME##_sampler\n";
+  out += "#define MXC_SAMPLER2D_ARGUMENT(NAME) NAME##_texture, NAME##_sampler\n";
+  out += "#else\n";
+  out += "#define MXC_DECLARE_SAMPLER2D(SET, BINDING, NAME) layout(set = SET, binding = BINDING) uniform sampler2D NAME\n";
+  out += "#define MXC_SAMPLER2D(NAME) NAME\n";
+  out += "#define MXC_SAMPLER2D_PARAMETER(NAME) sampler2D NAME\n";
+  out += "#define MXC_SAMPLER2D_ARGUMENT(NAME) NAME\n";
+  out += "#endif\n";
   return out;
 }
 
@@ -163,8 +189,7 @@ std::string tablesHeader() {
 /// renderer's set kEnvironmentSet, or 0 in the sampling stage that tests it).
 std::string environmentHeader() {
   std::string out = kGeneratedNote;
-  out += fmt::format("layout(set = MXC_ENV_SET, binding = {}) uniform sampler2D mxc_env_radiance;\n",
-                     kEnvironmentRadianceBinding);
+  out += fmt::format("MXC_DECLARE_SAMPLER2D(MXC_ENV_SET, {}, mxc_env_radiance);\n", kEnvironmentRadianceBinding);
   out += fmt::format(
       "layout(set = MXC_ENV_SET, binding = {}, std430) readonly buffer MxcEnvDistribution {{\n"
       "  uvec4 mxc_env_size;     // x, y: cells across and down\n"

@@ -186,14 +186,12 @@ std::string ExprEmitter::emit(ExprId id) {
     case Op::Texture: return ref(id);
     case Op::Local: return m_.exprs.text(id);  // the back end's own value, by its GLSL
     case Op::Parameter:
-      // Read through subgroupBroadcastFirst: a parameter is the same for every invocation, and
-      // lavapipe (Mesa 22.3) gives helper invocations 0 for a storage-buffer load, so a texture
-      // coordinate computed from a parameter had wrong screen derivatives (the texture blurred to
-      // its average). The broadcast gives every invocation of the subgroup the value. Matrices
-      // are read as they are (the operation takes scalars and vectors).
+      // Read through MXC_PARAMETER (mxc_codes.glsl: subgroupBroadcastFirst for mxc's renderer,
+      // whose lavapipe gives helper invocations 0 for a storage-buffer load). Matrices are read
+      // as they are (the broadcast takes scalars and vectors).
       value = e.type == Type::Mat3 || e.type == Type::Mat4
                   ? fmt::format("mxc_params.{}", m_.exprs.text(id))
-                  : fmt::format("subgroupBroadcastFirst(mxc_params.{})", m_.exprs.text(id));
+                  : fmt::format("MXC_PARAMETER(mxc_params.{})", m_.exprs.text(id));
       parameters_.emplace(m_.exprs.text(id), e.type);
       break;
     case Op::GeomProp: {
@@ -318,7 +316,7 @@ std::string ExprEmitter::emit(ExprId id) {
       size_t k = textures_.size() - 1;
       for (size_t t = 0; t < textures_.size(); ++t) k = textures_[t].name == sampler ? t : k;
       std::string sample =
-          fmt::format("mxc_sample_image({}, {}, {}, {}, {}, {}, (subgroupBroadcastFirst(mxc_params.missing_textures) & {}u) != 0u)", sampler,
+          fmt::format("mxc_sample_image(MXC_SAMPLER2D_ARGUMENT({}), {}, {}, {}, {}, {}, (MXC_PARAMETER(mxc_params.missing_textures) & {}u) != 0u)", sampler,
                       a(1), fallback4, int(sampling.uaddress), int(sampling.vaddress), int(sampling.filter),
                       1u << (k % 32));
       value = n == 1 ? sample + ".r" : n == 2 ? sample + ".rg" : n == 3 ? sample + ".rgb" : sample;

@@ -45,6 +45,8 @@ struct MaterialInterface {
   FlagSet<ir::LobeKind> lobeKinds;      ///< the lobe kinds compiled in (MXC_HAS_*)
   bool transmission = false;            ///< the lobes' refraction code is compiled in (MXC_TRANSMISSION)
   bool absorption = false;              ///< absorption above the lobes is computed (MXC_ABSORPTION)
+  bool subgroups = true;                ///< parameters are read through subgroupBroadcastFirst (MXC_SUBGROUPS)
+  bool separateSamplers = false;        ///< textures and samplers are separate bindings (MXC_SEPARATE_SAMPLERS)
   std::vector<std::string> geomprops;
 };
 
@@ -65,6 +67,12 @@ struct BuildOptions {
   /// Compile only the library code the material's closure uses (false, `--no-specialize`: the
   /// refraction and absorption code whatever the lobes' modes, as a general shader has it).
   bool specialize = true;
+  /// Each texture and its sampler as two bindings (MXC_SEPARATE_SAMPLERS, Bindings.h): the WGSL
+  /// target's SPIR-V, since WGSL has no combined image sampler.
+  bool separateSamplers = false;
+  /// Parameters read through subgroupBroadcastFirst (MXC_SUBGROUPS, mxc_codes.glsl): what mxc's
+  /// renderer needs on lavapipe. False for the other targets, whose hosts need no subgroups.
+  bool subgroups = true;
 };
 
 /// The shader of a material for a use. Its GLSL lines map back to the document elements that

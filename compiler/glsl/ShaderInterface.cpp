@@ -60,8 +60,8 @@ json shaderInterfaceJson(const ir::Material& material, const MaterialShader& sha
            {"kind", std::string(shaderKindName(kind))},
            {"documentFolder", files.documentFolder},
            {"stages", json::object()}};
-  out["stages"][raster ? "fragment" : "compute"] = {{"spirv", files.shader}, {"entryPoint", "main"}};
-  if (raster) out["stages"]["vertex"] = {{"spirv", files.vertex}, {"entryPoint", "main"}};
+  out["stages"][raster ? "fragment" : "compute"] = {{"file", files.shader}, {"spirv", files.shader}, {"entryPoint", "main"}};
+  if (raster) out["stages"]["vertex"] = {{"file", files.vertex}, {"spirv", files.vertex}, {"entryPoint", "main"}};
 
   if (raster) {
     out["vertexInputs"] = json::array({
@@ -133,10 +133,10 @@ json shaderInterfaceJson(const ir::Material& material, const MaterialShader& sha
                          {"members", std::move(parameters)}});
   if (!raster) {
     descriptors.push_back({{"set", 0}, {"binding", uint32_t(kInputBinding)}, {"type", "storage_buffer"},
-                           {"name", "MxcInput"}, {"layout", "std430"}, {"meaning", "vec4 per item, read"},
+                           {"name", "MxcInput"}, {"layout", "std430"}, {"readonly", true}, {"meaning", "vec4 per item, read"},
                            {"members", json::array({{{"name", "mxc_in"}, {"type", "vec4"}, {"offset", 0}, {"count", "runtime"}}})}});
     descriptors.push_back({{"set", 0}, {"binding", uint32_t(kOutputBinding)}, {"type", "storage_buffer"},
-                           {"name", "MxcOutput"}, {"layout", "std430"}, {"meaning", "vec4 per item, written"},
+                           {"name", "MxcOutput"}, {"layout", "std430"}, {"readonly", false}, {"meaning", "vec4 per item, written"},
                            {"members", json::array({{{"name", "mxc_out"}, {"type", "vec4"}, {"offset", 0}, {"count", "runtime"}}})}});
   }
   for (size_t k = 0; k < iface.textures.size(); ++k) {
@@ -173,6 +173,7 @@ json shaderInterfaceJson(const ir::Material& material, const MaterialShader& sha
                            {"type", "storage_buffer"},
                            {"name", "MxcEnvDistribution"},
                            {"layout", "std430"},
+                           {"readonly", true},
                            {"members", json::array({{{"name", "mxc_env_size"}, {"type", "uvec4"}, {"offset", 0}},
                                                     {{"name", "mxc_env_cells"}, {"type", "vec4"}, {"offset", 16},
                                                      {"count", "runtime"}}})},
@@ -202,9 +203,13 @@ json shaderInterfaceJson(const ir::Material& material, const MaterialShader& sha
                                            "hash, then width x height RGBA float32 texels, row by row, little-endian"},
                                 {"width", kTableSize},
                                 {"height", kTableHeight}}});
-  // Parameters are read through subgroupBroadcastFirst (ExprEmitter, Op::Parameter).
-  out["requires"] = json::array({"Vulkan 1.1 subgroups with the ballot operations (VK_SUBGROUP_FEATURE_BALLOT_BIT) in "
-                                 "the shader's stage"});
+  // Parameters are read through subgroupBroadcastFirst (MXC_PARAMETER, mxc_codes.glsl) in the
+  // SPIR-V target's shaders.
+  out["requires"] = json::array();
+  if (iface.subgroups) {
+    out["requires"].push_back("Vulkan 1.1 subgroups with the ballot operations (VK_SUBGROUP_FEATURE_BALLOT_BIT) in "
+                              "the shader's stage");
+  }
   out["lobes"] = iface.lobes;
   return out;
 }

@@ -239,6 +239,55 @@ std::string validate(const std::vector<uint32_t>& words) {
   return message.empty() ? "invalid module" : message;
 }
 
+std::optional<std::vector<uint32_t>> freezeSpecialization(const std::vector<uint32_t>& words, std::string& error) {
+  spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_1);
+  optimizer.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t&, const char* text) {
+    error += (error.empty() ? "" : "; ") + std::string(text);
+  });
+  optimizer.RegisterPass(spvtools::CreateFreezeSpecConstantValuePass());
+  // Expressions of the constants (OpSpecConstantOp: `MXC_LIGHT_COUNT != -1`) become constants.
+  optimizer.RegisterPass(spvtools::CreateFoldSpecConstantOpAndCompositePass());
+  std::vector<uint32_t> out;
+  if (!optimizer.Run(words.data(), words.size(), &out)) {
+    if (error.empty()) error = "SPIRV-Tools cannot fix the specialization constants";
+    return std::nullopt;
+  }
+  error.clear();
+  return out;
+}
+
+std::string checkSource(const std::string& text, Language dialect, Stage stage, const std::string& entryPoint) {
+  initialise();
+  const EShLanguage shaderStage = language(stage);
+  glslang::TShader shader(shaderStage);
+  const char* source = text.c_str();
+  shader.setStrings(&source, 1);
+  EShMessages messages = EShMsgDefault;
+  if (dialect == Language::Hlsl) {
+    shader.setEnvInput(glslang::EShSourceHlsl, shaderStage, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
+    shader.setEntryPoint(entryPoint.c_str());
+    messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules);
+  } else {
+    // An OpenGL driver's compiler: no SPIR-V, the version and profile from the #version line.
+    shader.setEnvInput(glslang::EShSourceGlsl, shaderStage, glslang::EShClientNone, 0);
+  }
+  const int defaultVersion = dialect == Language::OpenGlEs ? 320 : 450;
+  if (!shader.parse(GetDefaultResources(), defaultVersion, false, messages)) return shader.getInfoLog();
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages)) return program.getInfoLog();
+  if (dialect != Language::Hlsl) return {};
+  std::vector<uint32_t> words;
+  spv::SpvBuildLogger logger;
+  glslang::SpvOptions spvOptions;
+  spvOptions.disableOptimizer = true;
+  glslang::GlslangToSpv(*program.getIntermediate(shaderStage), words, &logger, &spvOptions);
+  if (words.empty()) return "no SPIR-V generated: " + logger.getAllMessages();
+  return validate(words);
+}
+
 size_t instructionCount(const std::vector<uint32_t>& words) {
   size_t count = 0;
   for (size_t i = 5; i < words.size();) {

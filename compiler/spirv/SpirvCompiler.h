@@ -78,6 +78,19 @@ struct CompileOptions {
 std::optional<std::vector<uint32_t>> compile(const GlslSource& source, const CompileOptions& options,
                                              Diagnostics& diagnostics);
 
+/// The module with every specialization constant fixed at its default and the expressions of
+/// them folded (SPIRV-Tools' freeze and fold passes): for a translator that reads no
+/// specialization (naga). nullopt (and `error`) when the passes fail.
+std::optional<std::vector<uint32_t>> freezeSpecialization(const std::vector<uint32_t>& words, std::string& error);
+
+/// The shading languages whose text glslang's front ends can check.
+enum class Language : uint8_t { OpenGl, OpenGlEs, Hlsl };
+/// Checks a stage written in `language` (by a translator) with glslang's front end: GLSL and
+/// ESSL are parsed and linked as an OpenGL (ES) driver's compiler would; HLSL is compiled to
+/// SPIR-V for Vulkan 1.1 from `entryPoint` and the module validated. Returns glslang's log when
+/// the text is rejected, "" when it is accepted.
+std::string checkSource(const std::string& text, Language language, Stage stage, const std::string& entryPoint);
+
 /// Validates a SPIR-V module for Vulkan 1.1; returns the validator's message, or "" when valid.
 std::string validate(const std::vector<uint32_t>& words);
 

@@ -38,7 +38,7 @@ struct MxcLobeSample {
 //     s, at (mu, sqrt(alpha)): .x = the GGX reflection albedo with the exact dielectric Fresnel seen
 //     from outside (eta), .y = the single-scattering albedo R + T of the whole dielectric lobe
 //     seen from outside (eta), .z = the same seen from inside (1 / eta).
-layout(set = 0, binding = MXC_TABLE_BINDING) uniform sampler2D mxc_tables;
+MXC_DECLARE_SAMPLER2D(0, MXC_TABLE_BINDING, mxc_tables);
 vec4 mxc_table_at(float mu, float x, float firstRow) {
   const float n = float(MXC_TABLE_SIZE);
   const float rows = float(MXC_TABLE_SIZE * (1 + MXC_TABLE_SLICES));
@@ -46,7 +46,7 @@ vec4 mxc_table_at(float mu, float x, float firstRow) {
   // first and last samples and linear filtering never reaches a neighbouring table. The view
   // axis holds sqrt(mu) (stages/mxc_tables.comp), dense near grazing.
   vec2 t = vec2(sqrt(clamp(mu, 0.0, 1.0)), clamp(x, 0.0, 1.0)) * (n - 1.0) + 0.5;
-  return textureLod(mxc_tables, vec2(t.x / n, (firstRow + t.y) / rows), 0.0);
+  return textureLod(MXC_SAMPLER2D(mxc_tables), vec2(t.x / n, (firstRow + t.y) / rows), 0.0);
 }
 vec4 mxc_table(float mu, float x) { return mxc_table_at(mu, x, 0.0); }
 

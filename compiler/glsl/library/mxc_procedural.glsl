@@ -184,7 +184,16 @@ float mxc_texture_footprint = 1.0;
 #define MXC_HAS_TEXTURE_FOOTPRINT
 
 // filtertype: MXC_FILTER_LINEAR or MXC_FILTER_CLOSEST (MaterialX "filtertype").
-vec4 mxc_sample_image(sampler2D image, vec2 uv, vec4 fallback, int uaddress, int vaddress, int filtertype, bool missing) {
+vec4 mxc_sample_image(MXC_SAMPLER2D_PARAMETER(image), vec2 uv, vec4 fallback, int uaddress, int vaddress, int filtertype, bool missing) {
+#ifdef MXC_STAGE_RASTER
+  // The footprint first, before any branch: screen derivatives are undefined in control flow
+  // that differs between the pixels of a quad (GLSL 4.50 section 8.14), and WGSL rejects them
+  // there (its uniformity analysis). The footprint is the derivative of the coordinate before it
+  // is wrapped: fract() and mirroring jump by a whole tile at a seam, which would read as a huge
+  // footprint there. (v is flipped below, hence the sign.)
+  vec2 dx = dFdx(uv) * vec2(mxc_texture_footprint, -mxc_texture_footprint);
+  vec2 dy = dFdy(uv) * vec2(mxc_texture_footprint, -mxc_texture_footprint);
+#endif
   vec2 st = uv;
   if (missing) return fallback;
   if (!mxc_address(st.x, uaddress) || !mxc_address(st.y, vaddress)) return fallback;
@@ -192,18 +201,14 @@ vec4 mxc_sample_image(sampler2D image, vec2 uv, vec4 fallback, int uaddress, int
   st.y = 1.0 - st.y;
   if (filtertype == MXC_FILTER_CLOSEST) {
     // The centre of the texel st falls in, read at full resolution: the nearest texel.
-    vec2 size = vec2(textureSize(image, 0));
-    return textureLod(image, (min(floor(st * size), size - 1.0) + 0.5) / size, 0.0);
+    vec2 size = vec2(textureSize(MXC_SAMPLER2D(image), 0));
+    return textureLod(MXC_SAMPLER2D(image), (min(floor(st * size), size - 1.0) + 0.5) / size, 0.0);
   }
 #ifdef MXC_STAGE_RASTER
-  // Trilinear through the mip chain. The footprint is the screen derivative of the coordinate
-  // before it was wrapped: fract() and mirroring jump by a whole tile at a seam, which would
-  // read as a huge footprint there. (v was flipped, hence the sign.)
-  vec2 dx = dFdx(uv) * vec2(mxc_texture_footprint, -mxc_texture_footprint);
-  vec2 dy = dFdy(uv) * vec2(mxc_texture_footprint, -mxc_texture_footprint);
-  return textureGrad(image, st, dx, dy);
+  // Trilinear through the mip chain, over the footprint above.
+  return textureGrad(MXC_SAMPLER2D(image), st, dx, dy);
 #else
   // Compute stages have no screen footprint: the full-resolution level.
-  return textureLod(image, st, 0.0);
+  return textureLod(MXC_SAMPLER2D(image), st, 0.0);
 #endif
 }

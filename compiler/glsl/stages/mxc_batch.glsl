@@ -16,7 +16,7 @@ MxcGeometry mxc_flat_geometry() {
   g.uv = mxc_batch.uv.xy;
   g.color = vec4(1.0);
   g.objectToWorld = mat4(1.0);
-  g.frame = subgroupBroadcastFirst(mxc_params.frame);  // as every parameter (ExprEmitter, Op::Parameter)
-  g.time = subgroupBroadcastFirst(mxc_params.time);
+  g.frame = MXC_PARAMETER(mxc_params.frame);  // as every parameter (ExprEmitter, Op::Parameter)
+  g.time = MXC_PARAMETER(mxc_params.time);
   return g;
 }

@@ -26,7 +26,7 @@ vec2 mxc_env_uv(vec3 d) {
 // Radiance arriving from map-space direction d (unit). The sampler repeats across (the seam at
 // u = 0 and 1 is continuous) and clamps down.
 vec3 mxc_env_lookup(vec3 d) {
-  return textureLod(mxc_env_radiance, mxc_env_uv(d), 0.0).rgb;
+  return textureLod(MXC_SAMPLER2D(mxc_env_radiance), mxc_env_uv(d), 0.0).rgb;
 }
 
 // The index of the cell holding map-space direction d.

@@ -102,8 +102,8 @@ void main() {
   g.uv = vUv;
   g.color = vec4(1.0);
   g.objectToWorld = mxc_view.objectToWorld;
-  g.frame = subgroupBroadcastFirst(mxc_params.frame);  // as every parameter (ExprEmitter, Op::Parameter)
-  g.time = subgroupBroadcastFirst(mxc_params.time);
+  g.frame = MXC_PARAMETER(mxc_params.frame);  // as every parameter (ExprEmitter, Op::Parameter)
+  g.time = MXC_PARAMETER(mxc_params.time);
   vec3 wo = mxc_safe_normalize(mxc_view.eye.xyz - vPosition, N);
 #ifdef MXC_HAS_TEXTURE_FOOTPRINT
   mxc_texture_footprint = mxc_view.jitter.z;  // set by the renderer; 0 from a host that leaves it: guarded below

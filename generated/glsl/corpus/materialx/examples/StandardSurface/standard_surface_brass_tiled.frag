@@ -12,6 +12,7 @@
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -27,19 +28,19 @@ layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
 } mxc_params;
-layout(set = 0, binding = 5) uniform sampler2D mxc_texture_0;  // ../../../Images/brass_roughness.jpg
-layout(set = 0, binding = 6) uniform sampler2D mxc_texture_1;  // ../../../Images/brass_color.jpg (srgb_texture)
+MXC_DECLARE_SAMPLER2D(0, 5, mxc_texture_0);  // ../../../Images/brass_roughness.jpg
+MXC_DECLARE_SAMPLER2D(0, 6, mxc_texture_1);  // ../../../Images/brass_color.jpg (srgb_texture)
 
 // ---- material 'Tiled_Brass' ----
 void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec2 v1 = g.uv;
-  float v4 = mxc_sample_image(mxc_texture_0, v1, vec4(0.0), 2, 2, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 1u) != 0u).r;
+  float v4 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_0), v1, vec4(0.0), 2, 2, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 1u) != 0u).r;
   vec3 v8 = g.N;
   float v12 = v4 * v4;
   float v13 = clamp(v12, 1e-07, 1.0);
   vec2 v14 = vec2(v13, v13);
   vec3 v15 = g.T;
-  vec3 v18 = mxc_sample_image(mxc_texture_1, v1, vec4(vec3(0.0), 1.0), 2, 2, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 2u) != 0u).rgb;
+  vec3 v18 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_1), v1, vec4(vec3(0.0), 1.0), 2, 2, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 2u) != 0u).rgb;
   vec3 v19 = clamp(v18, vec3(0.0), vec3(1.0));
   vec3 v21 = clamp(v19, vec3(1e-06), vec3(1.0));
   vec3 v22 = log(v21);

@@ -11,6 +11,7 @@
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -26,27 +27,27 @@ layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
 } mxc_params;
-layout(set = 0, binding = 5) uniform sampler2D mxc_texture_0;  // ../../../Images/brick_mask.jpg
-layout(set = 0, binding = 6) uniform sampler2D mxc_texture_1;  // ../../../Images/brick_roughness.jpg
-layout(set = 0, binding = 7) uniform sampler2D mxc_texture_2;  // ../../../Images/brick_dirt_mask.jpg
-layout(set = 0, binding = 8) uniform sampler2D mxc_texture_3;  // ../../../Images/brick_variation_mask.jpg
-layout(set = 0, binding = 9) uniform sampler2D mxc_texture_4;  // ../../../Images/brick_base_gray.jpg
-layout(set = 0, binding = 10) uniform sampler2D mxc_texture_5;  // ../../../Images/brick_normal.jpg (lin_rec709)
+MXC_DECLARE_SAMPLER2D(0, 5, mxc_texture_0);  // ../../../Images/brick_mask.jpg
+MXC_DECLARE_SAMPLER2D(0, 6, mxc_texture_1);  // ../../../Images/brick_roughness.jpg
+MXC_DECLARE_SAMPLER2D(0, 7, mxc_texture_2);  // ../../../Images/brick_dirt_mask.jpg
+MXC_DECLARE_SAMPLER2D(0, 8, mxc_texture_3);  // ../../../Images/brick_variation_mask.jpg
+MXC_DECLARE_SAMPLER2D(0, 9, mxc_texture_4);  // ../../../Images/brick_base_gray.jpg
+MXC_DECLARE_SAMPLER2D(0, 10, mxc_texture_5);  // ../../../Images/brick_normal.jpg (lin_rec709)
 
 // ---- material 'M_BrickPattern' ----
 void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec2 v3 = g.uv;
   vec2 v4 = v3 * vec2(3.0);
-  float v8 = mxc_sample_image(mxc_texture_0, v4, vec4(0.0), 2, 2, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 1u) != 0u).r;
+  float v8 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_0), v4, vec4(0.0), 2, 2, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 1u) != 0u).r;
   float v10 = max(v8, 1e-05);
   float v11 = 0.853 / v10;
-  float v13 = mxc_sample_image(mxc_texture_1, v4, vec4(0.0), 2, 2, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 2u) != 0u).r;
+  float v13 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_1), v4, vec4(0.0), 2, 2, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 2u) != 0u).r;
   float v14 = v11 * v13;
-  float v20 = mxc_sample_image(mxc_texture_2, v4, vec4(0.0), 2, 2, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 4u) != 0u).r;
+  float v20 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_2), v4, vec4(0.0), 2, 2, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 4u) != 0u).r;
   float v21 = 0.248 * v20;
-  float v25 = mxc_sample_image(mxc_texture_3, v4, vec4(0.0), 2, 2, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 8u) != 0u).r;
+  float v25 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_3), v4, vec4(0.0), 2, 2, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 8u) != 0u).r;
   float v26 = 0.083 * v25;
-  float v28 = mxc_sample_image(mxc_texture_4, v4, vec4(0.0), 2, 2, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 16u) != 0u).r;
+  float v28 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_4), v4, vec4(0.0), 2, 2, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 16u) != 0u).r;
   float v29 = v26 + v28;
   float v31 = v29 - 0.35;
   float v32 = v31 * 0.083;
@@ -61,7 +62,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec3 v44 = mix(v43, v41, v8);
   vec3 v45 = clamp(v44, vec3(0.0), vec3(1.0));
   vec3 v46 = clamp(v45, vec3(0.0), vec3(1.0));
-  vec3 v48 = mxc_sample_image(mxc_texture_5, v4, vec4(vec3(0.0), 1.0), 2, 2, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 32u) != 0u).rgb;
+  vec3 v48 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_5), v4, vec4(vec3(0.0), 1.0), 2, 2, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 32u) != 0u).rgb;
   vec3 v49 = g.N;
   vec3 v50 = g.T;
   vec3 v51 = g.B;

@@ -11,6 +11,7 @@
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -26,7 +27,7 @@ layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
 } mxc_params;
-layout(set = 0, binding = 5) uniform sampler2D mxc_texture_0;  // ../../../Images/greysphere_calibration.png (srgb_texture)
+MXC_DECLARE_SAMPLER2D(0, 5, mxc_texture_0);  // ../../../Images/greysphere_calibration.png (srgb_texture)
 
 // ---- material 'Greysphere_Calibration' ----
 void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
@@ -36,7 +37,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec2 v8 = mxc_rotate2d(v7, 0.0);
   vec2 v9 = v8 - vec2(-1.66, -0.49);
   vec2 v10 = v9 + vec2(0.5);
-  vec3 v13 = mxc_sample_image(mxc_texture_0, v10, vec4(vec3(0.0), 1.0), 1, 1, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 1u) != 0u).rgb;
+  vec3 v13 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_0), v10, vec4(vec3(0.0), 1.0), 1, 1, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 1u) != 0u).rgb;
   vec3 v15 = clamp(v13, vec3(0.0), vec3(1.0));
   vec3 v16 = g.N;
   vec3 v19 = g.T;

@@ -11,6 +11,7 @@
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -26,15 +27,15 @@ layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
 } mxc_params;
-layout(set = 0, binding = 5) uniform sampler2D mxc_texture_0;  // ../../../Images/wood_roughness.jpg
-layout(set = 0, binding = 6) uniform sampler2D mxc_texture_1;  // ../../../Images/wood_color.jpg (srgb_texture)
+MXC_DECLARE_SAMPLER2D(0, 5, mxc_texture_0);  // ../../../Images/wood_roughness.jpg
+MXC_DECLARE_SAMPLER2D(0, 6, mxc_texture_1);  // ../../../Images/wood_color.jpg (srgb_texture)
 
 // ---- material 'Tiled_Wood' ----
 void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec2 v2 = g.uv;
   vec2 v3 = v2 * vec2(4.0);
-  float v6 = mxc_sample_image(mxc_texture_0, v3, vec4(0.0), 2, 2, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 1u) != 0u).r;
-  vec3 v11 = mxc_sample_image(mxc_texture_1, v3, vec4(vec3(0.0), 1.0), 2, 2, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 2u) != 0u).rgb;
+  float v6 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_0), v3, vec4(0.0), 2, 2, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 1u) != 0u).r;
+  vec3 v11 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_1), v3, vec4(vec3(0.0), 1.0), 2, 2, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 2u) != 0u).rgb;
   vec3 v13 = clamp(v11, vec3(0.0), vec3(1.0));
   vec3 v14 = g.N;
   float v17 = v6 * v6;
@@ -122,6 +123,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -137,7 +139,7 @@ layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
 } mxc_params;
-layout(set = 0, binding = 5) uniform sampler2D mxc_texture_0;  // ../../../Images/greysphere_calibration.png (srgb_texture)
+MXC_DECLARE_SAMPLER2D(0, 5, mxc_texture_0);  // ../../../Images/greysphere_calibration.png (srgb_texture)
 
 // ---- material 'Greysphere_Calibration' ----
 void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
@@ -147,7 +149,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec2 v8 = mxc_rotate2d(v7, 0.0);
   vec2 v9 = v8 - vec2(-1.66, -0.49);
   vec2 v10 = v9 + vec2(0.5);
-  vec3 v13 = mxc_sample_image(mxc_texture_0, v10, vec4(vec3(0.0), 1.0), 1, 1, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 1u) != 0u).rgb;
+  vec3 v13 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_0), v10, vec4(vec3(0.0), 1.0), 1, 1, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 1u) != 0u).rgb;
   vec3 v15 = clamp(v13, vec3(0.0), vec3(1.0));
   vec3 v16 = g.N;
   vec3 v19 = g.T;

@@ -11,6 +11,7 @@
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -26,16 +27,16 @@ layout(set = 0, binding = 2, std140) readonly buffer MxcParameters {
   layout(offset = 4) float frame;
   layout(offset = 8) float time;
 } mxc_params;
-layout(set = 0, binding = 5) uniform sampler2D mxc_texture_0;  // ../../../Images/onyx_roughness.jpg (none)
-layout(set = 0, binding = 6) uniform sampler2D mxc_texture_1;  // ../../../Images/onyx_color.jpg (srgb_texture)
+MXC_DECLARE_SAMPLER2D(0, 5, mxc_texture_0);  // ../../../Images/onyx_roughness.jpg (none)
+MXC_DECLARE_SAMPLER2D(0, 6, mxc_texture_1);  // ../../../Images/onyx_color.jpg (srgb_texture)
 
 // ---- material 'M_OnyxHextiled' ----
 void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   vec2 v3 = g.uv;
   vec2 v4 = v3 * vec2(4.0);
-  vec3 v13 = mxc_sample_image(mxc_texture_0, v4, vec4(vec3(0.0), 1.0), 2, 2, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 1u) != 0u).rgb;
+  vec3 v13 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_0), v4, vec4(vec3(0.0), 1.0), 2, 2, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 1u) != 0u).rgb;
   float v14 = v13[0];
-  vec3 v17 = mxc_sample_image(mxc_texture_1, v4, vec4(vec3(0.0), 1.0), 2, 2, 0, (subgroupBroadcastFirst(mxc_params.missing_textures) & 2u) != 0u).rgb;
+  vec3 v17 = mxc_sample_image(MXC_SAMPLER2D_ARGUMENT(mxc_texture_1), v4, vec4(vec3(0.0), 1.0), 2, 2, 0, (MXC_PARAMETER(mxc_params.missing_textures) & 2u) != 0u).rgb;
   vec3 v19 = clamp(v17, vec3(0.0), vec3(1.0));
   vec3 v20 = g.N;
   float v23 = v14 * v14;

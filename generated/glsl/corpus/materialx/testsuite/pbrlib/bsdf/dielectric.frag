@@ -10,6 +10,7 @@
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -69,6 +70,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -128,6 +130,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -187,6 +190,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"

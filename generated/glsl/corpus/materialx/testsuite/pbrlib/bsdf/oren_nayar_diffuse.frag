@@ -10,6 +10,7 @@
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -67,6 +68,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -124,6 +126,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -181,6 +184,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -238,6 +242,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"

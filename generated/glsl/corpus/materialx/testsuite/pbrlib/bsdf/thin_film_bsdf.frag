@@ -11,6 +11,7 @@
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -71,6 +72,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -150,6 +152,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -228,6 +231,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -306,6 +310,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -383,6 +388,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -443,6 +449,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"
@@ -502,6 +509,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
 #define MXC_STAGE_RASTER
+#define MXC_SUBGROUPS
 
 #include "library/mxc_common.glsl"
 #include "library/mxc_microfacet.glsl"

@@ -1,0 +1,1963 @@
+// ==== corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx: material Default, placements ====
+// mxc_tables {"binding":0}
+// MxcView {"binding":0}
+// MxcParameters {"binding":0}
+// mxc_env_radiance {"binding":1}
+// MxcEnvDistribution {"binding":1}
+// ==== fragment (main) ====
+#version 450
+
+struct MxcLobe
+{
+    int kind;
+    int mode;
+    vec3 weight;
+    vec3 N;
+    vec3 T;
+    vec2 alpha;
+    float eta;
+    vec3 c0;
+    vec3 c1;
+    vec3 c2;
+    float p0;
+    float p1;
+    vec3 film;
+    vec3 tau;
+    float tauEta;
+};
+
+struct MxcLobeSample
+{
+    vec3 wi;
+    vec3 value;
+    float pdf;
+    bool delta;
+    bool valid;
+};
+
+struct MxcClosure
+{
+    MxcLobe lobes[2];
+    int count;
+    float choice[2];
+    float choiceTotal;
+    vec3 ms[2];
+    vec3 emission;
+    vec3 transparency;
+};
+
+struct MxcSample
+{
+    vec3 wi;
+    vec3 weight;
+    float pdf;
+    bool delta;
+    bool evaluate;
+    bool valid;
+};
+
+struct MxcGeometry
+{
+    vec3 P;
+    vec3 Pobj;
+    vec3 N;
+    vec3 Nobj;
+    vec3 T;
+    vec3 Tobj;
+    vec3 B;
+    vec3 Bobj;
+    vec2 uv;
+    vec4 color;
+    mat4 objectToWorld;
+    float frame;
+    float time;
+};
+
+#ifndef SPIRV_CROSS_CONSTANT_ID_0
+#define SPIRV_CROSS_CONSTANT_ID_0 -1
+#endif
+const int MXC_ENVIRONMENT = SPIRV_CROSS_CONSTANT_ID_0;
+const bool _2861 = (MXC_ENVIRONMENT != (-1));
+#ifndef SPIRV_CROSS_CONSTANT_ID_1
+#define SPIRV_CROSS_CONSTANT_ID_1 -1
+#endif
+const int MXC_LIGHT_COUNT = SPIRV_CROSS_CONSTANT_ID_1;
+const bool _2881 = (MXC_LIGHT_COUNT != (-1));
+#ifndef SPIRV_CROSS_CONSTANT_ID_2
+#define SPIRV_CROSS_CONSTANT_ID_2 -1
+#endif
+const int MXC_LIGHT_KINDS = SPIRV_CROSS_CONSTANT_ID_2;
+const bool _2893 = (MXC_LIGHT_KINDS != (-1));
+const int _2894 = _2893 ? MXC_LIGHT_KINDS : 7;
+
+layout(binding = 1, std430) readonly buffer MxcEnvDistribution
+{
+    uvec4 mxc_env_size;
+    vec4 mxc_env_cells[];
+} _2605;
+
+layout(binding = 0, std140) uniform MxcView
+{
+    mat4 objectToWorld;
+    mat4 normalToWorld;
+    mat4 worldToClip;
+    vec4 eye;
+    vec4 jitter;
+    vec4 lightVector[8];
+    vec4 lightSpot[8];
+    vec4 lightRadiance[8];
+    ivec4 counts;
+    vec4 environment;
+} mxc_view;
+
+layout(binding = 0, std430) readonly buffer MxcParameters
+{
+    uint missing_textures;
+    float frame;
+    float time;
+} mxc_params;
+
+layout(binding = 0) uniform sampler2D mxc_tables;
+layout(binding = 1) uniform sampler2D mxc_env_radiance;
+
+layout(location = 0) in vec3 vPosition;
+layout(location = 4) in vec3 vObjectPosition;
+layout(location = 1) in vec3 vNormal;
+layout(location = 2) in vec4 vTangent;
+layout(location = 5) in vec3 vObjectNormal;
+layout(location = 6) in vec3 vObjectTangent;
+layout(location = 3) in vec2 vUv;
+layout(location = 0) out vec4 outColor;
+
+vec3 mxc_safe_normalize(vec3 v, vec3 fallback)
+{
+    float l2 = dot(v, v);
+    vec3 _364;
+    if (l2 > 9.9999996826552253889678874634872e-21)
+    {
+        _364 = v * inversesqrt(l2);
+    }
+    else
+    {
+        _364 = fallback;
+    }
+    return _364;
+}
+
+mat3 mxc_frame(vec3 N, vec3 T)
+{
+    vec3 t = T - (N * dot(N, T));
+    float l2 = dot(t, t);
+    if (!(l2 > 9.9999999600419720025001879548654e-13))
+    {
+        float s = (N.z >= 0.0) ? 1.0 : (-1.0);
+        float a = (-1.0) / (s + N.z);
+        float b = (N.x * N.y) * a;
+        t = vec3(1.0 + (((s * N.x) * N.x) * a), s * b, (-s) * N.x);
+    }
+    else
+    {
+        t *= inversesqrt(l2);
+    }
+    return mat3(vec3(t), vec3(cross(N, t)), vec3(N));
+}
+
+uint mxc_pcg(uint v)
+{
+    uint state = (v * 747796405u) + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+void mxc_closure_seed(uint seed)
+{
+}
+
+vec3 mxc_to_local(mat3 frame, vec3 v)
+{
+    return vec3(dot(v, frame[0]), dot(v, frame[1]), dot(v, frame[2]));
+}
+
+bool mxc_is_delta(vec2 alpha)
+{
+    return max(alpha.x, alpha.y) < 9.9999997473787516355514526367188e-05;
+}
+
+bool mxc_index_matched(MxcLobe l)
+{
+    return abs(l.eta - 1.0) < 9.9999997473787516355514526367188e-05;
+}
+
+float mxc_lobe_eta(MxcLobe l, bool above)
+{
+    float _1036;
+    if (above)
+    {
+        _1036 = l.eta;
+    }
+    else
+    {
+        _1036 = 1.0 / l.eta;
+    }
+    return _1036;
+}
+
+vec4 mxc_table_at(float mu, float x, float firstRow)
+{
+    vec2 t = (vec2(sqrt(clamp(mu, 0.0, 1.0)), clamp(x, 0.0, 1.0)) * 31.0) + vec2(0.5);
+    return textureLod(mxc_tables, vec2(t.x / 32.0, (firstRow + t.y) / 1056.0), 0.0);
+}
+
+vec4 mxc_dielectric_table(float mu, float alpha, float e)
+{
+    float s = sqrt(clamp(0.5 * (e - 1.0), 0.0, 1.0)) * 31.0;
+    float s0 = min(floor(s), 30.0);
+    float x = sqrt(max(alpha, 0.0));
+    float param = mu;
+    float param_1 = x;
+    float param_2 = 32.0 * (1.0 + s0);
+    vec4 a = mxc_table_at(param, param_1, param_2);
+    float param_3 = mu;
+    float param_4 = x;
+    float param_5 = 32.0 * (2.0 + s0);
+    vec4 b = mxc_table_at(param_3, param_4, param_5);
+    return mix(a, b, vec4(s - s0));
+}
+
+float mxc_dielectric_albedo_rt(float mu, float alpha, float eta)
+{
+    if (eta >= 1.0)
+    {
+        float param = mu;
+        float param_1 = alpha;
+        float param_2 = eta;
+        return mxc_dielectric_table(param, param_1, param_2).y;
+    }
+    float param_3 = mu;
+    float param_4 = alpha;
+    float param_5 = 1.0 / max(eta, 0.001000000047497451305389404296875);
+    return mxc_dielectric_table(param_3, param_4, param_5).z;
+}
+
+vec4 mxc_table(float mu, float x)
+{
+    float param = mu;
+    float param_1 = x;
+    float param_2 = 0.0;
+    return mxc_table_at(param, param_1, param_2);
+}
+
+vec2 mxc_split_sum(float mu, float alpha)
+{
+    float param = mu;
+    float param_1 = sqrt(max(alpha, 0.0));
+    return mxc_table(param, param_1).xy;
+}
+
+float mxc_fresnel_dielectric(float cosi, float eta)
+{
+    if (abs(eta - 1.0) < 9.9999999747524270787835121154785e-07)
+    {
+        return 0.0;
+    }
+    float sin2t = (1.0 - (cosi * cosi)) / (eta * eta);
+    if (sin2t >= 1.0)
+    {
+        return 1.0;
+    }
+    float cost = sqrt(1.0 - sin2t);
+    float rs = (cosi - (eta * cost)) / (cosi + (eta * cost));
+    float rp = ((eta * cosi) - cost) / ((eta * cosi) + cost);
+    return 0.5 * ((rs * rs) + (rp * rp));
+}
+
+vec3 mxc_lobe_fresnel(MxcLobe l, float _cosh, bool above)
+{
+    vec3 f = vec3(1.0);
+    if (l.kind == 1)
+    {
+        MxcLobe param = l;
+        bool param_1 = above;
+        float param_2 = _cosh;
+        float param_3 = mxc_lobe_eta(param, param_1);
+        f = vec3(mxc_fresnel_dielectric(param_2, param_3));
+    }
+    return f;
+}
+
+vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo)
+{
+    bool _1328 = l.kind == 1;
+    bool _1335;
+    if (!_1328)
+    {
+        _1335 = l.kind == 2;
+    }
+    else
+    {
+        _1335 = _1328;
+    }
+    bool _1343;
+    if (!_1335)
+    {
+        _1343 = l.kind == 3;
+    }
+    else
+    {
+        _1343 = _1335;
+    }
+    bool microfacet = _1343;
+    bool _1345 = !microfacet;
+    bool _1353;
+    if (!_1345)
+    {
+        vec2 param = l.alpha;
+        _1353 = mxc_is_delta(param);
+    }
+    else
+    {
+        _1353 = _1345;
+    }
+    if (_1353)
+    {
+        return vec3(1.0);
+    }
+    float alpha = sqrt(l.alpha.x * l.alpha.y);
+    bool _1366 = l.kind == 1;
+    bool _1372;
+    if (_1366)
+    {
+        MxcLobe param_1 = l;
+        _1372 = mxc_index_matched(param_1);
+    }
+    else
+    {
+        _1372 = _1366;
+    }
+    if (_1372)
+    {
+        return vec3(1.0);
+    }
+    bool _1378 = l.kind == 1;
+    bool _1386;
+    if (_1378)
+    {
+        _1386 = (l.mode & 4) == 0;
+    }
+    else
+    {
+        _1386 = _1378;
+    }
+    if (_1386)
+    {
+        MxcLobe param_2 = l;
+        bool param_3 = wo.z >= 0.0;
+        float param_4 = abs(wo.z);
+        float param_5 = alpha;
+        float param_6 = mxc_lobe_eta(param_2, param_3);
+        float e = mxc_dielectric_albedo_rt(param_4, param_5, param_6);
+        vec3 k = vec3(1.0 / max(e, 0.0500000007450580596923828125));
+        return k;
+    }
+    float param_7 = max(wo.z, 0.0);
+    float param_8 = alpha;
+    vec2 ab = mxc_split_sum(param_7, param_8);
+    float e_1 = ab.x + ab.y;
+    MxcLobe param_9 = l;
+    float param_10 = 1.0;
+    bool param_11 = true;
+    return vec3(1.0) + ((mxc_lobe_fresnel(param_9, param_10, param_11) * (1.0 - e_1)) / vec3(max(e_1, 0.0500000007450580596923828125)));
+}
+
+float mxc_dielectric_albedo(float mu, float alpha, float eta)
+{
+    float _990;
+    if (eta >= 1.0)
+    {
+        _990 = eta;
+    }
+    else
+    {
+        _990 = 1.0 / max(eta, 0.001000000047497451305389404296875);
+    }
+    float e = _990;
+    float param = mu;
+    float param_1 = alpha;
+    float param_2 = e;
+    return mxc_dielectric_table(param, param_1, param_2).x;
+}
+
+vec3 mxc_lobe_albedo_scaled(MxcLobe l, vec3 wo, vec3 ms)
+{
+    float mu = clamp(wo.z, 0.0, 1.0);
+    bool _1449 = l.kind == 1;
+    bool _1456;
+    if (!_1449)
+    {
+        _1456 = l.kind == 2;
+    }
+    else
+    {
+        _1456 = _1449;
+    }
+    bool _1463;
+    if (!_1456)
+    {
+        _1463 = l.kind == 3;
+    }
+    else
+    {
+        _1463 = _1456;
+    }
+    if (_1463)
+    {
+        float alpha = sqrt(l.alpha.x * l.alpha.y);
+        bool _1475 = l.kind == 1;
+        bool _1483;
+        if (_1475)
+        {
+            vec2 param = l.alpha;
+            _1483 = !mxc_is_delta(param);
+        }
+        else
+        {
+            _1483 = _1475;
+        }
+        if (_1483)
+        {
+            float param_1 = mu;
+            float param_2 = alpha;
+            float param_3 = l.eta;
+            vec3 e = vec3(mxc_dielectric_albedo(param_1, param_2, param_3));
+            return clamp((e * l.c0) * ms, vec3(0.0), vec3(1.0));
+        }
+        float param_4 = mu;
+        float param_5 = alpha;
+        vec2 ab = mxc_split_sum(param_4, param_5);
+        MxcLobe param_6 = l;
+        float param_7 = 1.0;
+        bool param_8 = true;
+        vec3 f0 = mxc_lobe_fresnel(param_6, param_7, param_8);
+        MxcLobe param_9 = l;
+        float param_10 = 0.0;
+        bool param_11 = true;
+        vec3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
+        vec3 _1528;
+        if (l.kind == 1)
+        {
+            _1528 = l.c0;
+        }
+        else
+        {
+            _1528 = vec3(1.0);
+        }
+        vec3 tint = _1528;
+        vec2 param_12 = l.alpha;
+        if (mxc_is_delta(param_12))
+        {
+            MxcLobe param_13 = l;
+            float param_14 = mu;
+            bool param_15 = true;
+            return mxc_lobe_fresnel(param_13, param_14, param_15) * tint;
+        }
+        return clamp((((f0 * ab.x) + (f90 * ab.y)) * tint) * ms, vec3(0.0), vec3(1.0));
+    }
+    if (l.kind == 8)
+    {
+        return l.c0;
+    }
+    return l.c0;
+}
+
+vec3 mxc_lobe_albedo(MxcLobe l, vec3 wo)
+{
+    MxcLobe param = l;
+    vec3 param_1 = wo;
+    MxcLobe param_2 = l;
+    vec3 param_3 = wo;
+    vec3 param_4 = mxc_lobe_ms_scale(param, param_1);
+    return mxc_lobe_albedo_scaled(param_2, param_3, param_4);
+}
+
+vec3 mxc_lobe_layer_albedo(MxcLobe l, vec3 wo)
+{
+    bool _1595 = l.kind == 9;
+    bool _1603;
+    if (!_1595)
+    {
+        _1603 = l.kind == 10;
+    }
+    else
+    {
+        _1603 = _1595;
+    }
+    if (_1603)
+    {
+        MxcLobe white = l;
+        white.c0 = vec3(1.0);
+        MxcLobe param = white;
+        vec3 param_1 = wo;
+        return mxc_lobe_albedo(param, param_1);
+    }
+    MxcLobe param_2 = l;
+    vec3 param_3 = wo;
+    return mxc_lobe_albedo(param_2, param_3);
+}
+
+float mxc_luminance(vec3 c)
+{
+    return dot(c, vec3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875));
+}
+
+float mxc_lobe_choice(MxcLobe l, vec3 woLocal, vec3 ms)
+{
+    if (all(equal(l.weight, vec3(0.0))))
+    {
+        return 0.0;
+    }
+    MxcLobe param = l;
+    vec3 param_1 = woLocal;
+    vec3 param_2 = ms;
+    vec3 param_3 = l.weight * mxc_lobe_albedo_scaled(param, param_1, param_2);
+    return max(mxc_luminance(param_3), 0.0) + 9.9999997473787516355514526367188e-05;
+}
+
+void mxc_closure_prepare(inout MxcClosure c, vec3 wo)
+{
+    c.choiceTotal = 0.0;
+    for (int k = 0; k < c.count; k++)
+    {
+        MxcLobe l = c.lobes[k];
+        c.ms[k] = vec3(1.0);
+        c.choice[k] = 0.0;
+        if (all(equal(l.weight, vec3(0.0))))
+        {
+            continue;
+        }
+        vec3 param = l.N;
+        vec3 param_1 = l.T;
+        mat3 param_2 = mxc_frame(param, param_1);
+        vec3 param_3 = wo;
+        vec3 o = mxc_to_local(param_2, param_3);
+        MxcLobe param_4 = l;
+        vec3 param_5 = o;
+        c.ms[k] = mxc_lobe_ms_scale(param_4, param_5);
+        MxcLobe param_6 = l;
+        vec3 param_7 = o;
+        vec3 param_8 = c.ms[k];
+        c.choice[k] = mxc_lobe_choice(param_6, param_7, param_8);
+        c.choiceTotal += c.choice[k];
+    }
+}
+
+void mxc_material_closure(MxcGeometry g, vec3 wo, inout MxcClosure c)
+{
+    vec3 v5 = g.N;
+    vec3 v6 = g.T;
+    c.emission = vec3(0.0);
+    c.transparency = vec3(0.0);
+    MxcLobe lobe0;
+    lobe0.kind = 1;
+    lobe0.mode = 1;
+    lobe0.N = v5;
+    lobe0.T = v6;
+    lobe0.alpha = vec2(0.0900000035762786865234375);
+    lobe0.eta = 1.5;
+    lobe0.c0 = vec3(1.0);
+    lobe0.c1 = vec3(1.0);
+    lobe0.c2 = vec3(1.0);
+    lobe0.p0 = 0.0;
+    lobe0.p1 = 1.0;
+    lobe0.film = vec3(0.0);
+    lobe0.tau = vec3(0.0);
+    lobe0.tauEta = 1.0;
+    vec3 param = lobe0.N;
+    vec3 param_1 = lobe0.T;
+    mat3 param_2 = mxc_frame(param, param_1);
+    vec3 param_3 = wo;
+    MxcLobe param_4 = lobe0;
+    vec3 param_5 = mxc_to_local(param_2, param_3);
+    vec3 e1 = mxc_lobe_layer_albedo(param_4, param_5);
+    vec3 w2 = vec3(1.0) - e1;
+    MxcLobe lobe3;
+    lobe3.kind = 5;
+    lobe3.mode = 1;
+    lobe3.N = v5;
+    lobe3.T = g.T;
+    lobe3.alpha = vec2(0.0);
+    lobe3.eta = 1.5;
+    lobe3.c0 = vec3(0.800000011920928955078125);
+    lobe3.c1 = vec3(1.0);
+    lobe3.c2 = vec3(1.0);
+    lobe3.p0 = 0.0;
+    lobe3.p1 = 1.0;
+    lobe3.film = vec3(0.0);
+    lobe3.tau = vec3(0.0);
+    lobe3.tauEta = 1.0;
+    lobe0.weight = vec3(1.0);
+    c.lobes[0] = lobe0;
+    lobe3.weight = w2;
+    c.lobes[1] = lobe3;
+    c.count = 2;
+    MxcClosure param_6 = c;
+    vec3 param_7 = wo;
+    mxc_closure_prepare(param_6, param_7);
+    c = param_6;
+}
+
+int mxc_light_count()
+{
+    int _2882;
+    if (_2881)
+    {
+        _2882 = MXC_LIGHT_COUNT;
+    }
+    else
+    {
+        _2882 = mxc_view.counts.x;
+    }
+    return min(_2882, 8);
+}
+
+int mxc_light_kinds()
+{
+    return _2894;
+}
+
+int mxc_environment_code()
+{
+    int _2862;
+    if (_2861)
+    {
+        _2862 = MXC_ENVIRONMENT;
+    }
+    else
+    {
+        _2862 = mxc_view.counts.y;
+    }
+    return _2862;
+}
+
+float mxc_uniform(inout uint seed)
+{
+    uint param = seed;
+    seed = mxc_pcg(param);
+    return float(seed >> uint(8)) * 5.9604644775390625e-08;
+}
+
+float mxc_radical_inverse(inout uint i, uint base)
+{
+    if (base == 2u)
+    {
+        return float(bitfieldReverse(i) >> uint(8)) * 5.9604644775390625e-08;
+    }
+    float inv = 1.0 / float(base);
+    float f = inv;
+    float r = 0.0;
+    for (; i > 0u; i /= base)
+    {
+        r += (f * float(i % base));
+        f *= inv;
+    }
+    return min(r, 0.999999940395355224609375);
+}
+
+float mxc_safe_sqrt(float x)
+{
+    return sqrt(max(x, 0.0));
+}
+
+vec3 mxc_sample_cosine(vec2 u)
+{
+    float r = sqrt(u.x);
+    float phi = 6.283185482025146484375 * u.y;
+    float param = 1.0 - u.x;
+    return vec3(r * cos(phi), r * sin(phi), mxc_safe_sqrt(param));
+}
+
+vec2 mxc_rough_alpha(vec2 alpha)
+{
+    return max(alpha, vec2(9.9999997473787516355514526367188e-05));
+}
+
+float mxc_ggx_d(vec3 m, inout vec2 alpha)
+{
+    if (m.z <= 0.0)
+    {
+        return 0.0;
+    }
+    vec2 param = alpha;
+    alpha = mxc_rough_alpha(param);
+    vec3 s = vec3(m.x / alpha.x, m.y / alpha.y, m.z);
+    float d = dot(s, s);
+    return 1.0 / ((((3.1415927410125732421875 * alpha.x) * alpha.y) * d) * d);
+}
+
+float mxc_sqr(float x)
+{
+    return x * x;
+}
+
+float mxc_ggx_lambda(vec3 v, inout vec2 alpha)
+{
+    vec2 param = alpha;
+    alpha = mxc_rough_alpha(param);
+    float z2 = v.z * v.z;
+    if (z2 <= 0.0)
+    {
+        return 10000000000.0;
+    }
+    float param_1 = alpha.x * v.x;
+    float param_2 = alpha.y * v.y;
+    float a2 = (mxc_sqr(param_1) + mxc_sqr(param_2)) / z2;
+    return 0.5 * ((-1.0) + sqrt(1.0 + a2));
+}
+
+float mxc_ggx_g2(vec3 wo, vec3 wi, vec2 alpha)
+{
+    vec3 param = wo;
+    vec2 param_1 = alpha;
+    float _666 = mxc_ggx_lambda(param, param_1);
+    vec3 param_2 = wi;
+    vec2 param_3 = alpha;
+    float _672 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0 / ((1.0 + _666) + _672);
+}
+
+vec3 mxc_microfacet_reflect(MxcLobe l, vec3 wo, vec3 wi)
+{
+    bool _1079 = wo.z <= 0.0;
+    bool _1086;
+    if (!_1079)
+    {
+        _1086 = wi.z <= 0.0;
+    }
+    else
+    {
+        _1086 = _1079;
+    }
+    bool _1095;
+    if (!_1086)
+    {
+        vec2 param = l.alpha;
+        _1095 = mxc_is_delta(param);
+    }
+    else
+    {
+        _1095 = _1086;
+    }
+    if (_1095)
+    {
+        return vec3(0.0);
+    }
+    vec3 h = normalize(wo + wi);
+    MxcLobe param_1 = l;
+    float param_2 = max(dot(wo, h), 0.0);
+    bool param_3 = true;
+    vec3 f = mxc_lobe_fresnel(param_1, param_2, param_3);
+    if (l.kind == 1)
+    {
+        f *= l.c0;
+    }
+    vec3 param_4 = h;
+    vec2 param_5 = l.alpha;
+    float _1132 = mxc_ggx_d(param_4, param_5);
+    vec3 param_6 = wo;
+    vec3 param_7 = wi;
+    vec2 param_8 = l.alpha;
+    return ((f * _1132) * mxc_ggx_g2(param_6, param_7, param_8)) / vec3(4.0 * wo.z);
+}
+
+float mxc_fon(float sigma, vec3 wo, vec3 wi)
+{
+    float a = 1.0 / (1.0 + (0.2877933979034423828125 * sigma));
+    float s = dot(wi, wo) - (wi.z * wo.z);
+    float _1170;
+    if (s > 0.0)
+    {
+        _1170 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
+    }
+    else
+    {
+        _1170 = 1.0;
+    }
+    float t = _1170;
+    return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375;
+}
+
+float mxc_fon_albedo(float sigma, float mu)
+{
+    float a = 1.0 / (1.0 + (0.2877933979034423828125 * sigma));
+    float c = clamp(mu, 0.0, 1.0);
+    float param = 1.0 - (c * c);
+    float s = mxc_safe_sqrt(param);
+    float theta = acos(c);
+    float _1215;
+    if (c > 9.9999997473787516355514526367188e-05)
+    {
+        _1215 = (1.0 - ((s * s) * s)) / c;
+    }
+    else
+    {
+        _1215 = 1.5 * c;
+    }
+    float tail = _1215;
+    float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875 * s) * tail)) - (0.666666686534881591796875 * s);
+    return a + (((sigma * a) * g) * 0.3183098733425140380859375);
+}
+
+vec3 mxc_eon(vec3 rho, float sigma, vec3 wo, vec3 wi)
+{
+    float param = sigma;
+    vec3 param_1 = wo;
+    vec3 param_2 = wi;
+    vec3 f = rho * mxc_fon(param, param_1, param_2);
+    float a = 1.0 / (1.0 + (0.2877933979034423828125 * sigma));
+    float eavg = a * (1.0 + (0.072488211095333099365234375 * sigma));
+    if (eavg < 0.999998986721038818359375)
+    {
+        vec3 rhoMs = (((rho * rho) * eavg) / vec3(1.0 - eavg)) / (vec3(1.0) - (rho * (1.0 - eavg)));
+        float param_3 = sigma;
+        float param_4 = wi.z;
+        float param_5 = sigma;
+        float param_6 = wo.z;
+        f += (((rhoMs * (1.0 - mxc_fon_albedo(param_3, param_4))) * (1.0 - mxc_fon_albedo(param_5, param_6))) * 0.3183098733425140380859375);
+    }
+    return f;
+}
+
+vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi)
+{
+    switch (l.kind)
+    {
+        case 1:
+        {
+            if ((wo.z * wi.z) > 0.0)
+            {
+                if ((l.mode & 1) == 0)
+                {
+                    return vec3(0.0);
+                }
+                if (wo.z < 0.0)
+                {
+                    MxcLobe m = l;
+                    m.eta = 1.0 / l.eta;
+                    m.c0 = vec3(1.0);
+                    MxcLobe param = m;
+                    vec3 param_1 = -wo;
+                    vec3 param_2 = -wi;
+                    return mxc_microfacet_reflect(param, param_1, param_2);
+                }
+                MxcLobe param_3 = l;
+                vec3 param_4 = wo;
+                vec3 param_5 = wi;
+                return mxc_microfacet_reflect(param_3, param_4, param_5);
+            }
+            return vec3(0.0);
+        }
+        case 2:
+        case 3:
+        {
+            bool _1677 = l.kind == 3;
+            bool _1684;
+            if (_1677)
+            {
+                _1684 = (l.mode & 1) == 0;
+            }
+            else
+            {
+                _1684 = _1677;
+            }
+            if (_1684)
+            {
+                return vec3(0.0);
+            }
+            MxcLobe param_6 = l;
+            vec3 param_7 = wo;
+            vec3 param_8 = wi;
+            return mxc_microfacet_reflect(param_6, param_7, param_8);
+        }
+        case 5:
+        {
+            bool _1698 = wo.z > 0.0;
+            bool _1704;
+            if (_1698)
+            {
+                _1704 = wi.z > 0.0;
+            }
+            else
+            {
+                _1704 = _1698;
+            }
+            vec3 _1705;
+            if (_1704)
+            {
+                vec3 param_9 = l.c0;
+                float param_10 = l.p0;
+                vec3 param_11 = wo;
+                vec3 param_12 = wi;
+                _1705 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
+            }
+            else
+            {
+                _1705 = vec3(0.0);
+            }
+            return _1705;
+        }
+        default:
+        {
+            return vec3(0.0);
+        }
+    }
+}
+
+float mxc_ggx_g1(vec3 v, vec2 alpha)
+{
+    vec3 param = v;
+    vec2 param_1 = alpha;
+    float _657 = mxc_ggx_lambda(param, param_1);
+    return 1.0 / (1.0 + _657);
+}
+
+float mxc_ggx_pdf_vndf(vec3 wo, vec3 m, vec2 alpha)
+{
+    if (wo.z <= 0.0)
+    {
+        return 0.0;
+    }
+    vec3 param = wo;
+    vec2 param_1 = alpha;
+    vec3 param_2 = m;
+    vec2 param_3 = alpha;
+    float _823 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0)) * _823) / wo.z;
+}
+
+float mxc_mean(vec3 c)
+{
+    return ((c.x + c.y) + c.z) * 0.3333333432674407958984375;
+}
+
+bool mxc_lobe_transmits(MxcLobe l)
+{
+    return false;
+}
+
+float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi)
+{
+    switch (l.kind)
+    {
+        case 1:
+        case 2:
+        case 3:
+        {
+            vec2 param = l.alpha;
+            if (mxc_is_delta(param))
+            {
+                return 0.0;
+            }
+            bool above = wo.z > 0.0;
+            vec3 _1746;
+            if (above)
+            {
+                _1746 = wo;
+            }
+            else
+            {
+                _1746 = -wo;
+            }
+            vec3 o = _1746;
+            vec3 _1756;
+            if (above)
+            {
+                _1756 = wi;
+            }
+            else
+            {
+                _1756 = -wi;
+            }
+            vec3 i = _1756;
+            if (i.z > 0.0)
+            {
+                vec3 h = normalize(o + i);
+                vec3 param_1 = o;
+                vec3 param_2 = h;
+                vec2 param_3 = l.alpha;
+                float p = mxc_ggx_pdf_vndf(param_1, param_2, param_3) / (4.0 * max(dot(o, h), 9.9999999747524270787835121154785e-07));
+                if (l.kind == 2)
+                {
+                    return p;
+                }
+                if ((l.mode & 1) == 0)
+                {
+                    return 0.0;
+                }
+                MxcLobe param_4 = l;
+                float param_5 = max(dot(o, h), 0.0);
+                bool param_6 = above;
+                vec3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
+                float fr = mxc_mean(param_7);
+                MxcLobe param_8 = l;
+                bool _1819 = mxc_lobe_transmits(param_8);
+                bool _1826;
+                if (_1819)
+                {
+                    _1826 = (l.mode & 1) != 0;
+                }
+                else
+                {
+                    _1826 = _1819;
+                }
+                return p * (_1826 ? fr : 1.0);
+            }
+            return 0.0;
+        }
+        default:
+        {
+            bool _1834 = wo.z > 0.0;
+            bool _1840;
+            if (_1834)
+            {
+                _1840 = wi.z > 0.0;
+            }
+            else
+            {
+                _1840 = _1834;
+            }
+            float _1841;
+            if (_1840)
+            {
+                _1841 = wi.z * 0.3183098733425140380859375;
+            }
+            else
+            {
+                _1841 = 0.0;
+            }
+            return _1841;
+        }
+    }
+}
+
+vec3 mxc_ggx_sample_vndf(vec3 wo, inout vec2 alpha, vec2 u)
+{
+    vec2 param = alpha;
+    alpha = mxc_rough_alpha(param);
+    vec3 vh = normalize(vec3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
+    float lensq = (vh.x * vh.x) + (vh.y * vh.y);
+    vec3 _710;
+    if (lensq > 0.0)
+    {
+        _710 = vec3(-vh.y, vh.x, 0.0) * inversesqrt(lensq);
+    }
+    else
+    {
+        _710 = vec3(1.0, 0.0, 0.0);
+    }
+    vec3 t1 = _710;
+    vec3 t2 = cross(vh, t1);
+    float r = sqrt(u.x);
+    float phi = 6.283185482025146484375 * u.y;
+    float p1 = r * cos(phi);
+    float p2 = r * sin(phi);
+    float s = 0.5 * (1.0 + vh.z);
+    float param_1 = 1.0 - (p1 * p1);
+    p2 = ((1.0 - s) * mxc_safe_sqrt(param_1)) + (s * p2);
+    float param_2 = (1.0 - (p1 * p1)) - (p2 * p2);
+    vec3 nh = ((t1 * p1) + (t2 * p2)) + (vh * mxc_safe_sqrt(param_2));
+    return normalize(vec3(alpha.x * nh.x, alpha.y * nh.y, max(nh.z, 0.0)));
+}
+
+MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u)
+{
+    MxcLobeSample s;
+    s.valid = false;
+    s.delta = false;
+    s.pdf = 0.0;
+    s.value = vec3(0.0);
+    s.wi = vec3(0.0, 0.0, 1.0);
+    switch (l.kind)
+    {
+        case 1:
+        case 2:
+        case 3:
+        {
+            bool above = wo.z > 0.0;
+            vec3 _1871;
+            if (above)
+            {
+                _1871 = wo;
+            }
+            else
+            {
+                _1871 = -wo;
+            }
+            vec3 o = _1871;
+            if (o.z <= 0.0)
+            {
+                return s;
+            }
+            vec2 param = l.alpha;
+            bool delta = mxc_is_delta(param);
+            vec3 _1893;
+            if (delta)
+            {
+                _1893 = vec3(0.0, 0.0, 1.0);
+            }
+            else
+            {
+                vec3 param_1 = o;
+                vec2 param_2 = l.alpha;
+                vec2 param_3 = u.xy;
+                vec3 _1905 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _1893 = _1905;
+            }
+            vec3 m = _1893;
+            float hm = dot(o, m);
+            bool _1914 = l.kind == 1;
+            bool _1921;
+            if (!_1914)
+            {
+                _1921 = l.kind == 3;
+            }
+            else
+            {
+                _1921 = _1914;
+            }
+            bool _1927;
+            if (_1921)
+            {
+                MxcLobe param_4 = l;
+                _1927 = mxc_lobe_transmits(param_4);
+            }
+            else
+            {
+                _1927 = _1921;
+            }
+            bool transmits = _1927;
+            bool _1931 = l.kind == 2;
+            bool _1939;
+            if (!_1931)
+            {
+                _1939 = (l.mode & 1) != 0;
+            }
+            else
+            {
+                _1939 = _1931;
+            }
+            bool reflects = _1939;
+            MxcLobe param_5 = l;
+            float param_6 = max(hm, 0.0);
+            bool param_7 = above;
+            vec3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
+            float _1951;
+            if (transmits)
+            {
+                vec3 param_8 = f;
+                _1951 = mxc_mean(param_8);
+            }
+            else
+            {
+                _1951 = 1.0;
+            }
+            float fr = _1951;
+            float _1961;
+            if (transmits)
+            {
+                _1961 = reflects ? fr : 0.0;
+            }
+            else
+            {
+                _1961 = 1.0;
+            }
+            float pReflect = _1961;
+            if (u.z < pReflect)
+            {
+                vec3 i = reflect(-o, m);
+                if (i.z <= 0.0)
+                {
+                    return s;
+                }
+                vec3 _1988;
+                if (above)
+                {
+                    _1988 = i;
+                }
+                else
+                {
+                    _1988 = -i;
+                }
+                s.wi = _1988;
+                s.delta = delta;
+                if (delta)
+                {
+                    vec3 _2006;
+                    if (l.kind == 1)
+                    {
+                        vec3 _2010;
+                        if (above)
+                        {
+                            _2010 = l.c0;
+                        }
+                        else
+                        {
+                            _2010 = vec3(1.0);
+                        }
+                        _2006 = _2010;
+                    }
+                    else
+                    {
+                        _2006 = vec3(1.0);
+                    }
+                    vec3 tint = _2006;
+                    s.value = f * tint;
+                    s.pdf = pReflect;
+                }
+                else
+                {
+                    MxcLobe param_9 = l;
+                    vec3 param_10 = wo;
+                    vec3 param_11 = s.wi;
+                    s.value = mxc_lobe_eval(param_9, param_10, param_11);
+                    MxcLobe param_12 = l;
+                    vec3 param_13 = wo;
+                    vec3 param_14 = s.wi;
+                    s.pdf = mxc_lobe_pdf(param_12, param_13, param_14);
+                }
+                s.valid = s.pdf > 0.0;
+                return s;
+            }
+            return s;
+        }
+        default:
+        {
+            if (wo.z <= 0.0)
+            {
+                return s;
+            }
+            vec2 param_15 = u.xy;
+            s.wi = mxc_sample_cosine(param_15);
+            MxcLobe param_16 = l;
+            vec3 param_17 = wo;
+            vec3 param_18 = s.wi;
+            s.value = mxc_lobe_eval(param_16, param_17, param_18);
+            MxcLobe param_19 = l;
+            vec3 param_20 = wo;
+            vec3 param_21 = s.wi;
+            s.pdf = mxc_lobe_pdf(param_19, param_20, param_21);
+            s.valid = s.pdf > 0.0;
+            return s;
+        }
+    }
+}
+
+vec3 mxc_to_world(mat3 frame, vec3 v)
+{
+    return ((frame[0] * v.x) + (frame[1] * v.y)) + (frame[2] * v.z);
+}
+
+vec3 mxc_lobe_absorption(MxcLobe l, float mu)
+{
+    return vec3(1.0);
+}
+
+MxcSample mxc_closure_sample_direction(MxcClosure c, vec3 wo, vec3 u)
+{
+    MxcSample s;
+    s.valid = false;
+    s.delta = false;
+    s.evaluate = false;
+    s.pdf = 0.0;
+    s.weight = vec3(0.0);
+    s.wi = wo;
+    float total = c.choiceTotal;
+    if ((c.count == 0) || (total <= 0.0))
+    {
+        return s;
+    }
+    float x = u.z * total;
+    int chosen = -1;
+    float before = 0.0;
+    float p = 0.0;
+    float lastBefore = 0.0;
+    int last = -1;
+    for (int k = 0; k < c.count; k++)
+    {
+        float pk = c.choice[k];
+        if (pk <= 0.0)
+        {
+            continue;
+        }
+        if (x < (before + pk))
+        {
+            chosen = k;
+            p = pk;
+            break;
+        }
+        last = k;
+        lastBefore = before;
+        before += pk;
+    }
+    if (chosen < 0)
+    {
+        chosen = max(last, 0);
+        p = c.choice[chosen];
+        before = lastBefore;
+    }
+    if (p <= 0.0)
+    {
+        return s;
+    }
+    float uz = clamp((x - before) / p, 0.0, 0.999999940395355224609375);
+    MxcLobe l = c.lobes[chosen];
+    vec3 param = l.N;
+    vec3 param_1 = l.T;
+    mat3 frame = mxc_frame(param, param_1);
+    mat3 param_2 = frame;
+    vec3 param_3 = wo;
+    vec3 o = mxc_to_local(param_2, param_3);
+    MxcLobe param_4 = l;
+    vec3 param_5 = o;
+    vec3 param_6 = vec3(u.xy, uz);
+    MxcLobeSample ls = mxc_lobe_sample(param_4, param_5, param_6);
+    if (!ls.valid)
+    {
+        return s;
+    }
+    mat3 param_7 = frame;
+    vec3 param_8 = ls.wi;
+    s.wi = mxc_to_world(param_7, param_8);
+    if (ls.delta)
+    {
+        s.delta = true;
+        s.pdf = (ls.pdf * p) / total;
+        MxcLobe param_9 = l;
+        float param_10 = abs(ls.wi.z);
+        s.weight = (((l.weight * c.ms[chosen]) * mxc_lobe_absorption(param_9, param_10)) * ls.value) / vec3(s.pdf);
+        s.valid = s.pdf > 0.0;
+        return s;
+    }
+    s.evaluate = true;
+    s.valid = true;
+    return s;
+}
+
+vec3 mxc_exit_direction(vec3 d, vec3 t)
+{
+    vec3 axis = cross(d, t);
+    float s = length(axis);
+    if (s < 9.9999999747524270787835121154785e-07)
+    {
+        return t;
+    }
+    axis /= vec3(s);
+    float c = dot(d, t);
+    return ((t * c) + (cross(axis, t) * s)) + ((axis * dot(axis, t)) * (1.0 - c));
+}
+
+vec3 mxc_sky(vec3 d)
+{
+    float y = clamp(d.y, -1.0, 1.0);
+    vec3 horizon = vec3(1.0, 0.959999978542327880859375, 0.89999997615814208984375);
+    vec3 zenith = vec3(0.300000011920928955078125, 0.5, 0.949999988079071044921875);
+    vec3 ground = vec3(0.1599999964237213134765625, 0.14499999582767486572265625, 0.12999999523162841796875);
+    if (y >= 0.0)
+    {
+        return mix(horizon, zenith, vec3(sqrt(y)));
+    }
+    return mix(horizon, ground, vec3(sqrt(-y)));
+}
+
+vec3 mxc_env_to_map(vec3 w, float angle)
+{
+    float c = cos(angle);
+    float s = sin(angle);
+    return vec3((c * w.x) - (s * w.z), w.y, (s * w.x) + (c * w.z));
+}
+
+vec2 mxc_env_uv(vec3 d)
+{
+    float _2558;
+    if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13)
+    {
+        _2558 = 0.5 + (atan(d.x, -d.z) * 0.15915493667125701904296875);
+    }
+    else
+    {
+        _2558 = 0.5;
+    }
+    float u = _2558;
+    float v = atan(length(d.xz), d.y) * 0.3183098733425140380859375;
+    return vec2(u, v);
+}
+
+vec3 mxc_env_lookup(vec3 d)
+{
+    vec3 param = d;
+    return textureLod(mxc_env_radiance, mxc_env_uv(param), 0.0).xyz;
+}
+
+vec3 mxc_environment(vec3 d)
+{
+    int code = mxc_environment_code();
+    if (code == 1)
+    {
+        return vec3(mxc_view.environment.x);
+    }
+    if (code == 2)
+    {
+        vec3 param = d;
+        return mxc_sky(param) * mxc_view.environment.x;
+    }
+    if (code == 3)
+    {
+        vec3 param_1 = d;
+        float param_2 = mxc_view.environment.z;
+        vec3 param_3 = mxc_env_to_map(param_1, param_2);
+        return mxc_env_lookup(param_3) * mxc_view.environment.x;
+    }
+    return vec3(0.0);
+}
+
+uint mxc_env_cell(vec3 d)
+{
+    vec3 param = d;
+    vec2 uv = mxc_env_uv(param);
+    uvec2 size = max(_2605.mxc_env_size.xy, uvec2(1u));
+    uint i = min(uint(max(uv.x, 0.0) * float(size.x)), (size.x - 1u));
+    uint j = min(uint(max(uv.y, 0.0) * float(size.y)), (size.y - 1u));
+    return (j * size.x) + i;
+}
+
+float mxc_env_pdf(vec3 d)
+{
+    vec3 param = d;
+    return _2605.mxc_env_cells[mxc_env_cell(param)].z;
+}
+
+float mxc_power_heuristic(float a, float b)
+{
+    float a2 = a * a;
+    float b2 = b * b;
+    float _2991;
+    if ((a2 + b2) > 0.0)
+    {
+        _2991 = a2 / (a2 + b2);
+    }
+    else
+    {
+        _2991 = 0.0;
+    }
+    return _2991;
+}
+
+vec3 mxc_env_sample(vec4 u, out float pdf)
+{
+    uvec2 size = max(_2605.mxc_env_size.xy, uvec2(1u));
+    uint n = size.x * size.y;
+    uint k = min(uint(u.x * float(n)), (n - 1u));
+    vec4 cell = _2605.mxc_env_cells[k];
+    if (u.y >= cell.x)
+    {
+        k = min(floatBitsToUint(cell.y), (n - 1u));
+    }
+    pdf = _2605.mxc_env_cells[k].z;
+    uint i = k % size.x;
+    uint j = k / size.x;
+    float phi = 6.283185482025146484375 * (((float(i) + u.z) / float(size.x)) - 0.5);
+    float y0 = cos((3.1415927410125732421875 * float(j)) / float(size.y));
+    float y1 = cos((3.1415927410125732421875 * float(j + 1u)) / float(size.y));
+    float y = mix(y0, y1, u.w);
+    float param = 1.0 - (y * y);
+    float r = mxc_safe_sqrt(param);
+    return vec3(r * sin(phi), y, (-r) * cos(phi));
+}
+
+vec3 mxc_env_to_world(vec3 m, float angle)
+{
+    float c = cos(angle);
+    float s = sin(angle);
+    return vec3((c * m.x) + (s * m.z), m.y, ((-s) * m.x) + (c * m.z));
+}
+
+vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, inout float pdf)
+{
+    vec3 f = vec3(0.0);
+    float p = 0.0;
+    for (int k = 0; k < c.count; k++)
+    {
+        MxcLobe l = c.lobes[k];
+        if (all(equal(l.weight, vec3(0.0))))
+        {
+            continue;
+        }
+        vec3 param = l.N;
+        vec3 param_1 = l.T;
+        mat3 frame = mxc_frame(param, param_1);
+        mat3 param_2 = frame;
+        vec3 param_3 = wo;
+        vec3 o = mxc_to_local(param_2, param_3);
+        mat3 param_4 = frame;
+        vec3 param_5 = wi;
+        vec3 i = mxc_to_local(param_4, param_5);
+        MxcLobe param_6 = l;
+        float param_7 = abs(i.z);
+        MxcLobe param_8 = l;
+        vec3 param_9 = o;
+        vec3 param_10 = i;
+        f += (((l.weight * c.ms[k]) * mxc_lobe_absorption(param_6, param_7)) * mxc_lobe_eval(param_8, param_9, param_10));
+        if (wantPdf)
+        {
+            MxcLobe param_11 = l;
+            vec3 param_12 = o;
+            vec3 param_13 = i;
+            p += (c.choice[k] * mxc_lobe_pdf(param_11, param_12, param_13));
+        }
+    }
+    float _2269;
+    if (c.choiceTotal > 0.0)
+    {
+        _2269 = p / c.choiceTotal;
+    }
+    else
+    {
+        _2269 = 0.0;
+    }
+    pdf = _2269;
+    return f;
+}
+
+void main()
+{
+    MxcGeometry g;
+    g.P = vPosition;
+    g.Pobj = vObjectPosition;
+    vec3 param = vNormal;
+    vec3 param_1 = vec3(0.0, 0.0, 1.0);
+    vec3 N = mxc_safe_normalize(param, param_1);
+    if (!gl_FrontFacing)
+    {
+        N = -N;
+    }
+    float handedness = (vTangent.w < 0.0) ? (-1.0) : 1.0;
+    vec3 param_2 = N;
+    vec3 param_3 = vTangent.xyz;
+    mat3 frame = mxc_frame(param_2, param_3);
+    g.N = N;
+    g.T = frame[0];
+    g.B = frame[1] * handedness;
+    vec3 param_4 = vObjectNormal;
+    vec3 param_5 = vec3(0.0, 0.0, 1.0);
+    g.Nobj = mxc_safe_normalize(param_4, param_5);
+    vec3 param_6 = g.Nobj;
+    vec3 param_7 = vObjectTangent;
+    mat3 objectFrame = mxc_frame(param_6, param_7);
+    g.Tobj = objectFrame[0];
+    g.Bobj = objectFrame[1] * handedness;
+    g.uv = vUv;
+    g.color = vec4(1.0);
+    g.objectToWorld = mxc_view.objectToWorld;
+    g.frame = mxc_params.frame;
+    g.time = mxc_params.time;
+    vec3 param_8 = mxc_view.eye.xyz - vPosition;
+    vec3 param_9 = N;
+    vec3 wo = mxc_safe_normalize(param_8, param_9);
+    uint param_10 = uint(mxc_view.counts.z) + 7u;
+    uint param_11 = uint(gl_FragCoord.y) + mxc_pcg(param_10);
+    uint param_12 = uint(gl_FragCoord.x) ^ mxc_pcg(param_11);
+    uint param_13 = mxc_pcg(param_12);
+    mxc_closure_seed(param_13);
+    MxcGeometry param_14 = g;
+    vec3 param_15 = wo;
+    MxcClosure param_16;
+    mxc_material_closure(param_14, param_15, param_16);
+    MxcClosure c = param_16;
+    vec3 radiance = c.emission * mxc_view.environment.y;
+    int lights = mxc_light_count();
+    int kinds = mxc_light_kinds();
+    bool image = mxc_environment_code() == 3;
+    int _3190;
+    if (mxc_environment_code() != 0)
+    {
+        _3190 = max(mxc_view.counts.w, 1);
+    }
+    else
+    {
+        _3190 = 0;
+    }
+    int n = _3190;
+    uint param_17 = uint(mxc_view.counts.z);
+    uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
+    uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
+    uint seed = mxc_pcg(param_19);
+    uint param_20 = uint(gl_FragCoord.y) + 2654435769u;
+    uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
+    uint pixel = mxc_pcg(param_21);
+    uint param_22 = pixel;
+    float _3233 = mxc_uniform(param_22);
+    pixel = param_22;
+    uint param_23 = pixel;
+    float _3237 = mxc_uniform(param_23);
+    pixel = param_23;
+    uint param_24 = pixel;
+    float _3241 = mxc_uniform(param_24);
+    pixel = param_24;
+    uint param_25 = pixel;
+    float _3245 = mxc_uniform(param_25);
+    pixel = param_25;
+    vec4 shift = vec4(_3233, _3237, _3241, _3245);
+    vec3 sum = vec3(0.0);
+    int _3271;
+    MxcSample smp;
+    vec3 _3346;
+    vec3 _3350;
+    float _3392;
+    float param_49;
+    int _3494;
+    float param_59;
+    float _3653;
+    for (int b = 0; b < max(n, int(lights > 0)); b++)
+    {
+        int batchLights = (b == 0) ? lights : 0;
+        if (b < n)
+        {
+            _3271 = 1 + int(image);
+        }
+        else
+        {
+            _3271 = 0;
+        }
+        int batchSamples = _3271;
+        uint index = (uint(mxc_view.counts.z) * uint(max(n, 1))) + uint(b);
+        uint param_26 = index;
+        uint param_27 = 2u;
+        float _3294 = mxc_radical_inverse(param_26, param_27);
+        uint param_28 = index;
+        uint param_29 = 3u;
+        float _3298 = mxc_radical_inverse(param_28, param_29);
+        uint param_30 = index;
+        uint param_31 = 5u;
+        float _3303 = mxc_radical_inverse(param_30, param_31);
+        uint param_32 = index;
+        uint param_33 = 7u;
+        float _3307 = mxc_radical_inverse(param_32, param_33);
+        vec4 choice = fract(vec4(_3294, _3298, _3303, _3307) + shift);
+        smp.valid = false;
+        smp.evaluate = false;
+        smp.delta = false;
+        smp.pdf = 0.0;
+        smp.weight = vec3(0.0);
+        smp.wi = N;
+        if (n > 0)
+        {
+            MxcClosure param_34 = c;
+            vec3 param_35 = wo;
+            vec3 param_36 = vec3(choice.z, choice.w, choice.x);
+            smp = mxc_closure_sample_direction(param_34, param_35, param_36);
+        }
+        bool above = dot(smp.wi, N) > 0.0;
+        if (smp.valid)
+        {
+            if (above)
+            {
+                _3350 = smp.wi;
+            }
+            else
+            {
+                vec3 param_37 = -wo;
+                vec3 param_38 = smp.wi;
+                _3350 = mxc_exit_direction(param_37, param_38);
+            }
+            vec3 param_39 = _3350;
+            _3346 = mxc_environment(param_39);
+        }
+        else
+        {
+            _3346 = vec3(0.0);
+        }
+        vec3 seen = _3346;
+        bool _3373 = (b < n) && smp.valid;
+        bool _3379;
+        if (_3373)
+        {
+            _3379 = !smp.evaluate;
+        }
+        else
+        {
+            _3379 = _3373;
+        }
+        if (_3379)
+        {
+            bool _3385 = image && above;
+            bool _3391;
+            if (_3385)
+            {
+                _3391 = !smp.delta;
+            }
+            else
+            {
+                _3391 = _3385;
+            }
+            if (_3391)
+            {
+                vec3 param_40 = smp.wi;
+                float param_41 = mxc_view.environment.z;
+                vec3 param_42 = mxc_env_to_map(param_40, param_41);
+                float param_43 = smp.pdf;
+                float param_44 = mxc_env_pdf(param_42);
+                _3392 = mxc_power_heuristic(param_43, param_44);
+            }
+            else
+            {
+                _3392 = 1.0;
+            }
+            float w = _3392;
+            sum += ((smp.weight * w) * seen);
+        }
+        vec3 m = vec3(0.0);
+        float lightPdf = 0.0;
+        vec3 imageWi = N;
+        vec3 imageSeen = vec3(0.0);
+        if (image && (b < n))
+        {
+            uint param_45 = seed;
+            float _3436 = mxc_uniform(param_45);
+            seed = param_45;
+            uint param_46 = seed;
+            float _3440 = mxc_uniform(param_46);
+            seed = param_46;
+            uint param_47 = seed;
+            float _3444 = mxc_uniform(param_47);
+            seed = param_47;
+            vec4 v = vec4(choice.y, _3436, _3440, _3444);
+            vec4 param_48 = v;
+            vec3 _3450 = mxc_env_sample(param_48, param_49);
+            lightPdf = param_49;
+            m = _3450;
+            vec3 param_50 = m;
+            float param_51 = mxc_view.environment.z;
+            imageWi = mxc_env_to_world(param_50, param_51);
+            bool _3459 = lightPdf > 0.0;
+            bool _3466;
+            if (_3459)
+            {
+                _3466 = dot(imageWi, N) > 0.0;
+            }
+            else
+            {
+                _3466 = _3459;
+            }
+            if (_3466)
+            {
+                vec3 param_52 = imageWi;
+                imageSeen = mxc_environment(param_52);
+            }
+        }
+        for (int j = 0; j < (batchLights + batchSamples); j++)
+        {
+            vec3 wi = N;
+            vec3 incoming = vec3(0.0);
+            bool use = true;
+            if ((n == 0) || (j < batchLights))
+            {
+                _3494 = 0;
+            }
+            else
+            {
+                _3494 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+            }
+            int strategy = _3494;
+            if (strategy == 0)
+            {
+                vec4 light = mxc_view.lightVector[j];
+                incoming = mxc_view.lightRadiance[j].xyz;
+                bool _3519 = kinds == 1;
+                bool _3532;
+                if (!_3519)
+                {
+                    bool _3525 = (kinds & 1) != 0;
+                    bool _3531;
+                    if (_3525)
+                    {
+                        _3531 = light.w == 0.0;
+                    }
+                    else
+                    {
+                        _3531 = _3525;
+                    }
+                    _3532 = _3531;
+                }
+                else
+                {
+                    _3532 = _3519;
+                }
+                bool directional = _3532;
+                if (directional)
+                {
+                    vec3 param_53 = light.xyz;
+                    vec3 param_54 = N;
+                    wi = mxc_safe_normalize(param_53, param_54);
+                }
+                else
+                {
+                    vec3 d = light.xyz - vPosition;
+                    float d2 = max(dot(d, d), 9.9999999392252902907785028219223e-09);
+                    wi = d * inversesqrt(d2);
+                    incoming /= vec3(d2);
+                    bool _3564 = (kinds & 4) != 0;
+                    bool _3570;
+                    if (_3564)
+                    {
+                        _3570 = light.w == 2.0;
+                    }
+                    else
+                    {
+                        _3570 = _3564;
+                    }
+                    if (_3570)
+                    {
+                        vec4 spot = mxc_view.lightSpot[j];
+                        incoming *= smoothstep(spot.w, mxc_view.lightRadiance[j].w, dot(-wi, spot.xyz));
+                    }
+                }
+            }
+            else
+            {
+                if (strategy == 1)
+                {
+                    wi = smp.wi;
+                    incoming = seen;
+                    use = smp.valid && smp.evaluate;
+                }
+                else
+                {
+                    wi = imageWi;
+                    incoming = imageSeen;
+                    bool _3607 = lightPdf > 0.0;
+                    bool _3614;
+                    if (_3607)
+                    {
+                        _3614 = dot(imageWi, N) > 0.0;
+                    }
+                    else
+                    {
+                        _3614 = _3607;
+                    }
+                    use = _3614;
+                }
+            }
+            MxcClosure param_55 = c;
+            vec3 param_56 = wo;
+            vec3 param_57 = wi;
+            bool param_58 = strategy != 0;
+            vec3 _3627 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            float pdf = param_59;
+            vec3 f = _3627;
+            if (strategy == 0)
+            {
+                radiance += (f * incoming);
+            }
+            else
+            {
+                if (strategy == 1)
+                {
+                    if (use && (pdf > 0.0))
+                    {
+                        if (image && above)
+                        {
+                            vec3 param_60 = wi;
+                            float param_61 = mxc_view.environment.z;
+                            vec3 param_62 = mxc_env_to_map(param_60, param_61);
+                            float param_63 = pdf;
+                            float param_64 = mxc_env_pdf(param_62);
+                            _3653 = mxc_power_heuristic(param_63, param_64);
+                        }
+                        else
+                        {
+                            _3653 = 1.0;
+                        }
+                        float w_1 = _3653;
+                        sum += (((f * w_1) / vec3(pdf)) * incoming);
+                    }
+                }
+                else
+                {
+                    if (use)
+                    {
+                        vec3 param_65 = m;
+                        float param_66 = mxc_env_pdf(param_65);
+                        float param_67 = pdf;
+                        float w_2 = mxc_power_heuristic(param_66, param_67);
+                        sum += (((f * w_2) * incoming) / vec3(lightPdf));
+                    }
+                }
+            }
+        }
+    }
+    radiance += (sum / vec3(float(max(n, 1))));
+    vec3 param_68 = c.transparency;
+    float coverage = 1.0 - clamp(mxc_luminance(param_68), 0.0, 1.0);
+    outColor = vec4(radiance, coverage);
+}
+
+// ==== vertex (main) ====
+#version 450
+
+#ifndef SPIRV_CROSS_CONSTANT_ID_0
+#define SPIRV_CROSS_CONSTANT_ID_0 -1
+#endif
+const int MXC_ENVIRONMENT = SPIRV_CROSS_CONSTANT_ID_0;
+#ifndef SPIRV_CROSS_CONSTANT_ID_1
+#define SPIRV_CROSS_CONSTANT_ID_1 -1
+#endif
+const int MXC_LIGHT_COUNT = SPIRV_CROSS_CONSTANT_ID_1;
+#ifndef SPIRV_CROSS_CONSTANT_ID_2
+#define SPIRV_CROSS_CONSTANT_ID_2 -1
+#endif
+const int MXC_LIGHT_KINDS = SPIRV_CROSS_CONSTANT_ID_2;
+
+layout(binding = 0, std140) uniform MxcView
+{
+    mat4 objectToWorld;
+    mat4 normalToWorld;
+    mat4 worldToClip;
+    vec4 eye;
+    vec4 jitter;
+    vec4 lightVector[8];
+    vec4 lightSpot[8];
+    vec4 lightRadiance[8];
+    ivec4 counts;
+    vec4 environment;
+} mxc_view;
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 0) out vec3 vPosition;
+layout(location = 1) out vec3 vNormal;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) out vec4 vTangent;
+layout(location = 2) in vec4 inTangent;
+layout(location = 3) out vec2 vUv;
+layout(location = 3) in vec2 inUv;
+layout(location = 4) out vec3 vObjectPosition;
+layout(location = 5) out vec3 vObjectNormal;
+layout(location = 6) out vec3 vObjectTangent;
+
+void main()
+{
+    precise vec4 _34 = mxc_view.objectToWorld * vec4(inPosition, 1.0);
+    vec4 world = _34;
+    vPosition = world.xyz;
+    vNormal = mat3(mxc_view.normalToWorld[0].xyz, mxc_view.normalToWorld[1].xyz, mxc_view.normalToWorld[2].xyz) * inNormal;
+    vTangent = vec4(mat3(mxc_view.objectToWorld[0].xyz, mxc_view.objectToWorld[1].xyz, mxc_view.objectToWorld[2].xyz) * inTangent.xyz, inTangent.w);
+    vUv = inUv;
+    vObjectPosition = inPosition;
+    vObjectNormal = inNormal;
+    vObjectTangent = inTangent.xyz;
+    precise vec4 _96 = mxc_view.worldToClip * world;
+    vec4 clip = _96;
+    precise vec2 _105 = mxc_view.jitter.xy * clip.w;
+    precise vec2 _108 = clip.xy + _105;
+    clip.x = _108.x;
+    clip.y = _108.y;
+    gl_Position = clip;
+}
+

@@ -1,0 +1,2301 @@
+// ==== corpus/materialx/examples/StandardSurface/standard_surface_brick_procedural.mtlx: material M_BrickPattern, placements ====
+// mxc_tables {"sampler":0,"texture":0}
+// MxcView {"buffer":0}
+// MxcParameters {"buffer":1}
+// mxc_texture_0 {"sampler":1,"texture":1}
+// mxc_texture_1 {"sampler":2,"texture":2}
+// mxc_texture_2 {"sampler":3,"texture":3}
+// mxc_texture_3 {"sampler":4,"texture":4}
+// mxc_texture_4 {"sampler":5,"texture":5}
+// mxc_texture_5 {"sampler":6,"texture":6}
+// mxc_env_radiance {"sampler":7,"texture":7}
+// MxcEnvDistribution {"buffer":2}
+// ==== fragment (main0) ====
+#pragma clang diagnostic ignored "-Wmissing-prototypes"
+#pragma clang diagnostic ignored "-Wmissing-braces"
+
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+template<typename T, size_t Num>
+struct spvUnsafeArray
+{
+    T elements[Num ? Num : 1];
+    
+    thread T& operator [] (size_t pos) thread
+    {
+        return elements[pos];
+    }
+    constexpr const thread T& operator [] (size_t pos) const thread
+    {
+        return elements[pos];
+    }
+    
+    device T& operator [] (size_t pos) device
+    {
+        return elements[pos];
+    }
+    constexpr const device T& operator [] (size_t pos) const device
+    {
+        return elements[pos];
+    }
+    
+    constexpr const constant T& operator [] (size_t pos) const constant
+    {
+        return elements[pos];
+    }
+    
+    threadgroup T& operator [] (size_t pos) threadgroup
+    {
+        return elements[pos];
+    }
+    constexpr const threadgroup T& operator [] (size_t pos) const threadgroup
+    {
+        return elements[pos];
+    }
+};
+
+// Implementation of the GLSL mod() function, which is slightly different than Metal fmod()
+template<typename Tx, typename Ty>
+inline Tx mod(Tx x, Ty y)
+{
+    return x - y * floor(x / y);
+}
+
+struct MxcLobe
+{
+    int kind;
+    int mode;
+    float3 weight;
+    float3 N;
+    float3 T;
+    float2 alpha;
+    float eta;
+    float3 c0;
+    float3 c1;
+    float3 c2;
+    float p0;
+    float p1;
+    float3 film;
+    float3 tau;
+    float tauEta;
+};
+
+struct MxcLobeSample
+{
+    float3 wi;
+    float3 value;
+    float pdf;
+    short delta;
+    short valid;
+};
+
+struct MxcClosure
+{
+    spvUnsafeArray<MxcLobe, 2> lobes;
+    int count;
+    spvUnsafeArray<float, 2> choice;
+    float choiceTotal;
+    spvUnsafeArray<float3, 2> ms;
+    float3 emission;
+    float3 transparency;
+};
+
+struct MxcSample
+{
+    float3 wi;
+    float3 weight;
+    float pdf;
+    short delta;
+    short evaluate;
+    short valid;
+};
+
+struct MxcGeometry
+{
+    float3 P;
+    float3 Pobj;
+    float3 N;
+    float3 Nobj;
+    float3 T;
+    float3 Tobj;
+    float3 B;
+    float3 Bobj;
+    float2 uv;
+    float4 color;
+    float4x4 objectToWorld;
+    float frame;
+    float time;
+};
+
+struct MxcParameters
+{
+    uint missing_textures;
+    float frame;
+    float time;
+};
+
+struct MxcEnvDistribution
+{
+    uint4 mxc_env_size;
+    float4 mxc_env_cells[1];
+};
+
+constant int MXC_ENVIRONMENT_tmp [[function_constant(0)]];
+constant int MXC_ENVIRONMENT = is_function_constant_defined(MXC_ENVIRONMENT_tmp) ? MXC_ENVIRONMENT_tmp : -1;
+constant bool _3229 = (MXC_ENVIRONMENT != (-1));
+
+struct MxcView
+{
+    float4x4 objectToWorld;
+    float4x4 normalToWorld;
+    float4x4 worldToClip;
+    float4 eye;
+    float4 jitter;
+    float4 lightVector[8];
+    float4 lightSpot[8];
+    float4 lightRadiance[8];
+    int4 counts;
+    float4 environment;
+};
+
+constant int MXC_LIGHT_COUNT_tmp [[function_constant(1)]];
+constant int MXC_LIGHT_COUNT = is_function_constant_defined(MXC_LIGHT_COUNT_tmp) ? MXC_LIGHT_COUNT_tmp : -1;
+constant bool _3248 = (MXC_LIGHT_COUNT != (-1));
+constant int MXC_LIGHT_KINDS_tmp [[function_constant(2)]];
+constant int MXC_LIGHT_KINDS = is_function_constant_defined(MXC_LIGHT_KINDS_tmp) ? MXC_LIGHT_KINDS_tmp : -1;
+constant bool _3260 = (MXC_LIGHT_KINDS != (-1));
+constant int _3261 = _3260 ? MXC_LIGHT_KINDS : 7;
+
+struct main0_out
+{
+    float4 outColor [[color(0)]];
+};
+
+struct main0_in
+{
+    float3 vPosition [[user(locn0)]];
+    float3 vNormal [[user(locn1)]];
+    float4 vTangent [[user(locn2)]];
+    float2 vUv [[user(locn3)]];
+    float3 vObjectPosition [[user(locn4)]];
+    float3 vObjectNormal [[user(locn5)]];
+    float3 vObjectTangent [[user(locn6)]];
+};
+
+static inline __attribute__((always_inline))
+float3 mxc_safe_normalize(thread const float3& v, thread const float3& fallback)
+{
+    float l2 = dot(v, v);
+    float3 _390;
+    if (l2 > 9.9999996826552253889678874634872e-21)
+    {
+        _390 = v * rsqrt(l2);
+    }
+    else
+    {
+        _390 = fallback;
+    }
+    return _390;
+}
+
+static inline __attribute__((always_inline))
+float3x3 mxc_frame(thread const float3& N, thread const float3& T)
+{
+    float3 t = T - (N * dot(N, T));
+    float l2 = dot(t, t);
+    if (!(l2 > 9.9999999600419720025001879548654e-13))
+    {
+        float s = (N.z >= 0.0) ? 1.0 : (-1.0);
+        float a = (-1.0) / (s + N.z);
+        float b = (N.x * N.y) * a;
+        t = float3(1.0 + (((s * N.x) * N.x) * a), s * b, (-s) * N.x);
+    }
+    else
+    {
+        t *= rsqrt(l2);
+    }
+    return float3x3(float3(t), float3(cross(N, t)), float3(N));
+}
+
+static inline __attribute__((always_inline))
+uint mxc_pcg(thread const uint& v)
+{
+    uint state = (v * 747796405u) + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+static inline __attribute__((always_inline))
+void mxc_closure_seed(thread const uint& seed)
+{
+}
+
+static inline __attribute__((always_inline))
+bool mxc_address(thread float& x, thread const int& mode)
+{
+    if (mode == 0)
+    {
+        return (x >= 0.0) && (x <= 1.0);
+    }
+    if (mode == 1)
+    {
+        x = fast::clamp(x, 0.0, 1.0);
+    }
+    else
+    {
+        if (mode == 2)
+        {
+            x = fract(x);
+        }
+        else
+        {
+            x = 1.0 - abs(mod(x, 2.0) - 1.0);
+        }
+    }
+    return true;
+}
+
+static inline __attribute__((always_inline))
+float4 mxc_sample_image(texture2d<float> image, sampler imageSmplr, thread const float2& uv, thread const float4& fallback, thread const int& uaddress, thread const int& vaddress, thread const int& filtertype, thread const bool& missing, thread float& mxc_texture_footprint)
+{
+    float2 dx = dfdx(uv) * float2(mxc_texture_footprint, -mxc_texture_footprint);
+    float2 dy = dfdy(uv) * float2(mxc_texture_footprint, -mxc_texture_footprint);
+    float2 st = uv;
+    if (missing)
+    {
+        return fallback;
+    }
+    float param = st.x;
+    int param_1 = uaddress;
+    bool _1039 = mxc_address(param, param_1);
+    st.x = param;
+    bool _1042 = !_1039;
+    bool _1055;
+    if (!_1042)
+    {
+        float param_2 = st.y;
+        int param_3 = vaddress;
+        bool _1051 = mxc_address(param_2, param_3);
+        st.y = param_2;
+        _1055 = !_1051;
+    }
+    else
+    {
+        _1055 = _1042;
+    }
+    if (_1055)
+    {
+        return fallback;
+    }
+    st.y = 1.0 - st.y;
+    if (filtertype == 1)
+    {
+        float2 size = float2(int2(image.get_width(), image.get_height()));
+        return image.sample(imageSmplr, ((fast::min(floor(st * size), size - float2(1.0)) + float2(0.5)) / size), level(0.0));
+    }
+    return image.sample(imageSmplr, st, gradient2d(dx, dy));
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_hsv_to_rgb(thread const float3& hsv)
+{
+    float3 k = fast::clamp(abs((fract(float3(hsv.x) + float3(0.0, 0.666666686534881591796875, 0.3333333432674407958984375)) * 6.0) - float3(3.0)) - float3(1.0), float3(0.0), float3(1.0));
+    return mix(float3(1.0), k, float3(hsv.y)) * hsv.z;
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_normalmap(thread const float3& sampleValue, thread const float2& scale, thread const float3& N, thread const float3& T, thread const float3& B)
+{
+    float3 v = (sampleValue * 2.0) - float3(1.0);
+    float3 _952 = v;
+    float2 _954 = _952.xy * scale;
+    v.x = _954.x;
+    v.y = _954.y;
+    float3 param = ((T * v.x) + (B * v.y)) + (N * v.z);
+    float3 param_1 = N;
+    return mxc_safe_normalize(param, param_1);
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_to_local(thread const float3x3& frame, thread const float3& v)
+{
+    return float3(dot(v, frame[0]), dot(v, frame[1]), dot(v, frame[2]));
+}
+
+static inline __attribute__((always_inline))
+bool mxc_is_delta(thread const float2& alpha)
+{
+    return fast::max(alpha.x, alpha.y) < 9.9999997473787516355514526367188e-05;
+}
+
+static inline __attribute__((always_inline))
+bool mxc_index_matched(thread const MxcLobe& l)
+{
+    return abs(l.eta - 1.0) < 9.9999997473787516355514526367188e-05;
+}
+
+static inline __attribute__((always_inline))
+float mxc_lobe_eta(thread const MxcLobe& l, thread const bool& above)
+{
+    float _1238;
+    if (above)
+    {
+        _1238 = l.eta;
+    }
+    else
+    {
+        _1238 = 1.0 / l.eta;
+    }
+    return _1238;
+}
+
+static inline __attribute__((always_inline))
+float4 mxc_table_at(thread const float& mu, thread const float& x, thread const float& firstRow, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    float2 t = (float2(sqrt(fast::clamp(mu, 0.0, 1.0)), fast::clamp(x, 0.0, 1.0)) * 31.0) + float2(0.5);
+    return mxc_tables.sample(mxc_tablesSmplr, float2(t.x / 32.0, (firstRow + t.y) / 1056.0), level(0.0));
+}
+
+static inline __attribute__((always_inline))
+float4 mxc_dielectric_table(thread const float& mu, thread const float& alpha, thread const float& e, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    float s = sqrt(fast::clamp(0.5 * (e - 1.0), 0.0, 1.0)) * 31.0;
+    float s0 = fast::min(floor(s), 30.0);
+    float x = sqrt(fast::max(alpha, 0.0));
+    float param = mu;
+    float param_1 = x;
+    float param_2 = 32.0 * (1.0 + s0);
+    float4 a = mxc_table_at(param, param_1, param_2, mxc_tables, mxc_tablesSmplr);
+    float param_3 = mu;
+    float param_4 = x;
+    float param_5 = 32.0 * (2.0 + s0);
+    float4 b = mxc_table_at(param_3, param_4, param_5, mxc_tables, mxc_tablesSmplr);
+    return mix(a, b, float4(s - s0));
+}
+
+static inline __attribute__((always_inline))
+float mxc_dielectric_albedo_rt(thread const float& mu, thread const float& alpha, thread const float& eta, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    if (eta >= 1.0)
+    {
+        float param = mu;
+        float param_1 = alpha;
+        float param_2 = eta;
+        return mxc_dielectric_table(param, param_1, param_2, mxc_tables, mxc_tablesSmplr).y;
+    }
+    float param_3 = mu;
+    float param_4 = alpha;
+    float param_5 = 1.0 / fast::max(eta, 0.001000000047497451305389404296875);
+    return mxc_dielectric_table(param_3, param_4, param_5, mxc_tables, mxc_tablesSmplr).z;
+}
+
+static inline __attribute__((always_inline))
+float4 mxc_table(thread const float& mu, thread const float& x, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    float param = mu;
+    float param_1 = x;
+    float param_2 = 0.0;
+    return mxc_table_at(param, param_1, param_2, mxc_tables, mxc_tablesSmplr);
+}
+
+static inline __attribute__((always_inline))
+float2 mxc_split_sum(thread const float& mu, thread const float& alpha, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    float param = mu;
+    float param_1 = sqrt(fast::max(alpha, 0.0));
+    return mxc_table(param, param_1, mxc_tables, mxc_tablesSmplr).xy;
+}
+
+static inline __attribute__((always_inline))
+float mxc_fresnel_dielectric(thread const float& cosi, thread const float& eta)
+{
+    if (abs(eta - 1.0) < 9.9999999747524270787835121154785e-07)
+    {
+        return 0.0;
+    }
+    float sin2t = (1.0 - (cosi * cosi)) / (eta * eta);
+    if (sin2t >= 1.0)
+    {
+        return 1.0;
+    }
+    float cost = sqrt(1.0 - sin2t);
+    float rs = (cosi - (eta * cost)) / (cosi + (eta * cost));
+    float rp = ((eta * cosi) - cost) / ((eta * cosi) + cost);
+    return 0.5 * ((rs * rs) + (rp * rp));
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_lobe_fresnel(thread const MxcLobe& l, thread const float& _cosh, thread const bool& above)
+{
+    float3 f = float3(1.0);
+    if (l.kind == 1)
+    {
+        MxcLobe param = l;
+        bool param_1 = above;
+        float param_2 = _cosh;
+        float param_3 = mxc_lobe_eta(param, param_1);
+        f = float3(mxc_fresnel_dielectric(param_2, param_3));
+    }
+    return f;
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_lobe_ms_scale(thread const MxcLobe& l, thread const float3& wo, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    bool _1459 = l.kind == 1;
+    bool _1466;
+    if (!_1459)
+    {
+        _1466 = l.kind == 2;
+    }
+    else
+    {
+        _1466 = _1459;
+    }
+    bool _1474;
+    if (!_1466)
+    {
+        _1474 = l.kind == 3;
+    }
+    else
+    {
+        _1474 = _1466;
+    }
+    bool microfacet = _1474;
+    bool _1476 = !microfacet;
+    bool _1484;
+    if (!_1476)
+    {
+        float2 param = l.alpha;
+        _1484 = mxc_is_delta(param);
+    }
+    else
+    {
+        _1484 = _1476;
+    }
+    if (_1484)
+    {
+        return float3(1.0);
+    }
+    float alpha = sqrt(l.alpha.x * l.alpha.y);
+    bool _1497 = l.kind == 1;
+    bool _1503;
+    if (_1497)
+    {
+        MxcLobe param_1 = l;
+        _1503 = mxc_index_matched(param_1);
+    }
+    else
+    {
+        _1503 = _1497;
+    }
+    if (_1503)
+    {
+        return float3(1.0);
+    }
+    bool _1509 = l.kind == 1;
+    bool _1517;
+    if (_1509)
+    {
+        _1517 = (l.mode & 4) == 0;
+    }
+    else
+    {
+        _1517 = _1509;
+    }
+    if (_1517)
+    {
+        MxcLobe param_2 = l;
+        bool param_3 = wo.z >= 0.0;
+        float param_4 = abs(wo.z);
+        float param_5 = alpha;
+        float param_6 = mxc_lobe_eta(param_2, param_3);
+        float e = mxc_dielectric_albedo_rt(param_4, param_5, param_6, mxc_tables, mxc_tablesSmplr);
+        float3 k = float3(1.0 / fast::max(e, 0.0500000007450580596923828125));
+        return k;
+    }
+    float param_7 = fast::max(wo.z, 0.0);
+    float param_8 = alpha;
+    float2 ab = mxc_split_sum(param_7, param_8, mxc_tables, mxc_tablesSmplr);
+    float e_1 = ab.x + ab.y;
+    MxcLobe param_9 = l;
+    float param_10 = 1.0;
+    bool param_11 = true;
+    return float3(1.0) + ((mxc_lobe_fresnel(param_9, param_10, param_11) * (1.0 - e_1)) / float3(fast::max(e_1, 0.0500000007450580596923828125)));
+}
+
+static inline __attribute__((always_inline))
+float mxc_dielectric_albedo(thread const float& mu, thread const float& alpha, thread const float& eta, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    float _1192;
+    if (eta >= 1.0)
+    {
+        _1192 = eta;
+    }
+    else
+    {
+        _1192 = 1.0 / fast::max(eta, 0.001000000047497451305389404296875);
+    }
+    float e = _1192;
+    float param = mu;
+    float param_1 = alpha;
+    float param_2 = e;
+    return mxc_dielectric_table(param, param_1, param_2, mxc_tables, mxc_tablesSmplr).x;
+}
+
+static inline __attribute__((always_inline))
+float mxc_safe_sqrt(thread const float& x)
+{
+    return sqrt(fast::max(x, 0.0));
+}
+
+static inline __attribute__((always_inline))
+float mxc_fon_albedo(thread const float& sigma, thread const float& mu)
+{
+    float a = 1.0 / (1.0 + (0.2877933979034423828125 * sigma));
+    float c = fast::clamp(mu, 0.0, 1.0);
+    float param = 1.0 - (c * c);
+    float s = mxc_safe_sqrt(param);
+    float theta = acos(c);
+    float _1414;
+    if (c > 9.9999997473787516355514526367188e-05)
+    {
+        _1414 = (1.0 - ((s * s) * s)) / c;
+    }
+    else
+    {
+        _1414 = 1.5 * c;
+    }
+    float tail = _1414;
+    float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875 * s) * tail)) - (0.666666686534881591796875 * s);
+    return a + (((sigma * a) * g) * 0.3183098733425140380859375);
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_lobe_albedo_scaled(thread const MxcLobe& l, thread const float3& wo, thread const float3& ms, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    float mu = fast::clamp(wo.z, 0.0, 1.0);
+    bool _1580 = l.kind == 1;
+    bool _1587;
+    if (!_1580)
+    {
+        _1587 = l.kind == 2;
+    }
+    else
+    {
+        _1587 = _1580;
+    }
+    bool _1594;
+    if (!_1587)
+    {
+        _1594 = l.kind == 3;
+    }
+    else
+    {
+        _1594 = _1587;
+    }
+    if (_1594)
+    {
+        float alpha = sqrt(l.alpha.x * l.alpha.y);
+        bool _1606 = l.kind == 1;
+        bool _1614;
+        if (_1606)
+        {
+            float2 param = l.alpha;
+            _1614 = !mxc_is_delta(param);
+        }
+        else
+        {
+            _1614 = _1606;
+        }
+        if (_1614)
+        {
+            float param_1 = mu;
+            float param_2 = alpha;
+            float param_3 = l.eta;
+            float3 e = float3(mxc_dielectric_albedo(param_1, param_2, param_3, mxc_tables, mxc_tablesSmplr));
+            return fast::clamp((e * l.c0) * ms, float3(0.0), float3(1.0));
+        }
+        float param_4 = mu;
+        float param_5 = alpha;
+        float2 ab = mxc_split_sum(param_4, param_5, mxc_tables, mxc_tablesSmplr);
+        MxcLobe param_6 = l;
+        float param_7 = 1.0;
+        bool param_8 = true;
+        float3 f0 = mxc_lobe_fresnel(param_6, param_7, param_8);
+        MxcLobe param_9 = l;
+        float param_10 = 0.0;
+        bool param_11 = true;
+        float3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
+        float3 _1659;
+        if (l.kind == 1)
+        {
+            _1659 = l.c0;
+        }
+        else
+        {
+            _1659 = float3(1.0);
+        }
+        float3 tint = _1659;
+        float2 param_12 = l.alpha;
+        if (mxc_is_delta(param_12))
+        {
+            MxcLobe param_13 = l;
+            float param_14 = mu;
+            bool param_15 = true;
+            return mxc_lobe_fresnel(param_13, param_14, param_15) * tint;
+        }
+        return fast::clamp((((f0 * ab.x) + (f90 * ab.y)) * tint) * ms, float3(0.0), float3(1.0));
+    }
+    if (l.kind == 4)
+    {
+        float param_16 = l.p0;
+        float param_17 = mu;
+        return l.c0 * mxc_fon_albedo(param_16, param_17);
+    }
+    if (l.kind == 8)
+    {
+        return l.c0;
+    }
+    return l.c0;
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_lobe_albedo(thread const MxcLobe& l, thread const float3& wo, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    MxcLobe param = l;
+    float3 param_1 = wo;
+    MxcLobe param_2 = l;
+    float3 param_3 = wo;
+    float3 param_4 = mxc_lobe_ms_scale(param, param_1, mxc_tables, mxc_tablesSmplr);
+    return mxc_lobe_albedo_scaled(param_2, param_3, param_4, mxc_tables, mxc_tablesSmplr);
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_lobe_layer_albedo(thread const MxcLobe& l, thread const float3& wo, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    bool _1742 = l.kind == 9;
+    bool _1749;
+    if (!_1742)
+    {
+        _1749 = l.kind == 10;
+    }
+    else
+    {
+        _1749 = _1742;
+    }
+    if (_1749)
+    {
+        MxcLobe white = l;
+        white.c0 = float3(1.0);
+        MxcLobe param = white;
+        float3 param_1 = wo;
+        return mxc_lobe_albedo(param, param_1, mxc_tables, mxc_tablesSmplr);
+    }
+    MxcLobe param_2 = l;
+    float3 param_3 = wo;
+    return mxc_lobe_albedo(param_2, param_3, mxc_tables, mxc_tablesSmplr);
+}
+
+static inline __attribute__((always_inline))
+float mxc_luminance(thread const float3& c)
+{
+    return dot(c, float3(0.2125999927520751953125, 0.715200006961822509765625, 0.072200000286102294921875));
+}
+
+static inline __attribute__((always_inline))
+float mxc_lobe_choice(thread const MxcLobe& l, thread const float3& woLocal, thread const float3& ms, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    if (all(l.weight == float3(0.0)))
+    {
+        return 0.0;
+    }
+    MxcLobe param = l;
+    float3 param_1 = woLocal;
+    float3 param_2 = ms;
+    float3 param_3 = l.weight * mxc_lobe_albedo_scaled(param, param_1, param_2, mxc_tables, mxc_tablesSmplr);
+    return fast::max(mxc_luminance(param_3), 0.0) + 9.9999997473787516355514526367188e-05;
+}
+
+static inline __attribute__((always_inline))
+void mxc_closure_prepare(thread MxcClosure& c, thread const float3& wo, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    c.choiceTotal = 0.0;
+    for (int k = 0; k < c.count; k++)
+    {
+        MxcLobe l = c.lobes[k];
+        c.ms[k] = float3(1.0);
+        c.choice[k] = 0.0;
+        if (all(l.weight == float3(0.0)))
+        {
+            continue;
+        }
+        float3 param = l.N;
+        float3 param_1 = l.T;
+        float3x3 param_2 = mxc_frame(param, param_1);
+        float3 param_3 = wo;
+        float3 o = mxc_to_local(param_2, param_3);
+        MxcLobe param_4 = l;
+        float3 param_5 = o;
+        c.ms[k] = mxc_lobe_ms_scale(param_4, param_5, mxc_tables, mxc_tablesSmplr);
+        MxcLobe param_6 = l;
+        float3 param_7 = o;
+        float3 param_8 = c.ms[k];
+        c.choice[k] = mxc_lobe_choice(param_6, param_7, param_8, mxc_tables, mxc_tablesSmplr);
+        c.choiceTotal += c.choice[k];
+    }
+}
+
+static inline __attribute__((always_inline))
+void mxc_material_closure(thread const MxcGeometry& g, thread const float3& wo, thread MxcClosure& c, thread float& mxc_texture_footprint, texture2d<float> mxc_tables, sampler mxc_tablesSmplr, texture2d<float> mxc_texture_0, sampler mxc_texture_0Smplr, const device MxcParameters& mxc_params, texture2d<float> mxc_texture_1, sampler mxc_texture_1Smplr, texture2d<float> mxc_texture_2, sampler mxc_texture_2Smplr, texture2d<float> mxc_texture_3, sampler mxc_texture_3Smplr, texture2d<float> mxc_texture_4, sampler mxc_texture_4Smplr, texture2d<float> mxc_texture_5, sampler mxc_texture_5Smplr)
+{
+    float2 v3 = g.uv;
+    float2 v4 = v3 * float2(3.0);
+    float2 param = v4;
+    float4 param_1 = float4(0.0);
+    int param_2 = 2;
+    int param_3 = 2;
+    int param_4 = 0;
+    bool param_5 = (mxc_params.missing_textures & 1u) != 0u;
+    float v8 = mxc_sample_image(mxc_texture_0, mxc_texture_0Smplr, param, param_1, param_2, param_3, param_4, param_5, mxc_texture_footprint).x;
+    float v10 = fast::max(v8, 9.9999997473787516355514526367188e-06);
+    float v11 = 0.852999985218048095703125 / v10;
+    float2 param_6 = v4;
+    float4 param_7 = float4(0.0);
+    int param_8 = 2;
+    int param_9 = 2;
+    int param_10 = 0;
+    bool param_11 = (mxc_params.missing_textures & 2u) != 0u;
+    float v13 = mxc_sample_image(mxc_texture_1, mxc_texture_1Smplr, param_6, param_7, param_8, param_9, param_10, param_11, mxc_texture_footprint).x;
+    float v14 = v11 * v13;
+    float2 param_12 = v4;
+    float4 param_13 = float4(0.0);
+    int param_14 = 2;
+    int param_15 = 2;
+    int param_16 = 0;
+    bool param_17 = (mxc_params.missing_textures & 4u) != 0u;
+    float v20 = mxc_sample_image(mxc_texture_2, mxc_texture_2Smplr, param_12, param_13, param_14, param_15, param_16, param_17, mxc_texture_footprint).x;
+    float v21 = 0.2479999959468841552734375 * v20;
+    float2 param_18 = v4;
+    float4 param_19 = float4(0.0);
+    int param_20 = 2;
+    int param_21 = 2;
+    int param_22 = 0;
+    bool param_23 = (mxc_params.missing_textures & 8u) != 0u;
+    float v25 = mxc_sample_image(mxc_texture_3, mxc_texture_3Smplr, param_18, param_19, param_20, param_21, param_22, param_23, mxc_texture_footprint).x;
+    float v26 = 0.082999996840953826904296875 * v25;
+    float2 param_24 = v4;
+    float4 param_25 = float4(0.0);
+    int param_26 = 2;
+    int param_27 = 2;
+    int param_28 = 0;
+    bool param_29 = (mxc_params.missing_textures & 16u) != 0u;
+    float v28 = mxc_sample_image(mxc_texture_4, mxc_texture_4Smplr, param_24, param_25, param_26, param_27, param_28, param_29, mxc_texture_footprint).x;
+    float v29 = v26 + v28;
+    float v31 = v29 - 0.3499999940395355224609375;
+    float v32 = v31 * 0.082999996840953826904296875;
+    float v34 = 0.787000000476837158203125 * v25;
+    float v35 = v29 * v34;
+    float3 v36 = float3(v32, 0.0, v35);
+    float3 v38 = v36 + float3(0.0480653941631317138671875, 1.0, 0.661876022815704345703125);
+    float3 param_30 = v38;
+    float3 v39 = mxc_hsv_to_rgb(param_30);
+    float3 v40 = mix(v39, float3(0.5637199878692626953125), float3(v21));
+    float3 v41 = v40 * v28;
+    float3 v43 = float3(0.2632730007171630859375) * v28;
+    float3 v44 = mix(v43, v41, float3(v8));
+    float3 v45 = fast::clamp(v44, float3(0.0), float3(1.0));
+    float3 v46 = fast::clamp(v45, float3(0.0), float3(1.0));
+    float2 param_31 = v4;
+    float4 param_32 = float4(0.0, 0.0, 0.0, 1.0);
+    int param_33 = 2;
+    int param_34 = 2;
+    int param_35 = 0;
+    bool param_36 = (mxc_params.missing_textures & 32u) != 0u;
+    float3 v48 = mxc_sample_image(mxc_texture_5, mxc_texture_5Smplr, param_31, param_32, param_33, param_34, param_35, param_36, mxc_texture_footprint).xyz;
+    float3 v49 = g.N;
+    float3 v50 = g.T;
+    float3 v51 = g.B;
+    float3 param_37 = v48;
+    float2 param_38 = float2(1.0);
+    float3 param_39 = v49;
+    float3 param_40 = v50;
+    float3 param_41 = v51;
+    float3 v52 = mxc_normalmap(param_37, param_38, param_39, param_40, param_41);
+    float v55 = v14 * v14;
+    float v56 = fast::clamp(v55, 1.0000000116860974230803549289703e-07, 1.0);
+    float2 v57 = float2(v56, v56);
+    c.emission = float3(0.0);
+    c.transparency = float3(0.0);
+    MxcLobe lobe0;
+    lobe0.kind = 1;
+    lobe0.mode = 1;
+    float3 param_42 = v52;
+    float3 param_43 = g.N;
+    lobe0.N = mxc_safe_normalize(param_42, param_43);
+    lobe0.T = v50;
+    lobe0.alpha = v57;
+    lobe0.eta = 1.5;
+    lobe0.c0 = float3(1.0);
+    lobe0.c1 = float3(1.0);
+    lobe0.c2 = float3(1.0);
+    lobe0.p0 = 0.0;
+    lobe0.p1 = 1.0;
+    lobe0.film = float3(0.0);
+    lobe0.tau = float3(0.0);
+    lobe0.tauEta = 1.0;
+    float3 param_44 = lobe0.N;
+    float3 param_45 = lobe0.T;
+    float3x3 param_46 = mxc_frame(param_44, param_45);
+    float3 param_47 = wo;
+    MxcLobe param_48 = lobe0;
+    float3 param_49 = mxc_to_local(param_46, param_47);
+    float3 e1 = mxc_lobe_layer_albedo(param_48, param_49, mxc_tables, mxc_tablesSmplr);
+    float3 w2 = float3(1.0) - e1;
+    MxcLobe lobe3;
+    lobe3.kind = 4;
+    lobe3.mode = 1;
+    float3 param_50 = v52;
+    float3 param_51 = g.N;
+    lobe3.N = mxc_safe_normalize(param_50, param_51);
+    lobe3.T = g.T;
+    lobe3.alpha = float2(0.0);
+    lobe3.eta = 1.5;
+    lobe3.c0 = v46;
+    lobe3.c1 = float3(1.0);
+    lobe3.c2 = float3(1.0);
+    lobe3.p0 = 0.0;
+    lobe3.p1 = 1.0;
+    lobe3.film = float3(0.0);
+    lobe3.tau = float3(0.0);
+    lobe3.tauEta = 1.0;
+    lobe0.weight = float3(1.0);
+    c.lobes[0] = lobe0;
+    lobe3.weight = w2;
+    c.lobes[1] = lobe3;
+    c.count = 2;
+    MxcClosure param_52 = c;
+    float3 param_53 = wo;
+    mxc_closure_prepare(param_52, param_53, mxc_tables, mxc_tablesSmplr);
+    c = param_52;
+}
+
+static inline __attribute__((always_inline))
+int mxc_light_count(constant MxcView& mxc_view)
+{
+    int _3249;
+    if (_3248)
+    {
+        _3249 = MXC_LIGHT_COUNT;
+    }
+    else
+    {
+        _3249 = mxc_view.counts.x;
+    }
+    return min(_3249, 8);
+}
+
+static inline __attribute__((always_inline))
+int mxc_light_kinds()
+{
+    return _3261;
+}
+
+static inline __attribute__((always_inline))
+int mxc_environment_code(constant MxcView& mxc_view)
+{
+    int _3230;
+    if (_3229)
+    {
+        _3230 = MXC_ENVIRONMENT;
+    }
+    else
+    {
+        _3230 = mxc_view.counts.y;
+    }
+    return _3230;
+}
+
+static inline __attribute__((always_inline))
+float mxc_uniform(thread uint& seed)
+{
+    uint param = seed;
+    seed = mxc_pcg(param);
+    return float(seed >> uint(8)) * 5.9604644775390625e-08;
+}
+
+static inline __attribute__((always_inline))
+float mxc_radical_inverse(thread uint& i, thread const uint& base)
+{
+    if (base == 2u)
+    {
+        return float(reverse_bits(i) >> uint(8)) * 5.9604644775390625e-08;
+    }
+    float inv = 1.0 / float(base);
+    float f = inv;
+    float r = 0.0;
+    for (; i > 0u; i /= base)
+    {
+        r += (f * float(i % base));
+        f *= inv;
+    }
+    return fast::min(r, 0.999999940395355224609375);
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_sample_cosine(thread const float2& u)
+{
+    float r = sqrt(u.x);
+    float phi = 6.283185482025146484375 * u.y;
+    float param = 1.0 - u.x;
+    return float3(r * cos(phi), r * sin(phi), mxc_safe_sqrt(param));
+}
+
+static inline __attribute__((always_inline))
+float2 mxc_rough_alpha(thread const float2& alpha)
+{
+    return fast::max(alpha, float2(9.9999997473787516355514526367188e-05));
+}
+
+static inline __attribute__((always_inline))
+float mxc_ggx_d(thread const float3& m, thread float2& alpha)
+{
+    if (m.z <= 0.0)
+    {
+        return 0.0;
+    }
+    float2 param = alpha;
+    alpha = mxc_rough_alpha(param);
+    float3 s = float3(m.x / alpha.x, m.y / alpha.y, m.z);
+    float d = dot(s, s);
+    return 1.0 / ((((3.1415927410125732421875 * alpha.x) * alpha.y) * d) * d);
+}
+
+static inline __attribute__((always_inline))
+float mxc_sqr(thread const float& x)
+{
+    return x * x;
+}
+
+static inline __attribute__((always_inline))
+float mxc_ggx_lambda(thread const float3& v, thread float2& alpha)
+{
+    float2 param = alpha;
+    alpha = mxc_rough_alpha(param);
+    float z2 = v.z * v.z;
+    if (z2 <= 0.0)
+    {
+        return 10000000000.0;
+    }
+    float param_1 = alpha.x * v.x;
+    float param_2 = alpha.y * v.y;
+    float a2 = (mxc_sqr(param_1) + mxc_sqr(param_2)) / z2;
+    return 0.5 * ((-1.0) + sqrt(1.0 + a2));
+}
+
+static inline __attribute__((always_inline))
+float mxc_ggx_g2(thread const float3& wo, thread const float3& wi, thread const float2& alpha)
+{
+    float3 param = wo;
+    float2 param_1 = alpha;
+    float _691 = mxc_ggx_lambda(param, param_1);
+    float3 param_2 = wi;
+    float2 param_3 = alpha;
+    float _697 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0 / ((1.0 + _691) + _697);
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_microfacet_reflect(thread const MxcLobe& l, thread const float3& wo, thread const float3& wi)
+{
+    bool _1279 = wo.z <= 0.0;
+    bool _1286;
+    if (!_1279)
+    {
+        _1286 = wi.z <= 0.0;
+    }
+    else
+    {
+        _1286 = _1279;
+    }
+    bool _1295;
+    if (!_1286)
+    {
+        float2 param = l.alpha;
+        _1295 = mxc_is_delta(param);
+    }
+    else
+    {
+        _1295 = _1286;
+    }
+    if (_1295)
+    {
+        return float3(0.0);
+    }
+    float3 h = fast::normalize(wo + wi);
+    MxcLobe param_1 = l;
+    float param_2 = fast::max(dot(wo, h), 0.0);
+    bool param_3 = true;
+    float3 f = mxc_lobe_fresnel(param_1, param_2, param_3);
+    if (l.kind == 1)
+    {
+        f *= l.c0;
+    }
+    float3 param_4 = h;
+    float2 param_5 = l.alpha;
+    float _1331 = mxc_ggx_d(param_4, param_5);
+    float3 param_6 = wo;
+    float3 param_7 = wi;
+    float2 param_8 = l.alpha;
+    return ((f * _1331) * mxc_ggx_g2(param_6, param_7, param_8)) / float3(4.0 * wo.z);
+}
+
+static inline __attribute__((always_inline))
+float mxc_fon(thread const float& sigma, thread const float3& wo, thread const float3& wi)
+{
+    float a = 1.0 / (1.0 + (0.2877933979034423828125 * sigma));
+    float s = dot(wi, wo) - (wi.z * wo.z);
+    float _1369;
+    if (s > 0.0)
+    {
+        _1369 = fast::max(fast::max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
+    }
+    else
+    {
+        _1369 = 1.0;
+    }
+    float t = _1369;
+    return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375;
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_lobe_eval(thread const MxcLobe& l, thread const float3& wo, thread const float3& wi)
+{
+    switch (l.kind)
+    {
+        case 1:
+        {
+            if ((wo.z * wi.z) > 0.0)
+            {
+                if ((l.mode & 1) == 0)
+                {
+                    return float3(0.0);
+                }
+                if (wo.z < 0.0)
+                {
+                    MxcLobe m = l;
+                    m.eta = 1.0 / l.eta;
+                    m.c0 = float3(1.0);
+                    MxcLobe param = m;
+                    float3 param_1 = -wo;
+                    float3 param_2 = -wi;
+                    return mxc_microfacet_reflect(param, param_1, param_2);
+                }
+                MxcLobe param_3 = l;
+                float3 param_4 = wo;
+                float3 param_5 = wi;
+                return mxc_microfacet_reflect(param_3, param_4, param_5);
+            }
+            return float3(0.0);
+        }
+        case 2:
+        case 3:
+        {
+            bool _1823 = l.kind == 3;
+            bool _1830;
+            if (_1823)
+            {
+                _1830 = (l.mode & 1) == 0;
+            }
+            else
+            {
+                _1830 = _1823;
+            }
+            if (_1830)
+            {
+                return float3(0.0);
+            }
+            MxcLobe param_6 = l;
+            float3 param_7 = wo;
+            float3 param_8 = wi;
+            return mxc_microfacet_reflect(param_6, param_7, param_8);
+        }
+        case 4:
+        {
+            bool _1844 = wo.z > 0.0;
+            bool _1850;
+            if (_1844)
+            {
+                _1850 = wi.z > 0.0;
+            }
+            else
+            {
+                _1850 = _1844;
+            }
+            float3 _1851;
+            if (_1850)
+            {
+                float param_9 = l.p0;
+                float3 param_10 = wo;
+                float3 param_11 = wi;
+                _1851 = (l.c0 * mxc_fon(param_9, param_10, param_11)) * wi.z;
+            }
+            else
+            {
+                _1851 = float3(0.0);
+            }
+            return _1851;
+        }
+        default:
+        {
+            return float3(0.0);
+        }
+    }
+}
+
+static inline __attribute__((always_inline))
+float mxc_ggx_g1(thread const float3& v, thread const float2& alpha)
+{
+    float3 param = v;
+    float2 param_1 = alpha;
+    float _682 = mxc_ggx_lambda(param, param_1);
+    return 1.0 / (1.0 + _682);
+}
+
+static inline __attribute__((always_inline))
+float mxc_ggx_pdf_vndf(thread const float3& wo, thread const float3& m, thread const float2& alpha)
+{
+    if (wo.z <= 0.0)
+    {
+        return 0.0;
+    }
+    float3 param = wo;
+    float2 param_1 = alpha;
+    float3 param_2 = m;
+    float2 param_3 = alpha;
+    float _848 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * fast::max(dot(wo, m), 0.0)) * _848) / wo.z;
+}
+
+static inline __attribute__((always_inline))
+float mxc_mean(thread const float3& c)
+{
+    return ((c.x + c.y) + c.z) * 0.3333333432674407958984375;
+}
+
+static inline __attribute__((always_inline))
+bool mxc_lobe_transmits(thread const MxcLobe& l)
+{
+    return false;
+}
+
+static inline __attribute__((always_inline))
+float mxc_lobe_pdf(thread const MxcLobe& l, thread const float3& wo, thread const float3& wi)
+{
+    switch (l.kind)
+    {
+        case 1:
+        case 2:
+        case 3:
+        {
+            float2 param = l.alpha;
+            if (mxc_is_delta(param))
+            {
+                return 0.0;
+            }
+            bool above = wo.z > 0.0;
+            float3 _1892;
+            if (above)
+            {
+                _1892 = wo;
+            }
+            else
+            {
+                _1892 = -wo;
+            }
+            float3 o = _1892;
+            float3 _1902;
+            if (above)
+            {
+                _1902 = wi;
+            }
+            else
+            {
+                _1902 = -wi;
+            }
+            float3 i = _1902;
+            if (i.z > 0.0)
+            {
+                float3 h = fast::normalize(o + i);
+                float3 param_1 = o;
+                float3 param_2 = h;
+                float2 param_3 = l.alpha;
+                float p = mxc_ggx_pdf_vndf(param_1, param_2, param_3) / (4.0 * fast::max(dot(o, h), 9.9999999747524270787835121154785e-07));
+                if (l.kind == 2)
+                {
+                    return p;
+                }
+                if ((l.mode & 1) == 0)
+                {
+                    return 0.0;
+                }
+                MxcLobe param_4 = l;
+                float param_5 = fast::max(dot(o, h), 0.0);
+                bool param_6 = above;
+                float3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
+                float fr = mxc_mean(param_7);
+                MxcLobe param_8 = l;
+                bool _1965 = mxc_lobe_transmits(param_8);
+                bool _1972;
+                if (_1965)
+                {
+                    _1972 = (l.mode & 1) != 0;
+                }
+                else
+                {
+                    _1972 = _1965;
+                }
+                return p * (_1972 ? fr : 1.0);
+            }
+            return 0.0;
+        }
+        default:
+        {
+            bool _1980 = wo.z > 0.0;
+            bool _1986;
+            if (_1980)
+            {
+                _1986 = wi.z > 0.0;
+            }
+            else
+            {
+                _1986 = _1980;
+            }
+            float _1987;
+            if (_1986)
+            {
+                _1987 = wi.z * 0.3183098733425140380859375;
+            }
+            else
+            {
+                _1987 = 0.0;
+            }
+            return _1987;
+        }
+    }
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_ggx_sample_vndf(thread const float3& wo, thread float2& alpha, thread const float2& u)
+{
+    float2 param = alpha;
+    alpha = mxc_rough_alpha(param);
+    float3 vh = fast::normalize(float3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
+    float lensq = (vh.x * vh.x) + (vh.y * vh.y);
+    float3 _735;
+    if (lensq > 0.0)
+    {
+        _735 = float3(-vh.y, vh.x, 0.0) * rsqrt(lensq);
+    }
+    else
+    {
+        _735 = float3(1.0, 0.0, 0.0);
+    }
+    float3 t1 = _735;
+    float3 t2 = cross(vh, t1);
+    float r = sqrt(u.x);
+    float phi = 6.283185482025146484375 * u.y;
+    float p1 = r * cos(phi);
+    float p2 = r * sin(phi);
+    float s = 0.5 * (1.0 + vh.z);
+    float param_1 = 1.0 - (p1 * p1);
+    p2 = ((1.0 - s) * mxc_safe_sqrt(param_1)) + (s * p2);
+    float param_2 = (1.0 - (p1 * p1)) - (p2 * p2);
+    float3 nh = ((t1 * p1) + (t2 * p2)) + (vh * mxc_safe_sqrt(param_2));
+    return fast::normalize(float3(alpha.x * nh.x, alpha.y * nh.y, fast::max(nh.z, 0.0)));
+}
+
+static inline __attribute__((always_inline))
+MxcLobeSample mxc_lobe_sample(thread const MxcLobe& l, thread const float3& wo, thread const float3& u)
+{
+    MxcLobeSample s;
+    s.valid = short(false);
+    s.delta = short(false);
+    s.pdf = 0.0;
+    s.value = float3(0.0);
+    s.wi = float3(0.0, 0.0, 1.0);
+    switch (l.kind)
+    {
+        case 1:
+        case 2:
+        case 3:
+        {
+            bool above = wo.z > 0.0;
+            float3 _2017;
+            if (above)
+            {
+                _2017 = wo;
+            }
+            else
+            {
+                _2017 = -wo;
+            }
+            float3 o = _2017;
+            if (o.z <= 0.0)
+            {
+                return s;
+            }
+            float2 param = l.alpha;
+            bool delta = mxc_is_delta(param);
+            float3 _2039;
+            if (delta)
+            {
+                _2039 = float3(0.0, 0.0, 1.0);
+            }
+            else
+            {
+                float3 param_1 = o;
+                float2 param_2 = l.alpha;
+                float2 param_3 = u.xy;
+                float3 _2051 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2039 = _2051;
+            }
+            float3 m = _2039;
+            float hm = dot(o, m);
+            bool _2060 = l.kind == 1;
+            bool _2067;
+            if (!_2060)
+            {
+                _2067 = l.kind == 3;
+            }
+            else
+            {
+                _2067 = _2060;
+            }
+            bool _2073;
+            if (_2067)
+            {
+                MxcLobe param_4 = l;
+                _2073 = mxc_lobe_transmits(param_4);
+            }
+            else
+            {
+                _2073 = _2067;
+            }
+            bool transmits = _2073;
+            bool _2077 = l.kind == 2;
+            bool _2085;
+            if (!_2077)
+            {
+                _2085 = (l.mode & 1) != 0;
+            }
+            else
+            {
+                _2085 = _2077;
+            }
+            bool reflects = _2085;
+            MxcLobe param_5 = l;
+            float param_6 = fast::max(hm, 0.0);
+            bool param_7 = above;
+            float3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
+            float _2097;
+            if (transmits)
+            {
+                float3 param_8 = f;
+                _2097 = mxc_mean(param_8);
+            }
+            else
+            {
+                _2097 = 1.0;
+            }
+            float fr = _2097;
+            float _2107;
+            if (transmits)
+            {
+                _2107 = reflects ? fr : 0.0;
+            }
+            else
+            {
+                _2107 = 1.0;
+            }
+            float pReflect = _2107;
+            if (u.z < pReflect)
+            {
+                float3 i = reflect(-o, m);
+                if (i.z <= 0.0)
+                {
+                    return s;
+                }
+                float3 _2134;
+                if (above)
+                {
+                    _2134 = i;
+                }
+                else
+                {
+                    _2134 = -i;
+                }
+                s.wi = _2134;
+                s.delta = short(delta);
+                if (delta)
+                {
+                    float3 _2152;
+                    if (l.kind == 1)
+                    {
+                        float3 _2156;
+                        if (above)
+                        {
+                            _2156 = l.c0;
+                        }
+                        else
+                        {
+                            _2156 = float3(1.0);
+                        }
+                        _2152 = _2156;
+                    }
+                    else
+                    {
+                        _2152 = float3(1.0);
+                    }
+                    float3 tint = _2152;
+                    s.value = f * tint;
+                    s.pdf = pReflect;
+                }
+                else
+                {
+                    MxcLobe param_9 = l;
+                    float3 param_10 = wo;
+                    float3 param_11 = s.wi;
+                    s.value = mxc_lobe_eval(param_9, param_10, param_11);
+                    MxcLobe param_12 = l;
+                    float3 param_13 = wo;
+                    float3 param_14 = s.wi;
+                    s.pdf = mxc_lobe_pdf(param_12, param_13, param_14);
+                }
+                s.valid = short(s.pdf > 0.0);
+                return s;
+            }
+            return s;
+        }
+        default:
+        {
+            if (wo.z <= 0.0)
+            {
+                return s;
+            }
+            float2 param_15 = u.xy;
+            s.wi = mxc_sample_cosine(param_15);
+            MxcLobe param_16 = l;
+            float3 param_17 = wo;
+            float3 param_18 = s.wi;
+            s.value = mxc_lobe_eval(param_16, param_17, param_18);
+            MxcLobe param_19 = l;
+            float3 param_20 = wo;
+            float3 param_21 = s.wi;
+            s.pdf = mxc_lobe_pdf(param_19, param_20, param_21);
+            s.valid = short(s.pdf > 0.0);
+            return s;
+        }
+    }
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_to_world(thread const float3x3& frame, thread const float3& v)
+{
+    return ((frame[0] * v.x) + (frame[1] * v.y)) + (frame[2] * v.z);
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_lobe_absorption(thread const MxcLobe& l, thread const float& mu)
+{
+    return float3(1.0);
+}
+
+static inline __attribute__((always_inline))
+MxcSample mxc_closure_sample_direction(thread const MxcClosure& c, thread const float3& wo, thread const float3& u)
+{
+    MxcSample s;
+    s.valid = short(false);
+    s.delta = short(false);
+    s.evaluate = short(false);
+    s.pdf = 0.0;
+    s.weight = float3(0.0);
+    s.wi = wo;
+    float total = c.choiceTotal;
+    if ((c.count == 0) || (total <= 0.0))
+    {
+        return s;
+    }
+    float x = u.z * total;
+    int chosen = -1;
+    float before = 0.0;
+    float p = 0.0;
+    float lastBefore = 0.0;
+    int last = -1;
+    for (int k = 0; k < c.count; k++)
+    {
+        float pk = c.choice[k];
+        if (pk <= 0.0)
+        {
+            continue;
+        }
+        if (x < (before + pk))
+        {
+            chosen = k;
+            p = pk;
+            break;
+        }
+        last = k;
+        lastBefore = before;
+        before += pk;
+    }
+    if (chosen < 0)
+    {
+        chosen = max(last, 0);
+        p = c.choice[chosen];
+        before = lastBefore;
+    }
+    if (p <= 0.0)
+    {
+        return s;
+    }
+    float uz = fast::clamp((x - before) / p, 0.0, 0.999999940395355224609375);
+    MxcLobe l = c.lobes[chosen];
+    float3 param = l.N;
+    float3 param_1 = l.T;
+    float3x3 frame = mxc_frame(param, param_1);
+    float3x3 param_2 = frame;
+    float3 param_3 = wo;
+    float3 o = mxc_to_local(param_2, param_3);
+    MxcLobe param_4 = l;
+    float3 param_5 = o;
+    float3 param_6 = float3(u.xy, uz);
+    MxcLobeSample ls = mxc_lobe_sample(param_4, param_5, param_6);
+    if (!bool(ls.valid))
+    {
+        return s;
+    }
+    float3x3 param_7 = frame;
+    float3 param_8 = ls.wi;
+    s.wi = mxc_to_world(param_7, param_8);
+    if (bool(ls.delta))
+    {
+        s.delta = short(true);
+        s.pdf = (ls.pdf * p) / total;
+        MxcLobe param_9 = l;
+        float param_10 = abs(ls.wi.z);
+        s.weight = (((l.weight * c.ms[chosen]) * mxc_lobe_absorption(param_9, param_10)) * ls.value) / float3(s.pdf);
+        s.valid = short(s.pdf > 0.0);
+        return s;
+    }
+    s.evaluate = short(true);
+    s.valid = short(true);
+    return s;
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_exit_direction(thread const float3& d, thread const float3& t)
+{
+    float3 axis = cross(d, t);
+    float s = length(axis);
+    if (s < 9.9999999747524270787835121154785e-07)
+    {
+        return t;
+    }
+    axis /= float3(s);
+    float c = dot(d, t);
+    return ((t * c) + (cross(axis, t) * s)) + ((axis * dot(axis, t)) * (1.0 - c));
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_sky(thread const float3& d)
+{
+    float y = fast::clamp(d.y, -1.0, 1.0);
+    float3 horizon = float3(1.0, 0.959999978542327880859375, 0.89999997615814208984375);
+    float3 zenith = float3(0.300000011920928955078125, 0.5, 0.949999988079071044921875);
+    float3 ground = float3(0.1599999964237213134765625, 0.14499999582767486572265625, 0.12999999523162841796875);
+    if (y >= 0.0)
+    {
+        return mix(horizon, zenith, float3(sqrt(y)));
+    }
+    return mix(horizon, ground, float3(sqrt(-y)));
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_env_to_map(thread const float3& w, thread const float& angle)
+{
+    float c = cos(angle);
+    float s = sin(angle);
+    return float3((c * w.x) - (s * w.z), w.y, (s * w.x) + (c * w.z));
+}
+
+static inline __attribute__((always_inline))
+float2 mxc_env_uv(thread const float3& d)
+{
+    float _2926;
+    if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13)
+    {
+        _2926 = 0.5 + (precise::atan2(d.x, -d.z) * 0.15915493667125701904296875);
+    }
+    else
+    {
+        _2926 = 0.5;
+    }
+    float u = _2926;
+    float v = precise::atan2(length(d.xz), d.y) * 0.3183098733425140380859375;
+    return float2(u, v);
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_env_lookup(thread const float3& d, texture2d<float> mxc_env_radiance, sampler mxc_env_radianceSmplr)
+{
+    float3 param = d;
+    return mxc_env_radiance.sample(mxc_env_radianceSmplr, mxc_env_uv(param), level(0.0)).xyz;
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_environment(thread const float3& d, texture2d<float> mxc_env_radiance, sampler mxc_env_radianceSmplr, constant MxcView& mxc_view)
+{
+    int code = mxc_environment_code(mxc_view);
+    if (code == 1)
+    {
+        return float3(mxc_view.environment.x);
+    }
+    if (code == 2)
+    {
+        float3 param = d;
+        return mxc_sky(param) * mxc_view.environment.x;
+    }
+    if (code == 3)
+    {
+        float3 param_1 = d;
+        float param_2 = mxc_view.environment.z;
+        float3 param_3 = mxc_env_to_map(param_1, param_2);
+        return mxc_env_lookup(param_3, mxc_env_radiance, mxc_env_radianceSmplr) * mxc_view.environment.x;
+    }
+    return float3(0.0);
+}
+
+static inline __attribute__((always_inline))
+uint mxc_env_cell(thread const float3& d, const device MxcEnvDistribution& v_2973)
+{
+    float3 param = d;
+    float2 uv = mxc_env_uv(param);
+    uint2 size = max(v_2973.mxc_env_size.xy, uint2(1u));
+    uint i = min(uint(fast::max(uv.x, 0.0) * float(size.x)), (size.x - 1u));
+    uint j = min(uint(fast::max(uv.y, 0.0) * float(size.y)), (size.y - 1u));
+    return (j * size.x) + i;
+}
+
+static inline __attribute__((always_inline))
+float mxc_env_pdf(thread const float3& d, const device MxcEnvDistribution& v_2973)
+{
+    float3 param = d;
+    return ((device float*)&v_2973.mxc_env_cells[mxc_env_cell(param, v_2973)])[2u];
+}
+
+static inline __attribute__((always_inline))
+float mxc_power_heuristic(thread const float& a, thread const float& b)
+{
+    float a2 = a * a;
+    float b2 = b * b;
+    float _3358;
+    if ((a2 + b2) > 0.0)
+    {
+        _3358 = a2 / (a2 + b2);
+    }
+    else
+    {
+        _3358 = 0.0;
+    }
+    return _3358;
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_env_sample(thread const float4& u, thread float& pdf, const device MxcEnvDistribution& v_2973)
+{
+    uint2 size = max(v_2973.mxc_env_size.xy, uint2(1u));
+    uint n = size.x * size.y;
+    uint k = min(uint(u.x * float(n)), (n - 1u));
+    float4 cell = v_2973.mxc_env_cells[k];
+    if (u.y >= cell.x)
+    {
+        k = min(as_type<uint>(cell.y), (n - 1u));
+    }
+    pdf = ((device float*)&v_2973.mxc_env_cells[k])[2u];
+    uint i = k % size.x;
+    uint j = k / size.x;
+    float phi = 6.283185482025146484375 * (((float(i) + u.z) / float(size.x)) - 0.5);
+    float y0 = cos((3.1415927410125732421875 * float(j)) / float(size.y));
+    float y1 = cos((3.1415927410125732421875 * float(j + 1u)) / float(size.y));
+    float y = mix(y0, y1, u.w);
+    float param = 1.0 - (y * y);
+    float r = mxc_safe_sqrt(param);
+    return float3(r * sin(phi), y, (-r) * cos(phi));
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_env_to_world(thread const float3& m, thread const float& angle)
+{
+    float c = cos(angle);
+    float s = sin(angle);
+    return float3((c * m.x) + (s * m.z), m.y, ((-s) * m.x) + (c * m.z));
+}
+
+static inline __attribute__((always_inline))
+float3 mxc_closure_eval_pdf(thread const MxcClosure& c, thread const float3& wo, thread const float3& wi, thread const bool& wantPdf, thread float& pdf)
+{
+    float3 f = float3(0.0);
+    float p = 0.0;
+    for (int k = 0; k < c.count; k++)
+    {
+        MxcLobe l = c.lobes[k];
+        if (all(l.weight == float3(0.0)))
+        {
+            continue;
+        }
+        float3 param = l.N;
+        float3 param_1 = l.T;
+        float3x3 frame = mxc_frame(param, param_1);
+        float3x3 param_2 = frame;
+        float3 param_3 = wo;
+        float3 o = mxc_to_local(param_2, param_3);
+        float3x3 param_4 = frame;
+        float3 param_5 = wi;
+        float3 i = mxc_to_local(param_4, param_5);
+        MxcLobe param_6 = l;
+        float param_7 = abs(i.z);
+        MxcLobe param_8 = l;
+        float3 param_9 = o;
+        float3 param_10 = i;
+        f += (((l.weight * c.ms[k]) * mxc_lobe_absorption(param_6, param_7)) * mxc_lobe_eval(param_8, param_9, param_10));
+        if (wantPdf)
+        {
+            MxcLobe param_11 = l;
+            float3 param_12 = o;
+            float3 param_13 = i;
+            p += (c.choice[k] * mxc_lobe_pdf(param_11, param_12, param_13));
+        }
+    }
+    float _2415;
+    if (c.choiceTotal > 0.0)
+    {
+        _2415 = p / c.choiceTotal;
+    }
+    else
+    {
+        _2415 = 0.0;
+    }
+    pdf = _2415;
+    return f;
+}
+
+fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[buffer(0)]], const device MxcParameters& mxc_params [[buffer(1)]], const device MxcEnvDistribution& v_2973 [[buffer(2)]], texture2d<float> mxc_tables [[texture(0)]], texture2d<float> mxc_texture_0 [[texture(1)]], texture2d<float> mxc_texture_1 [[texture(2)]], texture2d<float> mxc_texture_2 [[texture(3)]], texture2d<float> mxc_texture_3 [[texture(4)]], texture2d<float> mxc_texture_4 [[texture(5)]], texture2d<float> mxc_texture_5 [[texture(6)]], texture2d<float> mxc_env_radiance [[texture(7)]], sampler mxc_tablesSmplr [[sampler(0)]], sampler mxc_texture_0Smplr [[sampler(1)]], sampler mxc_texture_1Smplr [[sampler(2)]], sampler mxc_texture_2Smplr [[sampler(3)]], sampler mxc_texture_3Smplr [[sampler(4)]], sampler mxc_texture_4Smplr [[sampler(5)]], sampler mxc_texture_5Smplr [[sampler(6)]], sampler mxc_env_radianceSmplr [[sampler(7)]], bool gl_FrontFacing [[front_facing]], float4 gl_FragCoord [[position]])
+{
+    main0_out out = {};
+    float mxc_texture_footprint = 1.0;
+    MxcGeometry g;
+    g.P = in.vPosition;
+    g.Pobj = in.vObjectPosition;
+    float3 param = in.vNormal;
+    float3 param_1 = float3(0.0, 0.0, 1.0);
+    float3 N = mxc_safe_normalize(param, param_1);
+    if (!gl_FrontFacing)
+    {
+        N = -N;
+    }
+    float handedness = (in.vTangent.w < 0.0) ? (-1.0) : 1.0;
+    float3 param_2 = N;
+    float3 param_3 = in.vTangent.xyz;
+    float3x3 frame = mxc_frame(param_2, param_3);
+    g.N = N;
+    g.T = frame[0];
+    g.B = frame[1] * handedness;
+    float3 param_4 = in.vObjectNormal;
+    float3 param_5 = float3(0.0, 0.0, 1.0);
+    g.Nobj = mxc_safe_normalize(param_4, param_5);
+    float3 param_6 = g.Nobj;
+    float3 param_7 = in.vObjectTangent;
+    float3x3 objectFrame = mxc_frame(param_6, param_7);
+    g.Tobj = objectFrame[0];
+    g.Bobj = objectFrame[1] * handedness;
+    g.uv = in.vUv;
+    g.color = float4(1.0);
+    g.objectToWorld = mxc_view.objectToWorld;
+    g.frame = mxc_params.frame;
+    g.time = mxc_params.time;
+    float3 param_8 = mxc_view.eye.xyz - in.vPosition;
+    float3 param_9 = N;
+    float3 wo = mxc_safe_normalize(param_8, param_9);
+    mxc_texture_footprint = mxc_view.jitter.z;
+    if (!(mxc_texture_footprint > 0.0))
+    {
+        mxc_texture_footprint = 1.0;
+    }
+    uint param_10 = uint(mxc_view.counts.z) + 7u;
+    uint param_11 = uint(gl_FragCoord.y) + mxc_pcg(param_10);
+    uint param_12 = uint(gl_FragCoord.x) ^ mxc_pcg(param_11);
+    uint param_13 = mxc_pcg(param_12);
+    mxc_closure_seed(param_13);
+    MxcGeometry param_14 = g;
+    float3 param_15 = wo;
+    MxcClosure param_16;
+    mxc_material_closure(param_14, param_15, param_16, mxc_texture_footprint, mxc_tables, mxc_tablesSmplr, mxc_texture_0, mxc_texture_0Smplr, mxc_params, mxc_texture_1, mxc_texture_1Smplr, mxc_texture_2, mxc_texture_2Smplr, mxc_texture_3, mxc_texture_3Smplr, mxc_texture_4, mxc_texture_4Smplr, mxc_texture_5, mxc_texture_5Smplr);
+    MxcClosure c = param_16;
+    float3 radiance = c.emission * mxc_view.environment.y;
+    int lights = mxc_light_count(mxc_view);
+    int kinds = mxc_light_kinds();
+    bool image = mxc_environment_code(mxc_view) == 3;
+    int _3561;
+    if (mxc_environment_code(mxc_view) != 0)
+    {
+        _3561 = max(mxc_view.counts.w, 1);
+    }
+    else
+    {
+        _3561 = 0;
+    }
+    int n = _3561;
+    uint param_17 = uint(mxc_view.counts.z);
+    uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
+    uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
+    uint seed = mxc_pcg(param_19);
+    uint param_20 = uint(gl_FragCoord.y) + 2654435769u;
+    uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
+    uint pixel = mxc_pcg(param_21);
+    uint param_22 = pixel;
+    float _3604 = mxc_uniform(param_22);
+    pixel = param_22;
+    uint param_23 = pixel;
+    float _3608 = mxc_uniform(param_23);
+    pixel = param_23;
+    uint param_24 = pixel;
+    float _3612 = mxc_uniform(param_24);
+    pixel = param_24;
+    uint param_25 = pixel;
+    float _3616 = mxc_uniform(param_25);
+    pixel = param_25;
+    float4 shift = float4(_3604, _3608, _3612, _3616);
+    float3 sum = float3(0.0);
+    int _3642;
+    MxcSample smp;
+    float3 _3717;
+    float3 _3721;
+    float _3763;
+    float param_49;
+    int _3865;
+    float param_59;
+    float _4024;
+    for (int b = 0; b < max(n, int(lights > 0)); b++)
+    {
+        int batchLights = (b == 0) ? lights : 0;
+        if (b < n)
+        {
+            _3642 = 1 + int(image);
+        }
+        else
+        {
+            _3642 = 0;
+        }
+        int batchSamples = _3642;
+        uint index = (uint(mxc_view.counts.z) * uint(max(n, 1))) + uint(b);
+        uint param_26 = index;
+        uint param_27 = 2u;
+        float _3665 = mxc_radical_inverse(param_26, param_27);
+        uint param_28 = index;
+        uint param_29 = 3u;
+        float _3669 = mxc_radical_inverse(param_28, param_29);
+        uint param_30 = index;
+        uint param_31 = 5u;
+        float _3674 = mxc_radical_inverse(param_30, param_31);
+        uint param_32 = index;
+        uint param_33 = 7u;
+        float _3678 = mxc_radical_inverse(param_32, param_33);
+        float4 choice = fract(float4(_3665, _3669, _3674, _3678) + shift);
+        smp.valid = short(false);
+        smp.evaluate = short(false);
+        smp.delta = short(false);
+        smp.pdf = 0.0;
+        smp.weight = float3(0.0);
+        smp.wi = N;
+        if (n > 0)
+        {
+            MxcClosure param_34 = c;
+            float3 param_35 = wo;
+            float3 param_36 = float3(choice.z, choice.w, choice.x);
+            smp = mxc_closure_sample_direction(param_34, param_35, param_36);
+        }
+        bool above = dot(smp.wi, N) > 0.0;
+        if (bool(smp.valid))
+        {
+            if (above)
+            {
+                _3721 = smp.wi;
+            }
+            else
+            {
+                float3 param_37 = -wo;
+                float3 param_38 = smp.wi;
+                _3721 = mxc_exit_direction(param_37, param_38);
+            }
+            float3 param_39 = _3721;
+            _3717 = mxc_environment(param_39, mxc_env_radiance, mxc_env_radianceSmplr, mxc_view);
+        }
+        else
+        {
+            _3717 = float3(0.0);
+        }
+        float3 seen = _3717;
+        bool _3744 = (b < n) && bool(smp.valid);
+        bool _3750;
+        if (_3744)
+        {
+            _3750 = !bool(smp.evaluate);
+        }
+        else
+        {
+            _3750 = _3744;
+        }
+        if (_3750)
+        {
+            bool _3756 = image && above;
+            bool _3762;
+            if (_3756)
+            {
+                _3762 = !bool(smp.delta);
+            }
+            else
+            {
+                _3762 = _3756;
+            }
+            if (_3762)
+            {
+                float3 param_40 = smp.wi;
+                float param_41 = mxc_view.environment.z;
+                float3 param_42 = mxc_env_to_map(param_40, param_41);
+                float param_43 = smp.pdf;
+                float param_44 = mxc_env_pdf(param_42, v_2973);
+                _3763 = mxc_power_heuristic(param_43, param_44);
+            }
+            else
+            {
+                _3763 = 1.0;
+            }
+            float w = _3763;
+            sum += ((smp.weight * w) * seen);
+        }
+        float3 m = float3(0.0);
+        float lightPdf = 0.0;
+        float3 imageWi = N;
+        float3 imageSeen = float3(0.0);
+        if (image && (b < n))
+        {
+            uint param_45 = seed;
+            float _3807 = mxc_uniform(param_45);
+            seed = param_45;
+            uint param_46 = seed;
+            float _3811 = mxc_uniform(param_46);
+            seed = param_46;
+            uint param_47 = seed;
+            float _3815 = mxc_uniform(param_47);
+            seed = param_47;
+            float4 v = float4(choice.y, _3807, _3811, _3815);
+            float4 param_48 = v;
+            float3 _3821 = mxc_env_sample(param_48, param_49, v_2973);
+            lightPdf = param_49;
+            m = _3821;
+            float3 param_50 = m;
+            float param_51 = mxc_view.environment.z;
+            imageWi = mxc_env_to_world(param_50, param_51);
+            bool _3830 = lightPdf > 0.0;
+            bool _3837;
+            if (_3830)
+            {
+                _3837 = dot(imageWi, N) > 0.0;
+            }
+            else
+            {
+                _3837 = _3830;
+            }
+            if (_3837)
+            {
+                float3 param_52 = imageWi;
+                imageSeen = mxc_environment(param_52, mxc_env_radiance, mxc_env_radianceSmplr, mxc_view);
+            }
+        }
+        for (int j = 0; j < (batchLights + batchSamples); j++)
+        {
+            float3 wi = N;
+            float3 incoming = float3(0.0);
+            bool use = true;
+            if ((n == 0) || (j < batchLights))
+            {
+                _3865 = 0;
+            }
+            else
+            {
+                _3865 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+            }
+            int strategy = _3865;
+            if (strategy == 0)
+            {
+                float4 light = mxc_view.lightVector[j];
+                incoming = mxc_view.lightRadiance[j].xyz;
+                bool _3890 = kinds == 1;
+                bool _3903;
+                if (!_3890)
+                {
+                    bool _3896 = (kinds & 1) != 0;
+                    bool _3902;
+                    if (_3896)
+                    {
+                        _3902 = light.w == 0.0;
+                    }
+                    else
+                    {
+                        _3902 = _3896;
+                    }
+                    _3903 = _3902;
+                }
+                else
+                {
+                    _3903 = _3890;
+                }
+                bool directional = _3903;
+                if (directional)
+                {
+                    float3 param_53 = light.xyz;
+                    float3 param_54 = N;
+                    wi = mxc_safe_normalize(param_53, param_54);
+                }
+                else
+                {
+                    float3 d = light.xyz - in.vPosition;
+                    float d2 = fast::max(dot(d, d), 9.9999999392252902907785028219223e-09);
+                    wi = d * rsqrt(d2);
+                    incoming /= float3(d2);
+                    bool _3935 = (kinds & 4) != 0;
+                    bool _3941;
+                    if (_3935)
+                    {
+                        _3941 = light.w == 2.0;
+                    }
+                    else
+                    {
+                        _3941 = _3935;
+                    }
+                    if (_3941)
+                    {
+                        float4 spot = mxc_view.lightSpot[j];
+                        incoming *= smoothstep(spot.w, mxc_view.lightRadiance[j].w, dot(-wi, spot.xyz));
+                    }
+                }
+            }
+            else
+            {
+                if (strategy == 1)
+                {
+                    wi = smp.wi;
+                    incoming = seen;
+                    use = bool(smp.valid) && bool(smp.evaluate);
+                }
+                else
+                {
+                    wi = imageWi;
+                    incoming = imageSeen;
+                    bool _3978 = lightPdf > 0.0;
+                    bool _3985;
+                    if (_3978)
+                    {
+                        _3985 = dot(imageWi, N) > 0.0;
+                    }
+                    else
+                    {
+                        _3985 = _3978;
+                    }
+                    use = _3985;
+                }
+            }
+            MxcClosure param_55 = c;
+            float3 param_56 = wo;
+            float3 param_57 = wi;
+            bool param_58 = strategy != 0;
+            float3 _3998 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            float pdf = param_59;
+            float3 f = _3998;
+            if (strategy == 0)
+            {
+                radiance += (f * incoming);
+            }
+            else
+            {
+                if (strategy == 1)
+                {
+                    if (use && (pdf > 0.0))
+                    {
+                        if (image && above)
+                        {
+                            float3 param_60 = wi;
+                            float param_61 = mxc_view.environment.z;
+                            float3 param_62 = mxc_env_to_map(param_60, param_61);
+                            float param_63 = pdf;
+                            float param_64 = mxc_env_pdf(param_62, v_2973);
+                            _4024 = mxc_power_heuristic(param_63, param_64);
+                        }
+                        else
+                        {
+                            _4024 = 1.0;
+                        }
+                        float w_1 = _4024;
+                        sum += (((f * w_1) / float3(pdf)) * incoming);
+                    }
+                }
+                else
+                {
+                    if (use)
+                    {
+                        float3 param_65 = m;
+                        float param_66 = mxc_env_pdf(param_65, v_2973);
+                        float param_67 = pdf;
+                        float w_2 = mxc_power_heuristic(param_66, param_67);
+                        sum += (((f * w_2) * incoming) / float3(lightPdf));
+                    }
+                }
+            }
+        }
+    }
+    radiance += (sum / float3(float(max(n, 1))));
+    float3 param_68 = c.transparency;
+    float coverage = 1.0 - fast::clamp(mxc_luminance(param_68), 0.0, 1.0);
+    out.outColor = float4(radiance, coverage);
+    return out;
+}
+
+// ==== vertex (main0) ====
+#pragma clang diagnostic ignored "-Wmissing-prototypes"
+
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using namespace metal;
+
+template<typename T>
+[[clang::optnone]] T spvFMul(T l, T r)
+{
+    return fma(l, r, T(0));
+}
+
+template<typename T, int Cols, int Rows>
+[[clang::optnone]] vec<T, Cols> spvFMulVectorMatrix(vec<T, Rows> v, matrix<T, Cols, Rows> m)
+{
+    vec<T, Cols> res = vec<T, Cols>(0);
+    for (uint i = Rows; i > 0; --i)
+    {
+        vec<T, Cols> tmp(0);
+        for (uint j = 0; j < Cols; ++j)
+        {
+            tmp[j] = m[j][i - 1];
+        }
+        res = fma(tmp, vec<T, Cols>(v[i - 1]), res);
+    }
+    return res;
+}
+
+template<typename T, int Cols, int Rows>
+[[clang::optnone]] vec<T, Rows> spvFMulMatrixVector(matrix<T, Cols, Rows> m, vec<T, Cols> v)
+{
+    vec<T, Rows> res = vec<T, Rows>(0);
+    for (uint i = Cols; i > 0; --i)
+    {
+        res = fma(m[i - 1], vec<T, Rows>(v[i - 1]), res);
+    }
+    return res;
+}
+
+template<typename T, int LCols, int LRows, int RCols, int RRows>
+[[clang::optnone]] matrix<T, RCols, LRows> spvFMulMatrixMatrix(matrix<T, LCols, LRows> l, matrix<T, RCols, RRows> r)
+{
+    matrix<T, RCols, LRows> res;
+    for (uint i = 0; i < RCols; i++)
+    {
+        vec<T, RCols> tmp(0);
+        for (uint j = 0; j < LCols; j++)
+        {
+            tmp = fma(vec<T, RCols>(r[i][j]), l[j], tmp);
+        }
+        res[i] = tmp;
+    }
+    return res;
+}
+
+template<typename T>
+[[clang::optnone]] T spvFAdd(T l, T r)
+{
+    return fma(T(1), l, r);
+}
+
+struct MxcView
+{
+    float4x4 objectToWorld;
+    float4x4 normalToWorld;
+    float4x4 worldToClip;
+    float4 eye;
+    float4 jitter;
+    float4 lightVector[8];
+    float4 lightSpot[8];
+    float4 lightRadiance[8];
+    int4 counts;
+    float4 environment;
+};
+
+constant int MXC_ENVIRONMENT_tmp [[function_constant(0)]];
+constant int MXC_ENVIRONMENT = is_function_constant_defined(MXC_ENVIRONMENT_tmp) ? MXC_ENVIRONMENT_tmp : -1;
+constant int MXC_LIGHT_COUNT_tmp [[function_constant(1)]];
+constant int MXC_LIGHT_COUNT = is_function_constant_defined(MXC_LIGHT_COUNT_tmp) ? MXC_LIGHT_COUNT_tmp : -1;
+constant int MXC_LIGHT_KINDS_tmp [[function_constant(2)]];
+constant int MXC_LIGHT_KINDS = is_function_constant_defined(MXC_LIGHT_KINDS_tmp) ? MXC_LIGHT_KINDS_tmp : -1;
+
+struct main0_out
+{
+    float3 vPosition [[user(locn0)]];
+    float3 vNormal [[user(locn1)]];
+    float4 vTangent [[user(locn2)]];
+    float2 vUv [[user(locn3)]];
+    float3 vObjectPosition [[user(locn4)]];
+    float3 vObjectNormal [[user(locn5)]];
+    float3 vObjectTangent [[user(locn6)]];
+    float4 gl_Position [[position]];
+};
+
+struct main0_in
+{
+    float3 inPosition [[attribute(0)]];
+    float3 inNormal [[attribute(1)]];
+    float4 inTangent [[attribute(2)]];
+    float2 inUv [[attribute(3)]];
+};
+
+vertex main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[buffer(0)]])
+{
+    main0_out out = {};
+    float4 world = spvFMulMatrixVector(mxc_view.objectToWorld, float4(in.inPosition, 1.0));
+    out.vPosition = world.xyz;
+    out.vNormal = float3x3(mxc_view.normalToWorld[0].xyz, mxc_view.normalToWorld[1].xyz, mxc_view.normalToWorld[2].xyz) * in.inNormal;
+    out.vTangent = float4(float3x3(mxc_view.objectToWorld[0].xyz, mxc_view.objectToWorld[1].xyz, mxc_view.objectToWorld[2].xyz) * in.inTangent.xyz, in.inTangent.w);
+    out.vUv = in.inUv;
+    out.vObjectPosition = in.inPosition;
+    out.vObjectNormal = in.inNormal;
+    out.vObjectTangent = in.inTangent.xyz;
+    float4 clip = spvFMulMatrixVector(mxc_view.worldToClip, world);
+    float _104 = clip.w;
+    float4 _106 = clip;
+    float2 _108 = spvFAdd(_106.xy, mxc_view.jitter.xy * _104);
+    clip.x = _108.x;
+    clip.y = _108.y;
+    out.gl_Position = clip;
+    return out;
+}
+
