@@ -175,8 +175,8 @@ void registerCompile(CLI::App& app, int& exitCode) {
       "under them) or scenes compile in one process, -j at a time: -o and --glsl then name folders, written as "
       "DIR/<document>/<material>.spv, each document's files together or not at all; a failing document does not "
       "stop the others, and the exit code is 1 when any failed");
-  command->add_option("files", options->files, "The .mtlx documents, folders or scene files (.json)")
-      ->required()
+  command->add_option("files", options->files,
+                      "The .mtlx documents, folders or scene files (.json); none with --tables DIR writes the tables alone")
       ->type_name("FILE|DIR");
   command->add_option("-o,--output", options->output,
                       "Write the shader here, in --target's language (a folder for several documents)")
@@ -187,6 +187,13 @@ void registerCompile(CLI::App& app, int& exitCode) {
                    "(Metal 2.1), hlsl (shader model 6.0) or wgsl (WebGPU). Default: the one -o's extension names "
                    "(.spv .glsl .essl .metal .hlsl .wgsl), else spirv")
       ->check(CLI::IsMember(std::vector<std::string>{"spirv", "glsl", "essl", "msl", "hlsl", "wgsl"}));
+  command->add_option("--depfile", options->depfile,
+                      "Also write a Makefile-style depfile here: the files written depend on the document, its "
+                      "includes, the library files and the image files (for Ninja, Make, CMake's DEPFILE)")
+      ->type_name("FILE");
+  command->add_flag("--list-outputs", options->listOutputs,
+                    "Print the files the command would write, one per line, and write nothing (for build systems "
+                    "that declare outputs before running)");
   command->add_option("--glsl", options->glsl,
                       "Write the Vulkan GLSL 4.50 that mxc compiles to SPIR-V here (a folder for several documents)")
       ->type_name("FILE|DIR");

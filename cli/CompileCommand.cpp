@@ -32,6 +32,31 @@ glsl::ShaderKind kindOf(const std::string& stage) {
 namespace {
 
 
+/// A path in a Makefile rule, as Make and Ninja read it: spaces and '#' escaped with a
+/// backslash, '$' doubled.
+std::string makeEscape(const std::string& path) {
+  std::string out;
+  for (char c : path) {
+    if (c == ' ' || c == '#') out += '\\';
+    if (c == '$') out += '$';
+    out += c;
+  }
+  return out;
+}
+
+/// The depfile of a compile: every file written depends on every file read (the document, its
+/// includes, library files, image files), each once, in a stable order.
+std::string depfileText(const std::vector<std::filesystem::path>& written, std::vector<std::filesystem::path> read) {
+  for (auto& path : read) path = std::filesystem::absolute(path).lexically_normal();
+  std::sort(read.begin(), read.end());
+  read.erase(std::unique(read.begin(), read.end()), read.end());
+  std::string out;
+  for (const auto& path : written) out += (out.empty() ? "" : " ") + makeEscape(path.string());
+  out += ":";
+  for (const auto& path : read) out += " \\\n  " + makeEscape(path.string());
+  return out + "\n";
+}
+
 /// One material to compile, in the pipeline of its document.
 struct Unit {
   MaterialPipeline* pipeline;
@@ -69,9 +94,22 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
     tables = *declared;
     if (printError(stageTables(outputs, tables))) return kOutputFailed;
   }
+  // What the command writes, for --list-outputs and as the depfile's targets.
+  const std::vector<std::filesystem::path> written = outputs.paths();
+  if (!options.depfile.empty()) {
+    if (written.empty() || options.output.empty() || options.output == "-") {
+      std::fprintf(stderr, "error: --depfile needs -o FILE: the depfile names the file it describes\n");
+      return kUsage;
+    }
+    if (printError(outputs.declare(options.depfile, "--depfile"))) return kOutputFailed;
+  }
   if (printError(outputs.checkDistinct())) return kUsage;
   for (MaterialPipeline* pipeline : pipelines) {
     if (printError(pipeline->checkOutputsAreNotInputs(outputs))) return kUsage;
+  }
+  if (options.listOutputs) {
+    for (const std::filesystem::path& path : written) std::printf("%s\n", path.string().c_str());
+    return kOk;
   }
   // A module on standard output would be mixed with the summary lines.
   const bool quiet = cli::quiet() || options.output == "-" || options.glsl == "-";
@@ -120,18 +158,25 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
       std::vector<std::string> lobes;
       shader.interface.lobeKinds.forEach([&](ir::LobeKind k) { lobes.emplace_back(ir::lobeKindName(k)); });
       std::sort(lobes.begin(), lobes.end());
-      const std::string written = target == target::Target::Spirv || lines == 0
+      const std::string language = target == target::Target::Spirv || lines == 0
                                       ? std::string()
                                       : fmt::format(", {} {} lines", target::targetName(target), lines);
       std::printf("%s: %s shader, %zu GLSL lines, %zu SPIR-V instructions%s; lobes %d (%s)%s%s\n", material.name.c_str(),
                   std::string(glsl::shaderKindName(kindOf(options.stage))).c_str(),
-                  shader.glsl.origins.size(), spirv::instructionCount(*words), written.c_str(), shader.interface.lobes,
+                  shader.glsl.origins.size(), spirv::instructionCount(*words), language.c_str(), shader.interface.lobes,
                   fmt::format("{}", fmt::join(lobes, ", ")).c_str(),
                   shader.interface.textures.empty() ? "" : fmt::format("; {} texture(s)", shader.interface.textures.size()).c_str(),
                   shader.interface.parameters.size() > 3
                       ? fmt::format("; {} parameter(s)", shader.interface.parameters.size() - 3).c_str()
                       : "");
     }
+  }
+  if (!options.depfile.empty()) {
+    std::vector<std::filesystem::path> inputs;
+    for (MaterialPipeline* pipeline : pipelines) {
+      for (std::filesystem::path& path : pipeline->inputFiles()) inputs.push_back(std::move(path));
+    }
+    if (printError(outputs.stage(options.depfile, depfileText(written, inputs)))) return kOutputFailed;
   }
   // All or nothing: a SPIR-V module that was not produced leaves every output as it was.
   if (!outputs.complete()) {
@@ -215,12 +260,35 @@ std::optional<std::string> resolveTarget(CompileOptions& options, bool batch) {
 
 int runCompile(const CompileOptions& given) {
   CompileOptions options = given;
+  if (options.files.empty()) {
+    // `mxc compile --tables DIR` alone: the tables, which depend on no document (a build
+    // system's rule of their own).
+    if (options.tables.empty()) {
+      std::fprintf(stderr, "error: no document to compile (and no --tables DIR to write)\n");
+      return kUsage;
+    }
+    OutputSet outputs;
+    std::string error;
+    auto tables = declareTables(outputs, options.tables, error);
+    if (!tables) {
+      printError(error);
+      return kOutputFailed;
+    }
+    if (printError(stageTables(outputs, *tables)) || printError(outputs.commit())) return kOutputFailed;
+    return kOk;
+  }
   const bool batch = isBatch(options);
   if (auto why = resolveTarget(options, batch)) {
     std::fprintf(stderr, "error: %s\n", why->c_str());
     return kUsage;
   }
-  if (batch) return runCompileBatch(options);
+  if (batch) {
+    if (!options.depfile.empty() || options.listOutputs) {
+      std::fprintf(stderr, "error: --depfile and --list-outputs are for one document (a build rule per document)\n");
+      return kUsage;
+    }
+    return runCompileBatch(options);
+  }
   options.file = options.files.empty() ? std::string() : options.files.front();
   const auto start = std::chrono::steady_clock::now();
   if (isSceneFile(options.file)) return compileScene(options, start);

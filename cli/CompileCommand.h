@@ -21,6 +21,8 @@ struct CompileOptions {
   bool optimize = false;
   int jobs = 0;        ///< -j: documents compiled at once in a batch (0: one per core)
   std::string tables;  ///< --tables DIR: write the albedo tables the shaders sample
+  std::string depfile;       ///< --depfile FILE: the outputs' dependencies, as a Makefile rule
+  bool listOutputs = false;  ///< --list-outputs: print the files that would be written, write none
   std::string target;  ///< --target as given (empty: from -o's extension, else SPIR-V)
   /// The language -o is written in: --target, else the one -o's extension names, else SPIR-V
   /// (set by runCompile).

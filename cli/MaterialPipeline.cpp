@@ -86,6 +86,23 @@ std::optional<std::string> MaterialPipeline::checkOutputsAreNotInputs(const Outp
   return std::nullopt;
 }
 
+std::vector<std::filesystem::path> MaterialPipeline::inputFiles() const {
+  std::vector<std::filesystem::path> out;
+  std::error_code error;
+  // The built-in library's texts are not files: only paths that exist are kept.
+  for (const auto& file : session_.workspace.sources.files()) {
+    if (std::filesystem::is_regular_file(file->path(), error)) out.emplace_back(file->path());
+  }
+  for (const ir::Material& m : compiler_->materials()) {
+    for (const ir::ImageFile& image : m.images) {
+      std::filesystem::path path = image.path;
+      if (path.is_relative()) path = compiler_->documentFolder() / path;
+      if (std::filesystem::is_regular_file(path, error)) out.push_back(path.lexically_normal());
+    }
+  }
+  return out;
+}
+
 std::optional<std::string> checkStandardOutput(const std::vector<std::string>& outputs, size_t materials) {
   size_t toStdout = 0;
   for (const std::string& o : outputs) toStdout += o == "-" ? 1 : 0;

@@ -46,6 +46,10 @@ class MaterialPipeline {
   /// document, a library file, or an image file of a material.
   std::optional<std::string> checkOutputsAreNotInputs(const OutputSet& outputs) const;
 
+  /// Every file the command reads for these materials, as paths that exist: the document, its
+  /// includes, library files and the materials' image files (for `compile --depfile`).
+  std::vector<std::filesystem::path> inputFiles() const;
+
   Compiler& compiler() { return *compiler_; }
   /// The materials chosen, after the passes.
   std::vector<ir::Material>& materials() { return compiler_->materials(); }

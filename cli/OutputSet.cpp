@@ -64,6 +64,12 @@ OutputSet::Entry* OutputSet::find(const fs::path& path) {
   return nullptr;
 }
 
+std::vector<std::filesystem::path> OutputSet::paths() const {
+  std::vector<std::filesystem::path> out;
+  for (const Entry& e : entries_) out.push_back(e.target.requested);
+  return out;
+}
+
 bool OutputSet::complete() const {
   for (const Entry& e : entries_) {
     if (!e.staged && !e.bytes) return false;

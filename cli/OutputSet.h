@@ -36,6 +36,8 @@ class OutputSet {
   /// The content of a declared output. A regular file is staged now (so a full disk is known at
   /// once and the bytes need not be kept); others are kept until `commit`.
   std::optional<std::string> stage(const std::filesystem::path& path, std::string bytes);
+  /// The declared paths, as they were given, in the order they were declared.
+  std::vector<std::filesystem::path> paths() const;
   /// Whether every declared output has been staged.
   bool complete() const;
 
