@@ -27,6 +27,7 @@
 #include "cli/InspectCommand.h"
 #include "cli/RenderCommand.h"
 #include "compiler/common/ColorSpace.h"
+#include "compiler/target/NagaTranslator.h"
 #include "runtime/ImageIO.h"
 #include "runtime/VulkanContext.h"
 
@@ -195,7 +196,7 @@ void registerCompile(CLI::App& app, int& exitCode) {
                     "Print the files the command would write, one per line, and write nothing (for build systems "
                     "that declare outputs before running)");
   command->add_option("--glsl", options->glsl,
-                      "Write the Vulkan GLSL 4.50 that mxc compiles to SPIR-V here (a folder for several documents)")
+                      "Write the Vulkan GLSL 4.40 that mxc compiles to SPIR-V here (a folder for several documents)")
       ->type_name("FILE|DIR");
   command->add_option("--tables", options->tables,
                       "Write the albedo tables the shaders sample to this folder (mxc_albedo_tables.bin; the "
@@ -423,6 +424,8 @@ std::string versionText() {
   text += fmt::format("glslang {}.{}.{}{}\n", GLSLANG_VERSION_MAJOR, GLSLANG_VERSION_MINOR, GLSLANG_VERSION_PATCH,
                       GLSLANG_VERSION_FLAVOR);
   text += fmt::format("{}\n", spvSoftwareVersionDetailsString());
+  text += fmt::format("SPIRV-Cross {}, for --target glsl, essl, msl, hlsl\n", MXC_SPIRV_CROSS_VERSION);
+  text += target::nagaVersion() + ", for --target wgsl\n";
   text += rt::imageLibraryVersion() + "\n";
   for (const std::string& device : rt::VulkanContext::describeDevices()) text += "Vulkan device " + device + "\n";
   if (!text.empty() && text.back() == '\n') text.pop_back();  // CLI11 ends the line

@@ -41,6 +41,19 @@ fs::path nagaProgram() {
   return std::string_view(MXC_NAGA_PROGRAM).empty() ? fs::path() : findProgram(MXC_NAGA_PROGRAM);
 }
 
+std::string nagaVersion() {
+  const fs::path naga = nagaProgram();
+  if (naga.empty()) return "naga: not found (the WGSL target needs it; scripts/setup installs it)";
+  std::string error;
+  TemporaryFolder folder(error);
+  if (folder.path().empty()) return "naga " + naga.string() + ": " + error;
+  auto run = runProcess({naga.string(), "--version"}, folder.path(), error);
+  if (!run || run->exitCode != 0) return "naga " + naga.string() + ": does not run";
+  std::string version = run->output;
+  while (!version.empty() && (version.back() == '\n' || version.back() == '\r')) version.pop_back();
+  return fmt::format("naga {} ({})", version, naga.string());
+}
+
 bool nagaTranslate(const std::vector<uint32_t>& words, Translation& out, std::string& error) {
   const fs::path naga = nagaProgram();
   if (naga.empty()) {

@@ -16,6 +16,9 @@ namespace mxc::target {
 /// when there is none.
 std::filesystem::path nagaProgram();
 
+/// "naga 30.0.1 (/path/to/naga)", or a line saying none was found, for `mxc --version`.
+std::string nagaVersion();
+
 /// Translates a validated module to WGSL. The module must have been built with separate
 /// samplers (glsl::BuildOptions::separateSamplers): WGSL has no combined image sampler. Its
 /// specialization constants are fixed at their defaults first (naga reads no expression of

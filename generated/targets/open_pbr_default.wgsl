@@ -3255,7 +3255,6 @@ struct gl_PerVertex {
     @builtin(position) gl_Position: vec4<f32>,
     gl_PointSize: f32,
     gl_ClipDistance: array<f32, 1>,
-    gl_CullDistance: array<f32, 1>,
 }
 
 struct VertexOutput {
@@ -3286,7 +3285,7 @@ var<private> inUv_1: vec2<f32>;
 var<private> vObjectPosition: vec3<f32>;
 var<private> vObjectNormal: vec3<f32>;
 var<private> vObjectTangent: vec3<f32>;
-var<private> unnamed: gl_PerVertex = gl_PerVertex(vec4<f32>(0f, 0f, 0f, 1f), 1f, array<f32, 1>(), array<f32, 1>());
+var<private> unnamed: gl_PerVertex = gl_PerVertex(vec4<f32>(0f, 0f, 0f, 1f), 1f, array<f32, 1>());
 
 fn main_1() {
     var world: vec4<f32>;
