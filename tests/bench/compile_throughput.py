@@ -112,7 +112,8 @@ def mxc_run(mxc: Path, arguments, jobs: int):
         seconds = time.perf_counter() - start
         if r.returncode != 0:
             sys.exit(f"compile_throughput: {' '.join(command)} failed:\n{r.stderr}")
-        materials = sum(1 for _ in (Path(scratch) / "out").rglob("*.spv"))
+        # One fragment stage per material (each also has its vertex stage, *.vert.spv, beside it).
+        materials = sum(1 for p in (Path(scratch) / "out").rglob("*.spv") if not p.name.endswith(".vert.spv"))
         return seconds, materials
 
 
