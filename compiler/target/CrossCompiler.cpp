@@ -34,8 +34,7 @@ std::vector<Bound> descriptors(const Compiler& compiler) {
   return out;
 }
 
-/// The placement of the module's descriptor at (set, binding); null when the interface has none
-/// (a bug of the interface: reported, not guessed).
+/// The placement of the module's descriptor at (set, binding); null when the interface has none.
 const Placement* placementAt(const std::vector<Placement>& placements, uint32_t set, uint32_t binding) {
   for (const Placement& p : placements) {
     if (p.resource.set == set && p.resource.binding == binding) return &p;
@@ -43,40 +42,43 @@ const Placement* placementAt(const std::vector<Placement>& placements, uint32_t 
   return nullptr;
 }
 
-std::string unplaced(const Bound& b) {
-  return fmt::format("the shader interface has no descriptor at set {} binding {}", b.set, b.binding);
-}
-
-bool placeGlsl(spirv_cross::CompilerGLSL& compiler, const std::vector<Placement>& placements, std::string& error) {
+/// Calls `place` with each descriptor of the module and its placement; false (and `error`) when
+/// the interface has no placement for one (a bug of the interface: reported, not guessed).
+template <typename Place>
+bool placeEach(const Compiler& compiler, const std::vector<Placement>& placements, std::string& error, Place place) {
   for (const Bound& b : descriptors(compiler)) {
     const Placement* p = placementAt(placements, b.set, b.binding);
-    if (!p) return error = unplaced(b), false;
-    compiler.unset_decoration(b.id, spv::DecorationDescriptorSet);
-    compiler.set_decoration(b.id, spv::DecorationBinding, static_cast<uint32_t>(p->binding));
+    if (!p) {
+      error = fmt::format("the shader interface has no descriptor at set {} binding {}", b.set, b.binding);
+      return false;
+    }
+    place(b, *p);
   }
   return true;
 }
 
+bool placeGlsl(spirv_cross::CompilerGLSL& compiler, const std::vector<Placement>& placements, std::string& error) {
+  return placeEach(compiler, placements, error, [&](const Bound& b, const Placement& p) {
+    compiler.unset_decoration(b.id, spv::DecorationDescriptorSet);
+    compiler.set_decoration(b.id, spv::DecorationBinding, static_cast<uint32_t>(p.binding));
+  });
+}
+
 bool placeMsl(spirv_cross::CompilerMSL& compiler, const std::vector<Placement>& placements, std::string& error) {
-  for (const Bound& b : descriptors(compiler)) {
-    const Placement* p = placementAt(placements, b.set, b.binding);
-    if (!p) return error = unplaced(b), false;
+  return placeEach(compiler, placements, error, [&](const Bound& b, const Placement& p) {
     spirv_cross::MSLResourceBinding binding;
     binding.stage = compiler.get_execution_model();
     binding.desc_set = b.set;
     binding.binding = b.binding;
-    binding.msl_buffer = static_cast<uint32_t>(std::max(p->buffer, 0));
-    binding.msl_texture = static_cast<uint32_t>(std::max(p->texture, 0));
-    binding.msl_sampler = static_cast<uint32_t>(std::max(p->sampler, 0));
+    binding.msl_buffer = static_cast<uint32_t>(std::max(p.buffer, 0));
+    binding.msl_texture = static_cast<uint32_t>(std::max(p.texture, 0));
+    binding.msl_sampler = static_cast<uint32_t>(std::max(p.sampler, 0));
     compiler.add_msl_resource_binding(binding);
-  }
-  return true;
+  });
 }
 
 bool placeHlsl(spirv_cross::CompilerHLSL& compiler, const std::vector<Placement>& placements, std::string& error) {
-  for (const Bound& b : descriptors(compiler)) {
-    const Placement* p = placementAt(placements, b.set, b.binding);
-    if (!p) return error = unplaced(b), false;
+  return placeEach(compiler, placements, error, [&](const Bound& b, const Placement& p) {
     spirv_cross::HLSLResourceBinding binding;
     binding.stage = compiler.get_execution_model();
     binding.desc_set = b.set;
@@ -85,11 +87,10 @@ bool placeHlsl(spirv_cross::CompilerHLSL& compiler, const std::vector<Placement>
     // one the resource's type calls for.
     for (auto* slot : {&binding.cbv, &binding.srv, &binding.uav, &binding.sampler}) {
       slot->register_space = b.set;
-      slot->register_binding = static_cast<uint32_t>(p->binding);
+      slot->register_binding = static_cast<uint32_t>(p.binding);
     }
     compiler.add_hlsl_resource_binding(binding);
-  }
-  return true;
+  });
 }
 
 }  // namespace
