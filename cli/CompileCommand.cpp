@@ -72,7 +72,7 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
   OutputSet outputs;
   const glsl::ShaderKind kind = kindOf(options.stage);
   const target::Target target = options.resolvedTarget;
-  // Beside a SPIR-V file, its interface for a host renderer (and the vertex stage of a raster shader).
+  // Beside the shader file, its interface for a host renderer (and the vertex stage of a raster shader).
   const bool interfaces = !options.output.empty() && options.output != "-";
   for (const Unit& unit : units) {
     for (const auto& [path, option] : {std::pair{options.output, "-o"}, std::pair{options.glsl, "--glsl"}}) {
