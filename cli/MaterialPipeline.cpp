@@ -74,14 +74,22 @@ int MaterialPipeline::run(CompileRequest request, const MaterialOptions& options
   return kOk;
 }
 
-std::optional<std::string> MaterialPipeline::checkOutputsAreNotInputs(const OutputSet& outputs) const {
-  if (auto error = session_.checkOutputsAreNotSources(outputs)) return error;
+std::vector<std::filesystem::path> MaterialPipeline::imagePaths() const {
+  std::vector<std::filesystem::path> out;
   for (const ir::Material& m : compiler_->materials()) {
     for (const ir::ImageFile& image : m.images) {
       std::filesystem::path path = image.path;
       if (path.is_relative()) path = compiler_->documentFolder() / path;
-      if (auto error = outputs.checkNotInput(path, "an image file this command reads")) return error;
+      out.push_back(std::move(path));
     }
+  }
+  return out;
+}
+
+std::optional<std::string> MaterialPipeline::checkOutputsAreNotInputs(const OutputSet& outputs) const {
+  if (auto error = session_.checkOutputsAreNotSources(outputs)) return error;
+  for (const std::filesystem::path& path : imagePaths()) {
+    if (auto error = outputs.checkNotInput(path, "an image file this command reads")) return error;
   }
   return std::nullopt;
 }
@@ -93,12 +101,8 @@ std::vector<std::filesystem::path> MaterialPipeline::inputFiles() const {
   for (const auto& file : session_.workspace.sources.files()) {
     if (std::filesystem::is_regular_file(file->path(), error)) out.emplace_back(file->path());
   }
-  for (const ir::Material& m : compiler_->materials()) {
-    for (const ir::ImageFile& image : m.images) {
-      std::filesystem::path path = image.path;
-      if (path.is_relative()) path = compiler_->documentFolder() / path;
-      if (std::filesystem::is_regular_file(path, error)) out.push_back(path.lexically_normal());
-    }
+  for (const std::filesystem::path& path : imagePaths()) {
+    if (std::filesystem::is_regular_file(path, error)) out.push_back(path.lexically_normal());
   }
   return out;
 }

@@ -56,6 +56,9 @@ class MaterialPipeline {
   std::filesystem::path documentFolder() const { return compiler_->documentFolder(); }
 
  private:
+  /// The materials' image files, relative ones resolved against the document's folder.
+  std::vector<std::filesystem::path> imagePaths() const;
+
   Session& session_;
   std::unique_ptr<Compiler> compiler_;
 };

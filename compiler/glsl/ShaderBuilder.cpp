@@ -161,7 +161,6 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
                                                                  : "compute shader drawing sample directions";
   header(w, material, purpose, options.subgroups);
   iface.subgroups = options.subgroups;
-  iface.separateSamplers = options.separateSamplers;
   w.line(fmt::format("#define MXC_MAX_LOBES {}", std::max(iface.lobes, 1)));
   w.line(fmt::format("#define MXC_ACCURACY_{}", accuracyMacro(options.accuracy)));
   if (options.accuracy == Accuracy::Reference) {

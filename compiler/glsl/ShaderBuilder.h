@@ -46,7 +46,6 @@ struct MaterialInterface {
   bool transmission = false;            ///< the lobes' refraction code is compiled in (MXC_TRANSMISSION)
   bool absorption = false;              ///< absorption above the lobes is computed (MXC_ABSORPTION)
   bool subgroups = true;                ///< parameters are read through subgroupBroadcastFirst (MXC_SUBGROUPS)
-  bool separateSamplers = false;        ///< textures and samplers are separate bindings (MXC_SEPARATE_SAMPLERS)
   std::vector<std::string> geomprops;
 };
 
