@@ -1,14 +1,16 @@
 #include "cli/InterfaceOutputs.h"
 
 #include <algorithm>
+#include <map>
 #include <mutex>
-#include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
 #include "compiler/common/Diagnostic.h"
 #include "compiler/glsl/ShaderInterface.h"
 #include "compiler/spirv/SpirvCompiler.h"
+#include "compiler/target/CrossCompiler.h"
 #include "compiler/target/Target.h"
 
 namespace mxc::cli {
@@ -31,23 +33,38 @@ std::optional<std::string> declareInterfaceOutputs(OutputSet& outputs, const fs:
   return std::nullopt;
 }
 
-const std::vector<uint32_t>& vertexStageSpirv() {
-  static std::once_flag once;
-  static std::vector<uint32_t> words;
-  std::call_once(once, [] {
-    Diagnostics diagnostics;
-    auto compiled = spirv::compile(glsl::buildVertexShader(), {}, diagnostics);
-    // The vertex stage is mxc's own fixed code, compiled by every test: a failure is a bug.
-    if (!compiled) throw std::logic_error("the vertex stage does not compile: " + diagnostics.format());
-    words = std::move(*compiled);
-  });
-  return words;
-}
-
 namespace {
 
 std::string bytesOf(const std::vector<uint32_t>& words) {
   return std::string(reinterpret_cast<const char*>(words.data()), words.size() * sizeof(uint32_t));
+}
+
+/// The vertex stage in the compiler's target, its descriptors where `placements` puts them. The
+/// module is the same for every material and binds only the view block, which every material of
+/// a target places alike: it is translated and checked once per run for each placement of its own
+/// descriptors, not once per material of a batch (for WGSL, two runs of naga each).
+std::optional<target::Translation> vertexStageIn(Compiler& compiler, const std::vector<target::Placement>& placements) {
+  static const std::vector<std::pair<uint32_t, uint32_t>> bound = target::descriptorBindings(vertexStageSpirv());
+  const target::Target target = compiler.request().target;
+  std::vector<target::Placement> own;
+  std::string key(target::targetName(target));
+  for (const target::Placement& p : placements) {
+    if (std::find(bound.begin(), bound.end(), std::pair(p.resource.set, p.resource.binding)) == bound.end()) continue;
+    own.push_back(p);
+    key += fmt::format(" {}.{}={}", p.resource.set, p.resource.binding, target::placementJson(p, target).dump());
+  }
+  static std::mutex mutex;  // batch workers
+  static std::map<std::string, target::Translation> translated;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (auto found = translated.find(key); found != translated.end()) return found->second;
+  }
+  std::optional<target::Translation> vertex = compiler.translate(vertexStageSpirv(), spirv::Stage::Vertex, own, "the vertex stage");
+  if (vertex) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    translated.emplace(key, *vertex);
+  }
+  return vertex;
 }
 
 /// The interface JSON told which language its stages are in and where that language binds each
@@ -101,7 +118,7 @@ Staged stageShaderOutputs(OutputSet& outputs, const fs::path& path, bool interfa
     fragmentEntry = translated->entryPoint;
     if (lines) *lines = static_cast<size_t>(std::count(text.begin(), text.end(), '\n'));
     if (interface && raster) {
-      auto vertex = compiler.translate(vertexStageSpirv(), spirv::Stage::Vertex, placements, "the vertex stage");
+      auto vertex = vertexStageIn(compiler, placements);
       if (!vertex) return Staged::TranslationFailed;
       vertexText = std::move(vertex->text);
       vertexEntry = vertex->entryPoint;

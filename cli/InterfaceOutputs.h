@@ -26,9 +26,6 @@ std::filesystem::path vertexPath(const std::filesystem::path& shader);
 std::optional<std::string> declareInterfaceOutputs(OutputSet& outputs, const std::filesystem::path& shader,
                                                    glsl::ShaderKind kind);
 
-/// The vertex stage's SPIR-V, compiled once for the run (it is the same for every material).
-const std::vector<uint32_t>& vertexStageSpirv();
-
 /// How staging a material's outputs ended.
 enum class Staged {
   Ok,

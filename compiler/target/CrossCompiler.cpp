@@ -95,6 +95,17 @@ bool placeHlsl(spirv_cross::CompilerHLSL& compiler, const std::vector<Placement>
 
 }  // namespace
 
+std::vector<std::pair<uint32_t, uint32_t>> descriptorBindings(const std::vector<uint32_t>& words) {
+  std::vector<std::pair<uint32_t, uint32_t>> out;
+  try {
+    const Compiler reflection(words);
+    for (const Bound& b : descriptors(reflection)) out.emplace_back(b.set, b.binding);
+  } catch (const std::exception&) {
+    out.clear();  // not a module SPIRV-Cross can read: nothing is known of it
+  }
+  return out;
+}
+
 bool crossCompile(const std::vector<uint32_t>& words, Target target, const std::vector<Placement>& placements,
                   Translation& out, std::string& error) {
   // SPIRV-Cross reports what it cannot translate by throwing spirv_cross::CompilerError.

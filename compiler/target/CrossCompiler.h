@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "compiler/target/Target.h"
@@ -16,6 +17,10 @@ struct Translation {
   std::string text;
   std::string entryPoint;  ///< the entry point's name in `text` ("main", MSL's "main0")
 };
+
+/// The (set, binding) of every descriptor the module declares, by SPIRV-Cross's reflection;
+/// empty when the module cannot be read.
+std::vector<std::pair<uint32_t, uint32_t>> descriptorBindings(const std::vector<uint32_t>& words);
 
 /// Translates a validated module to `target` (not Spirv or Wgsl). On failure (SPIRV-Cross
 /// rejects the module) returns false with SPIRV-Cross's message in `error`.

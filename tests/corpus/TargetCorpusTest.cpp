@@ -14,12 +14,7 @@ namespace {
 class TargetCorpus : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(TargetCorpus, EveryMaterialTranslatesToEveryTarget) {
-  static const auto vertex = [] {
-    Diagnostics diagnostics;
-    auto words = spirv::compile(glsl::buildVertexShader(), {}, diagnostics);
-    return words.value_or(std::vector<uint32_t>{});
-  }();
-  ASSERT_FALSE(vertex.empty());
+  const std::vector<uint32_t>& vertex = vertexStageSpirv();
   for (target::Target t : target::allTargets()) {
     if (t == target::Target::Spirv) continue;
     Context context;

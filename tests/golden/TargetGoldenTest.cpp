@@ -25,12 +25,11 @@ std::string translated(const std::string& relative, target::Target t) {
   request.document = sharedDir() / relative;
   request.target = t;
   Compiler compiler(context, request);
-  const auto vertex = spirv::compile(glsl::buildVertexShader(), {}, context.diagnostics);
   std::string out;
   for (const ir::Material& material : compiler.materials()) {
     const glsl::MaterialShader shader = compiler.shader(material);
     const auto words = compiler.spirv(shader);
-    if (!words || !vertex) break;
+    if (!words) break;
     const auto interface = glsl::shaderInterfaceJson(material, shader, glsl::ShaderKind::Raster, {});
     const auto placements = target::placeResources(target::resourcesOfInterface(interface), t);
     out += "// ==== " + relative + ": material " + material.name + ", placements ====\n";
@@ -38,7 +37,7 @@ std::string translated(const std::string& relative, target::Target t) {
       out += "// " + p.resource.name + " " + target::placementJson(p, t).dump() + "\n";
     }
     const auto fragment = compiler.translate(*words, spirv::Stage::Fragment, placements, material.name);
-    const auto vertexText = compiler.translate(*vertex, spirv::Stage::Vertex, placements, "vertex");
+    const auto vertexText = compiler.translate(vertexStageSpirv(), spirv::Stage::Vertex, placements, "vertex");
     if (!fragment || !vertexText) break;
     out += "// ==== fragment (" + fragment->entryPoint + ") ====\n" + fragment->text;
     out += "// ==== vertex (" + vertexText->entryPoint + ") ====\n" + vertexText->text;

@@ -128,15 +128,14 @@ Translated translateDocument(const std::filesystem::path& document, Target targe
   const ir::Material& material = compiler.materials().front();
   const glsl::MaterialShader shader = compiler.shader(material);
   const auto words = compiler.spirv(shader);
-  const auto vertexWords = spirv::compile(glsl::buildVertexShader(), {}, context.diagnostics);
-  if (!words || !vertexWords) {
+  if (!words) {
     ADD_FAILURE() << context.diagnostics.format();
     return out;
   }
   out.interface = glsl::shaderInterfaceJson(material, shader, glsl::ShaderKind::Raster, {});
   out.placements = target::placeResources(target::resourcesOfInterface(out.interface), target);
   auto fragment = compiler.translate(*words, spirv::Stage::Fragment, out.placements, "fragment");
-  auto vertex = compiler.translate(*vertexWords, spirv::Stage::Vertex, out.placements, "vertex");
+  auto vertex = compiler.translate(vertexStageSpirv(), spirv::Stage::Vertex, out.placements, "vertex");
   EXPECT_TRUE(fragment && vertex) << context.diagnostics.format();
   if (fragment) out.fragment = fragment->text;
   if (vertex) out.vertex = vertex->text;
