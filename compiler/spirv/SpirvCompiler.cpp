@@ -135,6 +135,27 @@ void initialise() {
   std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
+/// Sets `shader` up as mxc compiles for Vulkan 1.1 / SPIR-V 1.3 from `source` (GLSL, or the
+/// HLSL a translator wrote); the messages that go with it.
+EShMessages forVulkan(glslang::TShader& shader, glslang::EShSource source, EShLanguage stage) {
+  shader.setEnvInput(source, stage, glslang::EShClientVulkan, 100);
+  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
+  return static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+}
+
+/// The linked program's stage as SPIR-V, glslang's own optimiser off (SPIRV-Tools' runs when
+/// asked for); empty, with glslang's messages in `problems`, when it generates none.
+std::vector<uint32_t> generate(const glslang::TProgram& program, EShLanguage stage, std::string& problems) {
+  std::vector<uint32_t> words;
+  spv::SpvBuildLogger logger;
+  glslang::SpvOptions options;
+  options.disableOptimizer = true;
+  glslang::GlslangToSpv(*program.getIntermediate(stage), words, &logger, &options);
+  problems = logger.getAllMessages();
+  return words;
+}
+
 /// Maps glslang's "ERROR: 0:LINE: message" lines to diagnostics at the generated line's origin.
 void reportLog(const GlslSource& source, const std::string& log, Diagnostics& diagnostics) {
   static const std::regex line(R"((ERROR|WARNING): (?:\d+|[^:]*):(\d+): (.*))");
@@ -174,10 +195,7 @@ std::optional<std::vector<uint32_t>> compile(const GlslSource& source, const Com
   glslang::TShader shader(stage);
   const char* text = source.text.c_str();
   shader.setStrings(&text, 1);
-  shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
-  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
-  const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+  const EShMessages messages = forVulkan(shader, glslang::EShSourceGlsl, stage);
   if (!shader.parse(GetDefaultResources(), 450, false, messages)) {
     reportLog(source, shader.getInfoLog(), diagnostics);
     return std::nullopt;
@@ -189,12 +207,9 @@ std::optional<std::vector<uint32_t>> compile(const GlslSource& source, const Com
     return std::nullopt;
   }
   if (options.reflection) reflect(program, *options.reflection);
-  std::vector<uint32_t> words;
-  spv::SpvBuildLogger logger;
-  glslang::SpvOptions spvOptions;
-  spvOptions.disableOptimizer = true;  // SPIRV-Tools' optimiser below, when asked for
-  glslang::GlslangToSpv(*program.getIntermediate(stage), words, &logger, &spvOptions);
-  if (std::string problems = logger.getAllMessages(); !problems.empty() && words.empty()) {
+  std::string problems;
+  std::vector<uint32_t> words = generate(program, stage, problems);
+  if (words.empty()) {
     diagnostics.error({}, fmt::format("SPIR-V generation for {} failed: {}", source.name, problems));
     return std::nullopt;
   }
@@ -264,11 +279,8 @@ std::string checkSource(const std::string& text, Language dialect, Stage stage, 
   shader.setStrings(&source, 1);
   EShMessages messages = EShMsgDefault;
   if (dialect == Language::Hlsl) {
-    shader.setEnvInput(glslang::EShSourceHlsl, shaderStage, glslang::EShClientVulkan, 100);
-    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
-    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
+    messages = static_cast<EShMessages>(forVulkan(shader, glslang::EShSourceHlsl, shaderStage) | EShMsgReadHlsl);
     shader.setEntryPoint(entryPoint.c_str());
-    messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgSpvRules | EShMsgVulkanRules);
   } else {
     // An OpenGL driver's compiler: no SPIR-V, the version and profile from the #version line.
     shader.setEnvInput(glslang::EShSourceGlsl, shaderStage, glslang::EShClientNone, 0);
@@ -279,12 +291,9 @@ std::string checkSource(const std::string& text, Language dialect, Stage stage, 
   program.addShader(&shader);
   if (!program.link(messages)) return program.getInfoLog();
   if (dialect != Language::Hlsl) return {};
-  std::vector<uint32_t> words;
-  spv::SpvBuildLogger logger;
-  glslang::SpvOptions spvOptions;
-  spvOptions.disableOptimizer = true;
-  glslang::GlslangToSpv(*program.getIntermediate(shaderStage), words, &logger, &spvOptions);
-  if (words.empty()) return "no SPIR-V generated: " + logger.getAllMessages();
+  std::string problems;
+  const std::vector<uint32_t> words = generate(program, shaderStage, problems);
+  if (words.empty()) return "no SPIR-V generated: " + problems;
   return validate(words);
 }
 
