@@ -28,6 +28,7 @@
 #include "cli/RenderCommand.h"
 #include "compiler/common/ColorSpace.h"
 #include "compiler/target/NagaTranslator.h"
+#include "compiler/target/Target.h"
 #include "runtime/ImageIO.h"
 #include "runtime/VulkanContext.h"
 
@@ -187,7 +188,11 @@ void registerCompile(CLI::App& app, int& exitCode) {
                    "The language -o is written in: spirv (Vulkan 1.1), glsl (OpenGL 4.5), essl (OpenGL ES 3.2), msl "
                    "(Metal 2.1), hlsl (shader model 6.0) or wgsl (WebGPU). Default: the one -o's extension names "
                    "(.spv .glsl .essl .metal .hlsl .wgsl), else spirv")
-      ->check(CLI::IsMember(std::vector<std::string>{"spirv", "glsl", "essl", "msl", "hlsl", "wgsl"}));
+      ->check(CLI::IsMember([] {
+        std::vector<std::string> names;  // the target module's own list
+        for (target::Target t : target::allTargets()) names.emplace_back(target::targetName(t));
+        return names;
+      }()));
   command->add_option("--depfile", options->depfile,
                       "Also write a Makefile-style depfile here: the files written depend on the document, its "
                       "includes, the library files and the image files (for Ninja, Make, CMake's DEPFILE)")
