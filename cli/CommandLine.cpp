@@ -201,7 +201,7 @@ void registerCompile(CLI::App& app, int& exitCode) {
                     "Print the files the command would write, one per line, and write nothing (for build systems "
                     "that declare outputs before running)");
   command->add_option("--glsl", options->glsl,
-                      "Write the Vulkan GLSL 4.40 that mxc compiles to SPIR-V here (a folder for several documents)")
+                      "Write the Vulkan GLSL (4.00 with ARB extensions; compute stages 4.40) that mxc compiles to SPIR-V here (a folder for several documents)")
       ->type_name("FILE|DIR");
   command->add_option("--tables", options->tables,
                       "Write the albedo tables the shaders sample to this folder (mxc_albedo_tables.bin; the "

@@ -35,7 +35,7 @@ TEST(CompileCommand, WritesValidSpirvAndGlsl) {
   EXPECT_EQ(static_cast<unsigned char>(words[0]), 0x03);  // SPIR-V magic 0x07230203, little-endian
   EXPECT_EQ(static_cast<unsigned char>(words[3]), 0x07);
   const std::string glsl = readAll(frag);
-  EXPECT_EQ(glsl.rfind("#version 440", 0), 0u);
+  EXPECT_EQ(glsl.rfind("#version 400", 0), 0u);
   EXPECT_NE(glsl.find("void mxc_material_closure("), std::string::npos);
   fs::remove(spv);
   fs::remove(frag);
