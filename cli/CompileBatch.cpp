@@ -87,6 +87,7 @@ struct Batch {
   const lib::LibraryStack* libraries;
   glsl::ShaderKind kind;
   fs::path tables;  ///< --tables' file, written once before the documents
+  ShaderCache* shaders;  ///< shaders compiled so far, shared by the workers
 };
 
 /// Compiles one document's (or scene's) materials; its outputs are committed together.
@@ -127,6 +128,7 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
     request.optimize = options.optimize;
     request.target = options.resolvedTarget;
     request.libraries = batch.libraries;
+    request.shaderCache = batch.shaders;
     if (single->run(std::move(request), options.materials, false) != kOk) return result;
     for (const ir::Material& m : single->materials()) units.emplace_back(single.get(), &m);
   }
@@ -262,7 +264,8 @@ int runCompileBatch(const CompileOptions& options) {
     return kInvalidDocument;
   }
   libraries.printDiagnostics();
-  Batch batch{options, &libraries.workspace.libraries, kindOf(options.stage), {}};
+  ShaderCache shaders;
+  Batch batch{options, &libraries.workspace.libraries, kindOf(options.stage), {}, &shaders};
   if (!options.tables.empty()) {
     OutputSet tables;
     std::string error;
@@ -315,6 +318,7 @@ int runCompileBatch(const CompileOptions& options) {
     else failed.push_back(items[i].file.string());
   }
   const double seconds = millisecondsSince(start) / 1000.0;
+  detail("{} material(s) had the code of a shader compiled for another and took its SPIR-V", shaders.hits());
   if (!quiet()) {
     std::printf("compiled %zu material(s) of %zu document(s) in %.2f s (%.1f ms per material, %zu worker(s))%s\n",
                 materials, compiled, seconds, materials ? 1000.0 * seconds / double(materials) : 0.0, workers,

@@ -83,7 +83,8 @@ glsl::MaterialShader Compiler::shader(const ir::Material& material, glsl::Shader
 }
 
 std::optional<std::vector<uint32_t>> Compiler::spirv(const glsl::MaterialShader& shader) {
-  return compileShader(shader, request_, workspace_.diagnostics);
+  return compileShader(shader, request_, request_.shaderCache ? request_.shaderCache : &workspace_.shaders,
+                       workspace_.diagnostics);
 }
 
 std::optional<target::Translation> Compiler::translate(const std::vector<uint32_t>& words, spirv::Stage stage,
@@ -119,9 +120,19 @@ const std::vector<uint32_t>& vertexStageSpirv() {
 
 std::optional<std::vector<uint32_t>> compileShader(const glsl::MaterialShader& shader, const CompileRequest& request,
                                                    Diagnostics& diagnostics) {
+  return compileShader(shader, request, request.shaderCache, diagnostics);
+}
+
+std::optional<std::vector<uint32_t>> compileShader(const glsl::MaterialShader& shader, const CompileRequest& request,
+                                                   ShaderCache* cache, Diagnostics& diagnostics) {
   spirv::CompileOptions options;
   options.optimize = request.optimize;
-  return spirv::compile(shader.glsl, options, diagnostics);
+  // A shader built by hand has no code key: it is compiled for itself.
+  if (!cache || shader.codeKey.empty()) return spirv::compile(shader.glsl, options, diagnostics);
+  // The key holds everything the module depends on: the code and the options.
+  const std::string key = fmt::format("{}{}\n{}", spirv::stageName(shader.glsl.stage), options.optimize ? " -O" : "",
+                                      shader.codeKey);
+  return cache->getOrCompile(key, [&] { return spirv::compile(shader.glsl, options, diagnostics); });
 }
 
 }  // namespace mxc

@@ -23,6 +23,7 @@
 #include "compiler/common/Accuracy.h"
 #include "compiler/common/Diagnostic.h"
 #include "compiler/document/DocumentLoader.h"
+#include "compiler/driver/ShaderCache.h"
 #include "compiler/glsl/ShaderBuilder.h"
 #include "compiler/ir/Material.h"
 #include "compiler/library/LibraryStack.h"
@@ -52,6 +53,9 @@ class Workspace {
   lib::LibraryStack libraries;
   doc::DocumentLoader loader;
   std::vector<lib::LibraryInfo> libraryInfo;  ///< the layers loaded, for reports
+  /// The shaders its compilers have compiled (Compiler::spirv): the materials of a document or
+  /// a scene whose shaders have the same code compile once.
+  ShaderCache shaders;
 };
 
 /// Everything a caller chooses about one compilation.
@@ -82,6 +86,10 @@ struct CompileRequest {
   bool expandLibrary = true;
   /// SPIRV-Tools' performance passes (`-O`).
   bool optimize = false;
+  /// Shaders already compiled by other workspaces of this process (a batch's workers): a shader
+  /// whose code one of them compiled is not compiled again. Must outlive the compiles. When
+  /// null, Compiler::spirv uses its workspace's.
+  ShaderCache* shaderCache = nullptr;
   /// The language the shader is written in (`--target`). Other than SPIR-V, the shader is built
   /// for hosts without mxc's renderer: no subgroup operations, and for WGSL separate textures and
   /// samplers (glsl::BuildOptions); translate() then writes it from the SPIR-V.
@@ -159,8 +167,10 @@ glsl::MaterialShader buildShader(const ir::Material& material, glsl::ShaderKind 
 const std::vector<uint32_t>& vertexStageSpirv();
 
 /// The shader compiled to validated SPIR-V; nullopt (reported in `diagnostics`) when glslang
-/// rejects it.
+/// rejects it. Through `cache` when there is one (default: the request's).
 std::optional<std::vector<uint32_t>> compileShader(const glsl::MaterialShader& shader, const CompileRequest& request,
                                                    Diagnostics& diagnostics);
+std::optional<std::vector<uint32_t>> compileShader(const glsl::MaterialShader& shader, const CompileRequest& request,
+                                                   ShaderCache* cache, Diagnostics& diagnostics);
 
 }  // namespace mxc

@@ -52,6 +52,10 @@ struct MaterialInterface {
 struct MaterialShader {
   spirv::GlslSource glsl;
   MaterialInterface interface;
+  /// The shader's code: its GLSL but for the comment lines naming the material, each library
+  /// file by its path (its text is fixed in the executable). Two shaders with the same key
+  /// compile to the same SPIR-V (ShaderCache).
+  std::string codeKey;
 };
 
 struct BuildOptions {

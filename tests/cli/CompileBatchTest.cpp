@@ -121,5 +121,32 @@ TEST(CompileBatch, WorkersWriteWhatOneWrites) {
   EXPECT_TRUE(a == b) << a.size() << " against " << b.size() << " files";
 }
 
+// Materials whose shaders have the same code (here the same material under two names) compile
+// once in a batch; the one served from the other's compile writes what it writes alone.
+TEST(CompileBatch, AShaderCodeCompilesOnceAndWritesWhatItWritesAlone) {
+  TempFolder folder("batch_shared");
+  auto document = [](const std::string& name, const std::string& color = "0.7, 0.1, 0.1") {
+    return "<materialx version=\"1.39\">\n  <open_pbr_surface name=\"o\" type=\"surfaceshader\">\n"
+           "    <input name=\"base_color\" type=\"color3\" value=\"" + color + "\"/>\n  </open_pbr_surface>\n"
+           "  <surfacematerial name=\"" + name + "\" type=\"material\"><input name=\"surfaceshader\" "
+           "type=\"surfaceshader\" nodename=\"o\"/></surfacematerial>\n</materialx>\n";
+  };
+  fs::create_directories(folder / "docs");
+  writeText(folder / "docs/red.mtlx", document("Red"));
+  writeText(folder / "docs/crimson.mtlx", document("Crimson"));
+  writeText(folder / "docs/blue.mtlx", document("Blue", "0.1, 0.1, 0.7"));  // other code: its own compile
+  CommandRun batch = mxc("compile " + (folder / "docs").string() + " -o " + (folder / "out").string() + " -v");
+  ASSERT_EQ(batch.exitCode, 0) << batch.err;
+  EXPECT_NE(batch.err.find("1 material(s) had the code of a shader compiled for another"), std::string::npos) << batch.err;
+  for (const auto& [name, material] : std::map<std::string, std::string>{{"red", "Red"}, {"crimson", "Crimson"}, {"blue", "Blue"}}) {
+    const fs::path alone = folder / (name + ".spv");
+    CommandRun single = mxc("compile " + (folder / "docs" / (name + ".mtlx")).string() + " -o " + alone.string());
+    ASSERT_EQ(single.exitCode, 0) << single.err;
+    EXPECT_EQ(readBytes(folder / "out/docs" / name / (material + ".spv")), readBytes(alone)) << name;
+    EXPECT_FALSE(readBytes(alone).empty());
+  }
+  EXPECT_NE(readBytes(folder / "out/docs/blue/Blue.spv"), readBytes(folder / "out/docs/red/Red.spv"));
+}
+
 }  // namespace
 }  // namespace mxc::test

@@ -145,5 +145,27 @@ TEST(ShaderBuilder, MaterialLinesMapToTheDocument) {
   EXPECT_LT(mapped, shader.glsl.origins.size() / 4);  // library lines have no document origin
 }
 
+// The code key (ShaderCache's): two materials whose shaders differ only in the comments naming
+// them share it; any difference in the code does not; library files count by their paths.
+TEST(ShaderBuilder, CodeKeyIgnoresTheNamesAndKeepsTheCode) {
+  const std::string blue = openPbr("    <input name=\"base_color\" type=\"color3\" value=\"0.1, 0.2, 0.8\" />\n");
+  std::string renamed = blue;
+  const size_t at = renamed.find("name=\"M\"");
+  ASSERT_NE(at, std::string::npos);
+  renamed.replace(at, 8, "name=\"Blue_paint\"");
+  glsl::MaterialShader a = shaderOf(blue);
+  glsl::MaterialShader b = shaderOf(renamed);
+  glsl::MaterialShader red = shaderOf(openPbr("    <input name=\"base_color\" type=\"color3\" value=\"0.8, 0.2, 0.1\" />\n"));
+  EXPECT_NE(a.glsl.text, b.glsl.text);  // the comments name the material
+  EXPECT_NE(b.glsl.text.find("Blue_paint"), std::string::npos);
+  EXPECT_EQ(a.codeKey, b.codeKey);
+  EXPECT_EQ(b.codeKey.find("Blue_paint"), std::string::npos);
+  EXPECT_NE(a.codeKey, red.codeKey);  // a constant of the code differs
+  // Library files by their paths, not their text: the key is the generated part.
+  EXPECT_NE(a.codeKey.find("// ---- library/mxc_common.glsl ----"), std::string::npos);
+  EXPECT_LT(a.codeKey.size() * 5, a.glsl.text.size());
+  EXPECT_NE(a.codeKey.find("void mxc_material_closure("), std::string::npos);
+}
+
 }  // namespace
 }  // namespace mxc::test

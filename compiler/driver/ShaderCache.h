@@ -1,0 +1,49 @@
+#pragma once
+/// \file
+/// The SPIR-V of shaders already compiled in this process, shared by the workers of a batch.
+///
+/// Two materials whose shaders have the same code compile to the same module: glslang and
+/// SPIRV-Tools are deterministic, and a shader's code is its GLSL but for the comment lines that
+/// name its material. In a batch that happens for a document's look and its material, for
+/// materials that differ only in inputs the shader does not read, and above all under
+/// `--param-all`, where every material of one structure (the OpenPBR presets, say) shares one
+/// shader: 25 distinct shaders for the corpus's 75 materials (`mxc compile --param-all`). Each
+/// is compiled and validated once; the other materials copy its words.
+
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mxc {
+
+class ShaderCache {
+ public:
+  using Words = std::vector<uint32_t>;
+
+  /// The module of the shader whose code is `key` (glsl::MaterialShader::codeKey): compiled
+  /// by `compile` unless another worker has compiled it (then copied) or is compiling it (then
+  /// awaited). A compile that fails is not kept: each material whose shader fails compiles it
+  /// itself, so its errors name its own document. An exception from `compile` passes through,
+  /// and a worker waiting for that compile then compiles for itself.
+  std::optional<Words> getOrCompile(const std::string& key, const std::function<std::optional<Words>()>& compile);
+
+  /// Materials served from another's compile so far.
+  size_t hits() const;
+
+ private:
+  struct Entry {
+    bool pending = true;
+    Words words;
+  };
+  mutable std::mutex mutex_;
+  std::condition_variable done_;
+  std::map<std::string, Entry> entries_;  ///< a key's entry is erased when its compile fails
+  size_t hits_ = 0;
+};
+
+}  // namespace mxc

@@ -1,0 +1,110 @@
+// ShaderCache (compiler/driver/ShaderCache.h): a batch's workers compile each shader code once,
+// a failed compile is not kept, and a compile through compileShader is the same module with or
+// without the cache.
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+
+#include "compiler/driver/Compiler.h"
+#include "compiler/driver/ShaderCache.h"
+#include "support/TestSupport.h"
+
+namespace mxc::test {
+namespace {
+
+using Words = ShaderCache::Words;
+
+TEST(ShaderCache, CompilesEachCodeOnceForEveryWorker) {
+  ShaderCache cache;
+  std::atomic<int> compiles{0};
+  auto compile = [&]() -> std::optional<Words> {
+    ++compiles;
+    std::this_thread::sleep_for(std::chrono::milliseconds(30));  // the others arrive meanwhile
+    return Words{0x07230203u, 42u};
+  };
+  std::vector<std::optional<Words>> got(4);
+  std::vector<std::thread> workers;
+  for (size_t i = 0; i < got.size(); ++i) workers.emplace_back([&, i] { got[i] = cache.getOrCompile("code", compile); });
+  for (std::thread& t : workers) t.join();
+  EXPECT_EQ(compiles.load(), 1);
+  EXPECT_EQ(cache.hits(), 3u);
+  for (const auto& words : got) EXPECT_EQ(words, (Words{0x07230203u, 42u}));
+  // Another code is compiled for itself.
+  EXPECT_EQ(cache.getOrCompile("other", [] { return std::optional<Words>(Words{1u}); }), Words{1u});
+  EXPECT_EQ(cache.hits(), 3u);
+}
+
+TEST(ShaderCache, AFailedCompileIsNotKept) {
+  ShaderCache cache;
+  int compiles = 0;
+  EXPECT_FALSE(cache.getOrCompile("code", [&] {
+    ++compiles;
+    return std::optional<Words>();
+  }));
+  // The next material with that code compiles it itself (its errors name its own document).
+  EXPECT_EQ(cache.getOrCompile("code", [&] {
+    ++compiles;
+    return std::optional<Words>(Words{7u});
+  }), Words{7u});
+  EXPECT_EQ(compiles, 2);
+  EXPECT_EQ(cache.hits(), 0u);
+}
+
+TEST(ShaderCache, AWorkerWaitingOnACompileThatThrowsCompilesItself) {
+  ShaderCache cache;
+  std::atomic<bool> started{false};
+  std::thread first([&] {
+    EXPECT_THROW(cache.getOrCompile("code",
+                                    [&]() -> std::optional<Words> {
+                                      started = true;
+                                      std::this_thread::sleep_for(std::chrono::milliseconds(30));
+                                      throw std::runtime_error("out of memory");
+                                    }),
+                 std::runtime_error);
+  });
+  while (!started) std::this_thread::yield();
+  std::optional<Words> second = cache.getOrCompile("code", [] { return std::optional<Words>(Words{9u}); });
+  first.join();
+  EXPECT_EQ(second, Words{9u});
+}
+
+// Through the compiler's entry point: the second material of the same code takes the first's
+// module, which is the module compiled without the cache.
+TEST(ShaderCache, CompileShaderSharesTheModuleOfTheSameCode) {
+  auto document = [](const std::string& name) {
+    return mtlx("  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n"
+                "    <input name=\"base_color\" type=\"color3\" value=\"0.2, 0.5, 0.3\" />\n"
+                "  </open_pbr_surface>\n  <surfacematerial name=\"" + name +
+                "\" type=\"material\"><input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"s\" />"
+                "</surfacematerial>\n");
+  };
+  Context context;
+  ShaderCache cache;
+  std::vector<std::vector<uint32_t>> modules;
+  for (const std::string name : {"Green", "Also_green"}) {
+    CompileRequest request;
+    request.document = name + ".mtlx";
+    request.text = document(name);
+    request.shaderCache = &cache;
+    Compiler compiler(context, std::move(request));
+    ASSERT_EQ(compiler.materials().size(), 1u) << context.diagnostics.format();
+    auto words = compiler.spirv(compiler.shader(compiler.materials()[0]));
+    ASSERT_TRUE(words) << context.diagnostics.format();
+    modules.push_back(*words);
+  }
+  EXPECT_EQ(cache.hits(), 1u);
+  EXPECT_EQ(modules[0], modules[1]);
+  CompileRequest alone;
+  alone.document = "Green.mtlx";
+  alone.text = document("Green");
+  Compiler compiler(context, std::move(alone));
+  ASSERT_EQ(compiler.materials().size(), 1u);
+  EXPECT_EQ(compiler.spirv(compiler.shader(compiler.materials()[0])), modules[0]);
+}
+
+}  // namespace
+}  // namespace mxc::test
