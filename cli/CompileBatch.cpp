@@ -87,7 +87,7 @@ struct Batch {
   const lib::LibraryStack* libraries;
   glsl::ShaderKind kind;
   fs::path tables;  ///< --tables' file, written once before the documents
-  ShaderCache* shaders;  ///< shaders compiled so far, shared by the workers
+  ShaderCache* shaderCache;  ///< shaders compiled so far, shared by the workers
 };
 
 /// Compiles one document's (or scene's) materials; its outputs are committed together.
@@ -108,7 +108,8 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
       return result;
     }
     scene = std::make_unique<SceneDocuments>(session);
-    if (scene->load(std::get<Scene>(read), options.materials, batch.kind, options.optimize, options.resolvedTarget) != kOk) {
+    if (scene->load(std::get<Scene>(read), options.materials, batch.kind, options.optimize, options.resolvedTarget,
+                    batch.shaderCache) != kOk) {
       return result;
     }
     // What a single compile of the scene compiles: its objects' materials and its look's.
@@ -128,7 +129,7 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
     request.optimize = options.optimize;
     request.target = options.resolvedTarget;
     request.libraries = batch.libraries;
-    request.shaderCache = batch.shaders;
+    request.shaderCache = batch.shaderCache;
     if (single->run(std::move(request), options.materials, false) != kOk) return result;
     for (const ir::Material& m : single->materials()) units.emplace_back(single.get(), &m);
   }
@@ -264,8 +265,8 @@ int runCompileBatch(const CompileOptions& options) {
     return kInvalidDocument;
   }
   libraries.printDiagnostics();
-  ShaderCache shaders;
-  Batch batch{options, &libraries.workspace.libraries, kindOf(options.stage), {}, &shaders};
+  ShaderCache shaderCache;
+  Batch batch{options, &libraries.workspace.libraries, kindOf(options.stage), {}, &shaderCache};
   if (!options.tables.empty()) {
     OutputSet tables;
     std::string error;
@@ -318,7 +319,7 @@ int runCompileBatch(const CompileOptions& options) {
     else failed.push_back(items[i].file.string());
   }
   const double seconds = millisecondsSince(start) / 1000.0;
-  detail("{} material(s) had the code of a shader compiled for another and took its SPIR-V", shaders.hits());
+  detail("{} material(s) had the code of a shader compiled for another and took its SPIR-V", shaderCache.hits());
   if (!quiet()) {
     std::printf("compiled %zu material(s) of %zu document(s) in %.2f s (%.1f ms per material, %zu worker(s))%s\n",
                 materials, compiled, seconds, materials ? 1000.0 * seconds / double(materials) : 0.0, workers,

@@ -9,7 +9,7 @@
 namespace mxc::cli {
 
 int SceneDocuments::load(const Scene& scene, MaterialOptions options, glsl::ShaderKind stage, bool optimize,
-                         target::Target target) {
+                         target::Target target, ShaderCache* shaderCache) {
   options.material.clear();
   // The scene's own search paths find its documents' images too, after --search-path's.
   for (const std::filesystem::path& folder : scene.searchPaths) options.searchPaths.push_back(folder.string());
@@ -21,6 +21,7 @@ int SceneDocuments::load(const Scene& scene, MaterialOptions options, glsl::Shad
     request.stage = stage;
     request.optimize = optimize;
     request.target = target;
+    request.shaderCache = shaderCache;
     if (int code = pipelines_.back()->run(std::move(request), options); code != kOk) return code;
   }
   return kOk;

@@ -21,9 +21,10 @@ class SceneDocuments {
 
   /// Runs the compiler to IR on each document of `scene`, with `options` (every material: the
   /// scene chooses; its accuracy tier when it states one) and the request's `stage` and
-  /// `optimize`. Returns kOk, or the exit code to stop with (diagnostics printed).
+  /// `optimize`, compiling through `shaderCache` when given (a batch's; else the session's).
+  /// Returns kOk, or the exit code to stop with (diagnostics printed).
   int load(const Scene& scene, MaterialOptions options, glsl::ShaderKind stage, bool optimize,
-           target::Target target = target::Target::Spirv);
+           target::Target target = target::Target::Spirv, ShaderCache* shaderCache = nullptr);
 
   std::vector<MaterialPipeline*> pipelines() const;
 

@@ -83,7 +83,7 @@ glsl::MaterialShader Compiler::shader(const ir::Material& material, glsl::Shader
 }
 
 std::optional<std::vector<uint32_t>> Compiler::spirv(const glsl::MaterialShader& shader) {
-  return compileShader(shader, request_, request_.shaderCache ? request_.shaderCache : &workspace_.shaders,
+  return compileShader(shader, request_, request_.shaderCache ? request_.shaderCache : &workspace_.shaderCache,
                        workspace_.diagnostics);
 }
 

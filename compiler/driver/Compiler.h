@@ -55,7 +55,7 @@ class Workspace {
   std::vector<lib::LibraryInfo> libraryInfo;  ///< the layers loaded, for reports
   /// The shaders its compilers have compiled (Compiler::spirv): the materials of a document or
   /// a scene whose shaders have the same code compile once.
-  ShaderCache shaders;
+  ShaderCache shaderCache;
 };
 
 /// Everything a caller chooses about one compilation.

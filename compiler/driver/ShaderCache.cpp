@@ -1,5 +1,7 @@
 #include "compiler/driver/ShaderCache.h"
 
+#include <utility>
+
 namespace mxc {
 
 std::optional<ShaderCache::Words> ShaderCache::getOrCompile(const std::string& key,
@@ -17,18 +19,26 @@ std::optional<ShaderCache::Words> ShaderCache::getOrCompile(const std::string& k
         return it->second.words;
       }
       // Another worker compiles this code: wait for its words, or for its failure (the entry
-      // is then gone and this worker compiles for itself, to report its own errors).
+      // is then gone, and this worker takes the compile over, to report its own errors).
       done_.wait(lock, [&] {
         auto now = entries_.find(key);
         return now == entries_.end() || !now->second.pending;
       });
-      auto now = entries_.find(key);
-      if (now == entries_.end()) return compile();
     }
   }
+  // Whatever happens from here on, the entry leaves the pending state and the waiters wake.
   std::optional<Words> words;
   try {
     words = compile();
+    if (words) {
+      Words kept = *words;  // copied before the lock: a bad_alloc here is the catch's case
+      std::lock_guard<std::mutex> lock(mutex_);
+      Entry& entry = entries_.at(key);
+      entry.words = std::move(kept);
+      entry.pending = false;
+      done_.notify_all();
+      return words;
+    }
   } catch (...) {
     std::lock_guard<std::mutex> lock(mutex_);
     entries_.erase(key);
@@ -36,13 +46,7 @@ std::optional<ShaderCache::Words> ShaderCache::getOrCompile(const std::string& k
     throw;
   }
   std::lock_guard<std::mutex> lock(mutex_);
-  if (words) {
-    Entry& entry = entries_.at(key);
-    entry.words = *words;
-    entry.pending = false;
-  } else {
-    entries_.erase(key);
-  }
+  entries_.erase(key);
   done_.notify_all();
   return words;
 }

@@ -28,8 +28,14 @@ class ShaderCache {
   /// The module of the shader whose code is `key` (glsl::MaterialShader::codeKey): compiled
   /// by `compile` unless another worker has compiled it (then copied) or is compiling it (then
   /// awaited). A compile that fails is not kept: each material whose shader fails compiles it
-  /// itself, so its errors name its own document. An exception from `compile` passes through,
-  /// and a worker waiting for that compile then compiles for itself.
+  /// itself, so its errors name its own document. An exception from `compile` passes through;
+  /// a worker waiting for that compile takes it over. A successful compile must
+  /// report nothing (spirv::compile reports errors only): a material served from the cache
+  /// gets no messages.
+  ///
+  /// Entries live as long as the cache (a batch, a workspace): a key is the generated part of a
+  /// shader (library files count by their paths: under a fifth of the text, ShaderBuilderTest
+  /// checks) and a module about 25 kB, so a batch holds some tens of kB per distinct shader.
   std::optional<Words> getOrCompile(const std::string& key, const std::function<std::optional<Words>()>& compile);
 
   /// Materials served from another's compile so far.

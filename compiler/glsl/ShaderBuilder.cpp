@@ -26,8 +26,12 @@ namespace mxc::glsl {
 /// The raster stages (fragment and vertex) are GLSL 4.00 with the ARB extensions that bring the
 /// later versions' features they use: storage buffers (4.30), block member offsets (4.40),
 /// binding layouts (4.20), memory qualifiers (4.20) and input locations (4.10). The SPIR-V is the
-/// same as from 4.40 but for its OpSource, and a single `mxc compile` takes 38 M instructions
-/// (about a tenth) less. Compute stages need 4.20 at least; they are 4.40.
+/// same as from 4.40 but for its OpSource and an OpSourceExtension per extension, and a single
+/// `mxc compile` takes 38 M instructions (about a tenth) less. glslang refuses compute shaders
+/// below 4.20 (and has no compute built-ins there); they are 4.40. A process that compiles
+/// both kinds builds both versions' tables: the test programs do; of mxc's commands, none
+/// (render and compile build raster stages, eval and furnace compute ones; the environment
+/// sampling kernel, 4.40, runs only in tests).
 constexpr int kGlslRasterVersion = 400;
 constexpr std::string_view kGlslRasterExtensions[] = {
     "GL_ARB_separate_shader_objects",      // layout(location) on stage inputs (4.10)
@@ -104,14 +108,16 @@ class Writer {
     out.name = std::move(name);
     std::vector<bool> keyed(lines_.text.size(), true);
     for (const auto& [first, end] : unkeyed_) std::fill(keyed.begin() + long(first), keyed.begin() + long(end), false);
+    std::string key;
     for (size_t i = 0; i < lines_.text.size(); ++i) {
       out.text += lines_.text[i];
       out.text += '\n';
       if (keyed[i]) {
-        key_ += lines_.text[i];
-        key_ += '\n';
+        key += lines_.text[i];
+        key += '\n';
       }
     }
+    key_ = std::move(key);
     out.origins = std::move(lines_.origins);
     return out;
   }

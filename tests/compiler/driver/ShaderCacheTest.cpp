@@ -54,23 +54,46 @@ TEST(ShaderCache, AFailedCompileIsNotKept) {
   EXPECT_EQ(cache.hits(), 0u);
 }
 
-TEST(ShaderCache, AWorkerWaitingOnACompileThatThrowsCompilesItself) {
+// A worker waiting on another's compile that fails (returns nothing, or throws) takes the
+// compile over, with the cache unlocked: its compile can use the cache (a locked one would
+// hang here), and its words are kept.
+void waiterCompilesAfterTheOwnerFails(bool owner_throws) {
   ShaderCache cache;
-  std::atomic<bool> started{false};
-  std::thread first([&] {
-    EXPECT_THROW(cache.getOrCompile("code",
-                                    [&]() -> std::optional<Words> {
-                                      started = true;
-                                      std::this_thread::sleep_for(std::chrono::milliseconds(30));
-                                      throw std::runtime_error("out of memory");
-                                    }),
-                 std::runtime_error);
+  std::atomic<bool> started{false}, release{false};
+  std::thread owner([&] {
+    auto failing = [&]() -> std::optional<Words> {
+      started = true;
+      while (!release) std::this_thread::yield();
+      if (owner_throws) throw std::runtime_error("out of memory");
+      return std::nullopt;
+    };
+    if (owner_throws) {
+      EXPECT_THROW(cache.getOrCompile("code", failing), std::runtime_error);
+    } else {
+      EXPECT_FALSE(cache.getOrCompile("code", failing));
+    }
   });
   while (!started) std::this_thread::yield();
-  std::optional<Words> second = cache.getOrCompile("code", [] { return std::optional<Words>(Words{9u}); });
-  first.join();
+  std::optional<Words> second;
+  std::thread waiter([&] {
+    second = cache.getOrCompile("code", [&] {
+      EXPECT_EQ(cache.getOrCompile("inner", [] { return std::optional<Words>(Words{3u}); }), Words{3u});
+      return std::optional<Words>(Words{9u});
+    });
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));  // the waiter is now waiting
+  release = true;
+  owner.join();
+  waiter.join();
   EXPECT_EQ(second, Words{9u});
+  EXPECT_EQ(cache.hits(), 0u);
+  // Its words are kept: the next worker takes them.
+  EXPECT_EQ(cache.getOrCompile("code", [] { return std::optional<Words>(); }), Words{9u});
 }
+
+TEST(ShaderCache, AWorkerWaitingOnAFailedCompileCompilesItself) { waiterCompilesAfterTheOwnerFails(false); }
+
+TEST(ShaderCache, AWorkerWaitingOnACompileThatThrowsCompilesItself) { waiterCompilesAfterTheOwnerFails(true); }
 
 // Through the compiler's entry point: the second material of the same code takes the first's
 // module, which is the module compiled without the cache.
