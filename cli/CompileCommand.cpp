@@ -121,9 +121,16 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
     glsl::MaterialShader shader = compiler.shader(material);
     detail("{}: GLSL generated in {:.1f} ms", material.name, millisecondsSince(stage));
     stage = std::chrono::steady_clock::now();
+    // One compile at a time here, so a hit counted meanwhile is this material's.
+    const size_t hits = session.workspace.shaderCache.hits();
     std::optional<std::vector<uint32_t>> words = compiler.spirv(shader);
-    detail("{}: SPIR-V compiled{} and validated in {:.1f} ms", material.name, options.optimize ? ", optimised" : "",
-           millisecondsSince(stage));
+    if (session.workspace.shaderCache.hits() > hits) {
+      detail("{}: SPIR-V of a shader with the same code, compiled for another material, taken in {:.1f} ms",
+             material.name, millisecondsSince(stage));
+    } else {
+      detail("{}: SPIR-V compiled{} and validated in {:.1f} ms", material.name, options.optimize ? ", optimised" : "",
+             millisecondsSince(stage));
+    }
     session.printDiagnostics();
     if (!options.glsl.empty()) {
       // The GLSL is produced even when glslang rejects it, so that the failing line can be read.

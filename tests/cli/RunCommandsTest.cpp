@@ -158,6 +158,30 @@ TEST(CompileCommand, SetOnSeveralMaterialsSaysWhichItAppliesTo) {
   fs::remove(doc);
 }
 
+// Two materials of one document whose shaders have the same code compile once: the second
+// takes the first's module (ShaderCache), the same bytes.
+TEST(CompileCommand, MaterialsOfTheSameShaderCodeCompileOnce) {
+  const fs::path doc = writeTemp("one_shader.mtlx",
+                                 "<materialx version=\"1.39\">\n"
+                                 "  <open_pbr_surface name=\"o\" type=\"surfaceshader\"/>\n"
+                                 "  <surfacematerial name=\"A\" type=\"material\"><input name=\"surfaceshader\" "
+                                 "type=\"surfaceshader\" nodename=\"o\"/></surfacematerial>\n"
+                                 "  <surfacematerial name=\"B\" type=\"material\"><input name=\"surfaceshader\" "
+                                 "type=\"surfaceshader\" nodename=\"o\"/></surfacematerial>\n"
+                                 "</materialx>\n");
+  TempFolder out("one_shader");
+  CommandRun r = mxc("compile " + doc.string() + " -v -o " + (out / "m.spv").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("A: SPIR-V compiled and validated"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("B: SPIR-V of a shader with the same code, compiled for another material, taken"),
+            std::string::npos)
+      << r.err;
+  const std::string a = readFileBytes(out / "m_A.spv");
+  EXPECT_FALSE(a.empty());
+  EXPECT_EQ(a, readFileBytes(out / "m_B.spv"));
+  fs::remove(doc);
+}
+
 // Beside the SPIR-V, compile writes what a host renderer needs: the interface JSON naming the
 // files it goes with, the vertex stage, and with --tables the albedo tables in their format.
 TEST(CompileCommand, WritesTheInterfaceVertexStageAndTablesForAHost) {
