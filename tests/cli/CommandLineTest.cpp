@@ -40,14 +40,7 @@ TEST(CommandLine, DashIsStandardOutputForEveryOutput) {
   r = mxc("render " + doc + " -o -");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("give it with --format"), std::string::npos) << r.err;
-  const fs::path two = writeTemp("dash_two.mtlx",
-                                 "<materialx version=\"1.39\">\n"
-                                 "  <open_pbr_surface name=\"o\" type=\"surfaceshader\"/>\n"
-                                 "  <surfacematerial name=\"A\" type=\"material\"><input name=\"surfaceshader\" "
-                                 "type=\"surfaceshader\" nodename=\"o\"/></surfacematerial>\n"
-                                 "  <surfacematerial name=\"B\" type=\"material\"><input name=\"surfaceshader\" "
-                                 "type=\"surfaceshader\" nodename=\"o\"/></surfacematerial>\n"
-                                 "</materialx>\n");
+  const fs::path two = writeTemp("dash_two.mtlx", kTwoMaterialsOfOneShader);
   r = mxc("compile " + two.string() + " -o -");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("choose one with --material"), std::string::npos) << r.err;

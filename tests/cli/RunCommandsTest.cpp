@@ -161,14 +161,7 @@ TEST(CompileCommand, SetOnSeveralMaterialsSaysWhichItAppliesTo) {
 // Two materials of one document whose shaders have the same code compile once: the second
 // takes the first's module (ShaderCache), the same bytes.
 TEST(CompileCommand, MaterialsOfTheSameShaderCodeCompileOnce) {
-  const fs::path doc = writeTemp("one_shader.mtlx",
-                                 "<materialx version=\"1.39\">\n"
-                                 "  <open_pbr_surface name=\"o\" type=\"surfaceshader\"/>\n"
-                                 "  <surfacematerial name=\"A\" type=\"material\"><input name=\"surfaceshader\" "
-                                 "type=\"surfaceshader\" nodename=\"o\"/></surfacematerial>\n"
-                                 "  <surfacematerial name=\"B\" type=\"material\"><input name=\"surfaceshader\" "
-                                 "type=\"surfaceshader\" nodename=\"o\"/></surfacematerial>\n"
-                                 "</materialx>\n");
+  const fs::path doc = writeTemp("one_shader.mtlx", kTwoMaterialsOfOneShader);
   TempFolder out("one_shader");
   CommandRun r = mxc("compile " + doc.string() + " -v -o " + (out / "m.spv").string());
   ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -106,6 +106,16 @@ inline std::string imageDocument(const std::string& file) {
               "nodename=\"s\" /></surfacematerial>\n");
 }
 
+/// A document with two materials, A and B, of one OpenPBR shading node (so one shader code).
+inline const char* const kTwoMaterialsOfOneShader =
+    "<materialx version=\"1.39\">\n"
+    "  <open_pbr_surface name=\"o\" type=\"surfaceshader\"/>\n"
+    "  <surfacematerial name=\"A\" type=\"material\"><input name=\"surfaceshader\" "
+    "type=\"surfaceshader\" nodename=\"o\"/></surfacematerial>\n"
+    "  <surfacematerial name=\"B\" type=\"material\"><input name=\"surfaceshader\" "
+    "type=\"surfaceshader\" nodename=\"o\"/></surfacematerial>\n"
+    "</materialx>\n";
+
 inline std::string corpus(const std::string& rel) { return (sharedDir() / "corpus" / rel).string(); }
 
 inline fs::path writeTemp(const std::string& name, const std::string& text) {
