@@ -30,15 +30,6 @@ std::optional<ShaderCache::Words> ShaderCache::getOrCompile(const std::string& k
   std::optional<Words> words;
   try {
     words = compile();
-    if (words) {
-      Words kept = *words;  // copied before the lock: a bad_alloc here is the catch's case
-      std::lock_guard<std::mutex> lock(mutex_);
-      Entry& entry = entries_.at(key);
-      entry.words = std::move(kept);
-      entry.pending = false;
-      done_.notify_all();
-      return words;
-    }
   } catch (...) {
     std::lock_guard<std::mutex> lock(mutex_);
     entries_.erase(key);
@@ -46,9 +37,15 @@ std::optional<ShaderCache::Words> ShaderCache::getOrCompile(const std::string& k
     throw;
   }
   std::lock_guard<std::mutex> lock(mutex_);
-  entries_.erase(key);
-  done_.notify_all();
-  return words;
+  done_.notify_all();  // they wake once the lock is released
+  if (!words) {
+    entries_.erase(key);
+    return words;
+  }
+  Entry& entry = entries_.at(key);
+  entry.words = std::move(*words);  // a move: nothing here throws before the entry is complete
+  entry.pending = false;
+  return entry.words;
 }
 
 size_t ShaderCache::hits() const {
