@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <thread>
@@ -20,6 +21,7 @@
 #include "cli/SceneDocuments.h"
 #include "cli/Verbosity.h"
 #include "compiler/common/Parallel.h"
+#include "compiler/driver/ShaderGroups.h"
 #include "compiler/glsl/ShaderBuilder.h"
 #include "compiler/spirv/SpirvCompiler.h"
 
@@ -90,53 +92,82 @@ struct Batch {
   ShaderCache* shaderCache;  ///< shaders compiled so far, shared by the workers
 };
 
-/// Compiles one document's (or scene's) materials; its outputs are committed together.
-ItemResult compileItem(const Batch& batch, const Item& item) {
-  const CompileOptions& options = batch.options;
+/// The request that compiles a document of the batch.
+CompileRequest documentRequest(const Batch& batch, const Item& item) {
+  CompileRequest request;
+  request.document = item.file;
+  request.stage = batch.kind;
+  request.optimize = batch.options.optimize;
+  request.target = batch.options.resolvedTarget;
+  request.libraries = batch.libraries;
+  request.shaderCache = batch.shaderCache;
+  return request;
+}
+
+/// A document (or scene) of the batch between its two steps: loaded, lowered and its shaders
+/// built (prepare), then compiled and written (finish). In between, the batch plans the group
+/// compiles of every document's shaders (driver/ShaderGroups.h).
+struct Job {
   ItemResult result;
-  Session session;
-  session.capture = &result.messages;
-  const std::string file = item.file.string();
-  // The materials to compile, each with the pipeline of its document.
-  std::vector<std::pair<MaterialPipeline*, const ir::Material*>> units;
+  Session session;  ///< its messages go to result.messages (so a Job does not move)
   std::unique_ptr<MaterialPipeline> single;
   std::unique_ptr<SceneDocuments> scene;
+  /// The materials to compile, each with the pipeline of its document, and their shaders.
+  std::vector<std::pair<MaterialPipeline*, const ir::Material*>> units;
+  std::vector<glsl::MaterialShader> shaders;
+  bool prepared = false;  ///< false: result says why not (or that there is nothing to compile)
+  Job() { session.capture = &result.messages; }
+};
+
+/// Loads and lowers the document's materials and builds their shaders.
+void prepareItem(const Batch& batch, const Item& item, Job& job) {
+  const CompileOptions& options = batch.options;
+  ItemResult& result = job.result;
+  Session& session = job.session;
+  const std::string file = item.file.string();
+  auto& units = job.units;
+  auto& single = job.single;
+  auto& scene = job.scene;
   if (isSceneFile(item.file)) {
     auto read = readScene(item.file);
     if (auto* why = std::get_if<std::string>(&read)) {
       session.printLine(*why);
-      return result;
+      return;
     }
     scene = std::make_unique<SceneDocuments>(session);
     if (scene->load(std::get<Scene>(read), options.materials, batch.kind, options.optimize, options.resolvedTarget,
                     batch.shaderCache) != kOk) {
-      return result;
+      return;
     }
     // What a single compile of the scene compiles: its objects' materials and its look's.
     auto used = scene->used(std::get<Scene>(read));
     if (auto* why = std::get_if<std::string>(&used)) {
       session.printLine(fmt::format("{}: error: {}", file, *why));
-      return result;
+      return;
     }
     for (const SceneDocuments::Found& hit : std::get<std::vector<SceneDocuments::Found>>(used)) {
       units.emplace_back(hit.pipeline, hit.material);
     }
   } else {
     single = std::make_unique<MaterialPipeline>(session);
-    CompileRequest request;
-    request.document = item.file;
-    request.stage = batch.kind;
-    request.optimize = options.optimize;
-    request.target = options.resolvedTarget;
-    request.libraries = batch.libraries;
-    request.shaderCache = batch.shaderCache;
-    if (single->run(std::move(request), options.materials, false) != kOk) return result;
+    if (single->run(documentRequest(batch, item), options.materials, false) != kOk) return;
     for (const ir::Material& m : single->materials()) units.emplace_back(single.get(), &m);
   }
   if (units.empty()) {
     result.outcome = Outcome::Nothing;
-    return result;
+    return;
   }
+  for (const auto& [pipeline, material] : units) job.shaders.push_back(pipeline->compiler().shader(*material));
+  job.prepared = true;
+}
+
+/// Compiles a prepared document's materials; its outputs are committed together.
+void finishItem(const Batch& batch, const Item& item, Job& job) {
+  const CompileOptions& options = batch.options;
+  ItemResult& result = job.result;
+  Session& session = job.session;
+  const std::string file = item.file.string();
+  const auto& units = job.units;
   // The outputs: DIR/<document>/<material>.spv (or the target's extension) and .frag or .comp,
   // declared before the work.
   OutputSet outputs;
@@ -156,36 +187,37 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
       fs::create_directories(path.parent_path(), error);
       if (auto why = outputs.declare(path, path == shaderPath ? "-o" : "--glsl")) {
         session.printLine("error: " + *why);
-        return result;
+        return;
       }
       if (path == shaderPath) {
         if (auto why = declareInterfaceOutputs(outputs, path, batch.kind)) {
           session.printLine("error: " + *why);
-          return result;
+          return;
         }
       }
     }
   }
   if (auto why = outputs.checkDistinct()) {
     session.printLine(fmt::format("error: {}: {}", file, *why));  // two materials whose names map to one file
-    return result;
+    return;
   }
   bool failed = false;
-  for (const auto& [pipeline, material] : units) {
+  for (size_t u = 0; u < units.size(); ++u) {
+    const auto& [pipeline, material] = units[u];
     if (auto why = pipeline->checkOutputsAreNotInputs(outputs)) {
       session.printLine("error: " + *why);
-      return result;
+      return;
     }
     const auto start = std::chrono::steady_clock::now();
     Compiler& compiler = pipeline->compiler();
-    glsl::MaterialShader shader = compiler.shader(*material);
+    const glsl::MaterialShader& shader = job.shaders[u];
     std::optional<std::vector<uint32_t>> words = compiler.spirv(shader);
     session.printDiagnostics();
     const auto [spv, glslPath] = pathsOf(*material);
     if (!glslPath.empty()) {
       if (auto why = outputs.stage(glslPath, shader.glsl.text)) {
         session.printLine("error: " + *why);
-        return result;
+        return;
       }
     }
     if (!words) {
@@ -199,7 +231,7 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
       session.printDiagnostics();
       if (staged == Staged::OutputFailed) {
         session.printLine("error: " + error);
-        return result;
+        return;
       }
       if (staged == Staged::TranslationFailed) {
         failed = true;
@@ -214,15 +246,14 @@ ItemResult compileItem(const Batch& batch, const Item& item) {
   if (failed || !outputs.complete()) {
     session.printLine(fmt::format("error: {}: a shader did not compile; none of its outputs written", file));
     result.materials = 0;
-    return result;
+    return;
   }
   if (auto why = outputs.commit()) {
     session.printLine("error: " + *why);
     result.materials = 0;
-    return result;
+    return;
   }
   result.outcome = Outcome::Compiled;
-  return result;
 }
 
 }  // namespace
@@ -281,33 +312,63 @@ int runCompileBatch(const CompileOptions& options) {
 
   const size_t workers = std::max<size_t>(1, std::min(items.size(), options.jobs > 0 ? size_t(options.jobs) : coreCount()));
   detail("{} document(s) on {} worker(s)", items.size(), workers);
-  std::vector<ItemResult> results(items.size());
-  std::atomic<size_t> next{0};
-  std::mutex printing;
-  Progress progress(items.size());
-  auto work = [&] {
-    for (size_t i = next++; i < items.size(); i = next++) {
-      ItemResult r;
-      try {
-        r = compileItem(batch, items[i]);
-      } catch (const std::bad_alloc&) {
-        r.messages += fmt::format("error: {}: out of memory\n", items[i].file.string());
-      } catch (const std::exception& e) {
-        r.messages += fmt::format("error: {}: {}\n", items[i].file.string(), e.what());
-      }
-      std::lock_guard<std::mutex> lock(printing);
-      if (!r.messages.empty()) {
-        progress.clear();
-        std::fputs(r.messages.c_str(), stderr);
-      }
-      progress.step(items[i].file.filename().string());
-      results[i] = std::move(r);
+  // Every document prepared (loaded, lowered, its shaders built), `workers` at a time.
+  std::vector<std::unique_ptr<Job>> jobs(items.size());
+  auto forEachItem = [&](const std::function<void(size_t)>& step) {
+    std::atomic<size_t> next{0};
+    auto work = [&] {
+      for (size_t i = next++; i < items.size(); i = next++) step(i);
+    };
+    std::vector<std::thread> threads;
+    for (size_t t = 1; t < workers; ++t) threads.emplace_back(work);
+    work();
+    for (std::thread& t : threads) t.join();
+  };
+  // An exception ends the document with an error; the others go on.
+  auto guarded = [&](size_t i, const std::function<void()>& step) {
+    try {
+      step();
+    } catch (const std::bad_alloc&) {
+      jobs[i]->prepared = false;
+      jobs[i]->result = {};
+      jobs[i]->result.messages += fmt::format("error: {}: out of memory\n", items[i].file.string());
+    } catch (const std::exception& e) {
+      jobs[i]->prepared = false;
+      jobs[i]->result = {};
+      jobs[i]->result.messages += fmt::format("error: {}: {}\n", items[i].file.string(), e.what());
     }
   };
-  std::vector<std::thread> threads;
-  for (size_t t = 1; t < workers; ++t) threads.emplace_back(work);
-  work();
-  for (std::thread& t : threads) t.join();
+  forEachItem([&](size_t i) {
+    jobs[i] = std::make_unique<Job>();
+    guarded(i, [&] { prepareItem(batch, items[i], *jobs[i]); });
+  });
+  // The shaders of one library compile as one (driver/ShaderGroups.h), each group before the
+  // documents that need it, the largest first, so that no worker waits on another's group.
+  {
+    std::vector<glsl::MaterialShader> shaders;
+    for (const auto& job : jobs) {
+      if (job->prepared) shaders.insert(shaders.end(), job->shaders.begin(), job->shaders.end());
+    }
+    CompileRequest request;
+    request.optimize = options.optimize;
+    planShaderGroups(shaderCache, std::move(shaders), request);
+  }
+  std::mutex printing;
+  Progress progress(items.size());
+  forEachItem([&](size_t i) {
+    while (shaderCache.compileAGroup()) {
+    }
+    if (jobs[i]->prepared) guarded(i, [&] { finishItem(batch, items[i], *jobs[i]); });
+    const ItemResult& r = jobs[i]->result;
+    std::lock_guard<std::mutex> lock(printing);
+    if (!r.messages.empty()) {
+      progress.clear();
+      std::fputs(r.messages.c_str(), stderr);
+    }
+    progress.step(items[i].file.filename().string());
+  });
+  std::vector<ItemResult> results(items.size());
+  for (size_t i = 0; i < items.size(); ++i) results[i] = std::move(jobs[i]->result);
   progress.clear();
 
   size_t compiled = 0, nothing = 0, materials = 0;
@@ -320,6 +381,7 @@ int runCompileBatch(const CompileOptions& options) {
   }
   const double seconds = millisecondsSince(start) / 1000.0;
   detail("{} material(s) had the code of a shader compiled for another and took its SPIR-V", shaderCache.hits());
+  detail("{} module(s) were cut from shaders compiled for several materials of one library", shaderCache.grouped());
   if (!quiet()) {
     std::printf("compiled %zu material(s) of %zu document(s) in %.2f s (%.1f ms per material, %zu worker(s))%s\n",
                 materials, compiled, seconds, materials ? 1000.0 * seconds / double(materials) : 0.0, workers,

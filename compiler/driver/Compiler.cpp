@@ -4,7 +4,9 @@
 
 #include <fmt/format.h>
 
+#include "compiler/driver/ShaderGroups.h"
 #include "compiler/ir/passes/Pass.h"
+#include "compiler/spirv/ModuleCut.h"
 #include "compiler/resolve/Resolver.h"
 
 namespace mxc {
@@ -130,9 +132,16 @@ std::optional<std::vector<uint32_t>> compileShader(const glsl::MaterialShader& s
   // A shader built by hand has no code key: it is compiled for itself.
   if (!cache || shader.codeKey.empty()) return spirv::compile(shader.glsl, options, diagnostics);
   // The key holds everything the module depends on: the code and the options.
-  const std::string key = fmt::format("{}{}\n{}", spirv::stageName(shader.glsl.stage), options.optimize ? " -O" : "",
-                                      shader.codeKey);
-  return cache->getOrCompile(key, [&] { return spirv::compile(shader.glsl, options, diagnostics); });
+  return cache->getOrCompile(shaderCacheKey(shader, request), [&]() -> std::optional<std::vector<uint32_t>> {
+    std::optional<std::vector<uint32_t>> words = spirv::compile(shader.glsl, options, diagnostics);
+    if (!words || options.optimize) return words;
+    // In the form of a module cut from a group compile (ShaderGroups.h), so that a material
+    // compiled alone and in a batch are the same bytes; a module the cut does not handle is
+    // grouped with no other, and stays as glslang wrote it.
+    std::string error;
+    std::optional<std::vector<uint32_t>> canonical = spirv::cutModule(*words, {}, error);
+    return canonical ? canonical : words;
+  });
 }
 
 }  // namespace mxc

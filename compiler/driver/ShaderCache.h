@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -38,18 +39,41 @@ class ShaderCache {
   /// checks) and a module about 25 kB, so a batch holds some tens of kB per distinct shader.
   std::optional<Words> getOrCompile(const std::string& key, const std::function<std::optional<Words>()>& compile);
 
-  /// Materials served from another's compile so far.
+  /// Keys that compile together (shaders of one library, driver/ShaderGroups.h): the first
+  /// getOrCompile of any of them runs `compile` once for all, which returns the words of each
+  /// key it could make; a key it could not compiles alone, as if there were no group. Keys
+  /// already in a group or compiled are left out of this one.
+  using GroupCompile = std::function<std::map<std::string, Words>()>;
+  void addGroup(const std::vector<std::string>& keys, GroupCompile compile);
+  /// Compiles the largest group no worker has started; false when there is none. A batch's
+  /// workers call it until false before their documents, so that none waits on another's
+  /// group (the documents of one library are often neighbours in a folder).
+  bool compileAGroup();
+
+  /// Materials served from a compile of another material's shader of the same code so far.
   size_t hits() const;
+  /// Modules made by group compiles so far.
+  size_t grouped() const;
 
  private:
   struct Entry {
     bool pending = true;
+    bool unclaimed = false;  ///< made by a group compile, not yet taken by its material
     Words words;
   };
+  struct Group {
+    std::vector<std::string> keys;
+    GroupCompile compile;
+  };
+  /// Runs `group` (taken out of groups_, its keys' entries pending) with the lock released.
+  void runGroup(std::unique_lock<std::mutex>& lock, const std::shared_ptr<Group>& group);
+
   mutable std::mutex mutex_;
   std::condition_variable done_;
   std::map<std::string, Entry> entries_;  ///< a key's entry is erased when its compile fails
+  std::map<std::string, std::shared_ptr<Group>> groups_;  ///< the group of each key not yet compiled
   size_t hits_ = 0;
+  size_t grouped_ = 0;
 };
 
 }  // namespace mxc

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <span>
 #include <stdexcept>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -72,6 +73,9 @@ class Writer {
     lines_.add(std::move(text), origin);
   }
   void lines(const Lines& more) { lines_.append(more); }
+  /// The lines from here to endClosure() define the material's function: out of the library key.
+  void beginClosure() { closure_.first = lines_.text.size(); }
+  void endClosure() { closure_.second = lines_.text.size(); }
   /// A library file, whole, with a marker naming it.
   void file(std::string_view path) {
     if (!expand_) {
@@ -102,22 +106,30 @@ class Writer {
   /// The code key of the text finish() returned: its lines but for the naming ones, library
   /// files by their paths.
   const std::string& key() const { return key_; }
+  /// The key but for the material's function.
+  const std::string& libraryKey() const { return libraryKey_; }
+  std::pair<size_t, size_t> closure() const { return closure_; }
   spirv::GlslSource finish(spirv::Stage stage, std::string name) {
     spirv::GlslSource out;
     out.stage = stage;
     out.name = std::move(name);
     std::vector<bool> keyed(lines_.text.size(), true);
     for (const auto& [first, end] : unkeyed_) std::fill(keyed.begin() + long(first), keyed.begin() + long(end), false);
-    std::string key;
+    std::string key, libraryKey;
     for (size_t i = 0; i < lines_.text.size(); ++i) {
       out.text += lines_.text[i];
       out.text += '\n';
       if (keyed[i]) {
         key += lines_.text[i];
         key += '\n';
+        if (i < closure_.first || i >= closure_.second) {
+          libraryKey += lines_.text[i];
+          libraryKey += '\n';
+        }
       }
     }
     key_ = std::move(key);
+    libraryKey_ = std::move(libraryKey);
     out.origins = std::move(lines_.origins);
     return out;
   }
@@ -127,6 +139,8 @@ class Writer {
   bool expand_ = true;
   std::vector<std::pair<size_t, size_t>> unkeyed_;  ///< line ranges [first, end) left out of the key
   std::string key_;
+  std::string libraryKey_;
+  std::pair<size_t, size_t> closure_{0, 0};  ///< the lines of mxc_material_closure, [first, end)
 };
 
 std::vector<UniformField> parameterLayout(const ir::Material& material, const ExprEmitter& exprs, uint32_t& bytes) {
@@ -254,10 +268,12 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   }
   w.line("");
   w.namingLine(fmt::format("// ---- material '{}' ----", material.name), material.origin.location);
+  w.beginClosure();
   w.line("void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {", material.origin.location);
   w.lines(exprs.statements());
   w.lines(closure.lines);
   w.line("}");
+  w.endClosure();
   w.line("");
   switch (kind) {
     case ShaderKind::Raster:
@@ -284,6 +300,8 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
       break;
   }
   out.codeKey = w.key();
+  out.libraryKey = w.libraryKey();
+  std::tie(out.closureFirst, out.closureEnd) = w.closure();
   return out;
 }
 

@@ -51,6 +51,23 @@ struct spvUnsafeArray
     }
 };
 
+struct MxcGeometry
+{
+    float3 P;
+    float3 Pobj;
+    float3 N;
+    float3 Nobj;
+    float3 T;
+    float3 Tobj;
+    float3 B;
+    float3 Bobj;
+    float2 uv;
+    float4 color;
+    float4x4 objectToWorld;
+    float frame;
+    float time;
+};
+
 struct MxcLobe
 {
     int kind;
@@ -68,15 +85,6 @@ struct MxcLobe
     float3 film;
     float3 tau;
     float tauEta;
-};
-
-struct MxcLobeSample
-{
-    float3 wi;
-    float3 value;
-    float pdf;
-    short delta;
-    short valid;
 };
 
 struct MxcClosure
@@ -100,33 +108,6 @@ struct MxcSample
     short valid;
 };
 
-struct MxcGeometry
-{
-    float3 P;
-    float3 Pobj;
-    float3 N;
-    float3 Nobj;
-    float3 T;
-    float3 Tobj;
-    float3 B;
-    float3 Bobj;
-    float2 uv;
-    float4 color;
-    float4x4 objectToWorld;
-    float frame;
-    float time;
-};
-
-struct MxcEnvDistribution
-{
-    uint4 mxc_env_size;
-    float4 mxc_env_cells[1];
-};
-
-constant int MXC_ENVIRONMENT_tmp [[function_constant(0)]];
-constant int MXC_ENVIRONMENT = is_function_constant_defined(MXC_ENVIRONMENT_tmp) ? MXC_ENVIRONMENT_tmp : -1;
-constant bool _2861 = (MXC_ENVIRONMENT != (-1));
-
 struct MxcView
 {
     float4x4 objectToWorld;
@@ -141,20 +122,38 @@ struct MxcView
     float4 environment;
 };
 
-constant int MXC_LIGHT_COUNT_tmp [[function_constant(1)]];
-constant int MXC_LIGHT_COUNT = is_function_constant_defined(MXC_LIGHT_COUNT_tmp) ? MXC_LIGHT_COUNT_tmp : -1;
-constant bool _2881 = (MXC_LIGHT_COUNT != (-1));
-constant int MXC_LIGHT_KINDS_tmp [[function_constant(2)]];
-constant int MXC_LIGHT_KINDS = is_function_constant_defined(MXC_LIGHT_KINDS_tmp) ? MXC_LIGHT_KINDS_tmp : -1;
-constant bool _2893 = (MXC_LIGHT_KINDS != (-1));
-constant int _2894 = _2893 ? MXC_LIGHT_KINDS : 7;
-
 struct MxcParameters
 {
     uint missing_textures;
     float frame;
     float time;
 };
+
+struct MxcLobeSample
+{
+    float3 wi;
+    float3 value;
+    float pdf;
+    short delta;
+    short valid;
+};
+
+struct MxcEnvDistribution
+{
+    uint4 mxc_env_size;
+    float4 mxc_env_cells[1];
+};
+
+constant int MXC_ENVIRONMENT_tmp [[function_constant(0)]];
+constant int MXC_ENVIRONMENT = is_function_constant_defined(MXC_ENVIRONMENT_tmp) ? MXC_ENVIRONMENT_tmp : -1;
+constant bool _209 = (MXC_ENVIRONMENT != (-1));
+constant int MXC_LIGHT_COUNT_tmp [[function_constant(1)]];
+constant int MXC_LIGHT_COUNT = is_function_constant_defined(MXC_LIGHT_COUNT_tmp) ? MXC_LIGHT_COUNT_tmp : -1;
+constant bool _211 = (MXC_LIGHT_COUNT != (-1));
+constant int MXC_LIGHT_KINDS_tmp [[function_constant(2)]];
+constant int MXC_LIGHT_KINDS = is_function_constant_defined(MXC_LIGHT_KINDS_tmp) ? MXC_LIGHT_KINDS_tmp : -1;
+constant bool _213 = (MXC_LIGHT_KINDS != (-1));
+constant int _214 = _213 ? MXC_LIGHT_KINDS : 7;
 
 struct main0_out
 {
@@ -176,16 +175,16 @@ static inline __attribute__((always_inline))
 float3 mxc_safe_normalize(thread const float3& v, thread const float3& fallback)
 {
     float l2 = dot(v, v);
-    float3 _364;
+    float3 _928;
     if (l2 > 9.9999996826552253889678874634872e-21)
     {
-        _364 = v * rsqrt(l2);
+        _928 = v * rsqrt(l2);
     }
     else
     {
-        _364 = fallback;
+        _928 = fallback;
     }
-    return _364;
+    return _928;
 }
 
 static inline __attribute__((always_inline))
@@ -241,16 +240,16 @@ bool mxc_index_matched(thread const MxcLobe& l)
 static inline __attribute__((always_inline))
 float mxc_lobe_eta(thread const MxcLobe& l, thread const bool& above)
 {
-    float _1036;
+    float _1609;
     if (above)
     {
-        _1036 = l.eta;
+        _1609 = l.eta;
     }
     else
     {
-        _1036 = 1.0 / l.eta;
+        _1609 = 1.0 / l.eta;
     }
-    return _1036;
+    return _1609;
 }
 
 static inline __attribute__((always_inline))
@@ -346,68 +345,68 @@ float3 mxc_lobe_fresnel(thread const MxcLobe& l, thread const float& _cosh, thre
 static inline __attribute__((always_inline))
 float3 mxc_lobe_ms_scale(thread const MxcLobe& l, thread const float3& wo, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
-    bool _1328 = l.kind == 1;
-    bool _1335;
-    if (!_1328)
+    bool _1922 = l.kind == 1;
+    bool _1929;
+    if (!_1922)
     {
-        _1335 = l.kind == 2;
+        _1929 = l.kind == 2;
     }
     else
     {
-        _1335 = _1328;
+        _1929 = _1922;
     }
-    bool _1343;
-    if (!_1335)
+    bool _1936;
+    if (!_1929)
     {
-        _1343 = l.kind == 3;
+        _1936 = l.kind == 3;
     }
     else
     {
-        _1343 = _1335;
+        _1936 = _1929;
     }
-    bool microfacet = _1343;
-    bool _1345 = !microfacet;
-    bool _1353;
-    if (!_1345)
+    bool microfacet = _1936;
+    bool _1938 = !microfacet;
+    bool _1945;
+    if (!_1938)
     {
         float2 param = l.alpha;
-        _1353 = mxc_is_delta(param);
+        _1945 = mxc_is_delta(param);
     }
     else
     {
-        _1353 = _1345;
+        _1945 = _1938;
     }
-    if (_1353)
+    if (_1945)
     {
         return float3(1.0);
     }
     float alpha = sqrt(l.alpha.x * l.alpha.y);
-    bool _1366 = l.kind == 1;
-    bool _1372;
-    if (_1366)
+    bool _1956 = l.kind == 1;
+    bool _1961;
+    if (_1956)
     {
         MxcLobe param_1 = l;
-        _1372 = mxc_index_matched(param_1);
+        _1961 = mxc_index_matched(param_1);
     }
     else
     {
-        _1372 = _1366;
+        _1961 = _1956;
     }
-    if (_1372)
+    if (_1961)
     {
         return float3(1.0);
     }
-    bool _1378 = l.kind == 1;
-    bool _1386;
-    if (_1378)
+    bool _1966 = l.kind == 1;
+    bool _1973;
+    if (_1966)
     {
-        _1386 = (l.mode & 4) == 0;
+        _1973 = (l.mode & 4) == 0;
     }
     else
     {
-        _1386 = _1378;
+        _1973 = _1966;
     }
-    if (_1386)
+    if (_1973)
     {
         MxcLobe param_2 = l;
         bool param_3 = wo.z >= 0.0;
@@ -431,16 +430,16 @@ float3 mxc_lobe_ms_scale(thread const MxcLobe& l, thread const float3& wo, textu
 static inline __attribute__((always_inline))
 float mxc_dielectric_albedo(thread const float& mu, thread const float& alpha, thread const float& eta, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
-    float _990;
+    float _1559;
     if (eta >= 1.0)
     {
-        _990 = eta;
+        _1559 = eta;
     }
     else
     {
-        _990 = 1.0 / fast::max(eta, 0.001000000047497451305389404296875);
+        _1559 = 1.0 / fast::max(eta, 0.001000000047497451305389404296875);
     }
-    float e = _990;
+    float e = _1559;
     float param = mu;
     float param_1 = alpha;
     float param_2 = e;
@@ -451,40 +450,40 @@ static inline __attribute__((always_inline))
 float3 mxc_lobe_albedo_scaled(thread const MxcLobe& l, thread const float3& wo, thread const float3& ms, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
     float mu = fast::clamp(wo.z, 0.0, 1.0);
-    bool _1449 = l.kind == 1;
-    bool _1456;
-    if (!_1449)
+    bool _2046 = l.kind == 1;
+    bool _2053;
+    if (!_2046)
     {
-        _1456 = l.kind == 2;
+        _2053 = l.kind == 2;
     }
     else
     {
-        _1456 = _1449;
+        _2053 = _2046;
     }
-    bool _1463;
-    if (!_1456)
+    bool _2060;
+    if (!_2053)
     {
-        _1463 = l.kind == 3;
+        _2060 = l.kind == 3;
     }
     else
     {
-        _1463 = _1456;
+        _2060 = _2053;
     }
-    if (_1463)
+    if (_2060)
     {
         float alpha = sqrt(l.alpha.x * l.alpha.y);
-        bool _1475 = l.kind == 1;
-        bool _1483;
-        if (_1475)
+        bool _2071 = l.kind == 1;
+        bool _2078;
+        if (_2071)
         {
             float2 param = l.alpha;
-            _1483 = !mxc_is_delta(param);
+            _2078 = !mxc_is_delta(param);
         }
         else
         {
-            _1483 = _1475;
+            _2078 = _2071;
         }
-        if (_1483)
+        if (_2078)
         {
             float param_1 = mu;
             float param_2 = alpha;
@@ -503,16 +502,16 @@ float3 mxc_lobe_albedo_scaled(thread const MxcLobe& l, thread const float3& wo, 
         float param_10 = 0.0;
         bool param_11 = true;
         float3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
-        float3 _1528;
+        float3 _2036;
         if (l.kind == 1)
         {
-            _1528 = l.c0;
+            _2036 = l.c0;
         }
         else
         {
-            _1528 = float3(1.0);
+            _2036 = float3(1.0);
         }
-        float3 tint = _1528;
+        float3 tint = _2036;
         float2 param_12 = l.alpha;
         if (mxc_is_delta(param_12))
         {
@@ -544,17 +543,17 @@ float3 mxc_lobe_albedo(thread const MxcLobe& l, thread const float3& wo, texture
 static inline __attribute__((always_inline))
 float3 mxc_lobe_layer_albedo(thread const MxcLobe& l, thread const float3& wo, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
-    bool _1595 = l.kind == 9;
-    bool _1603;
-    if (!_1595)
+    bool _2173 = l.kind == 9;
+    bool _2180;
+    if (!_2173)
     {
-        _1603 = l.kind == 10;
+        _2180 = l.kind == 10;
     }
     else
     {
-        _1603 = _1595;
+        _2180 = _2173;
     }
-    if (_1603)
+    if (_2180)
     {
         MxcLobe white = l;
         white.c0 = float3(1.0);
@@ -675,37 +674,37 @@ void mxc_material_closure(thread const MxcGeometry& g, thread const float3& wo, 
 static inline __attribute__((always_inline))
 int mxc_light_count(constant MxcView& mxc_view)
 {
-    int _2882;
-    if (_2881)
+    int _3406;
+    if (_211)
     {
-        _2882 = MXC_LIGHT_COUNT;
+        _3406 = MXC_LIGHT_COUNT;
     }
     else
     {
-        _2882 = mxc_view.counts.x;
+        _3406 = mxc_view.counts.x;
     }
-    return min(_2882, 8);
+    return min(_3406, 8);
 }
 
 static inline __attribute__((always_inline))
 int mxc_light_kinds()
 {
-    return _2894;
+    return _214;
 }
 
 static inline __attribute__((always_inline))
 int mxc_environment_code(constant MxcView& mxc_view)
 {
-    int _2862;
-    if (_2861)
+    int _3398;
+    if (_209)
     {
-        _2862 = MXC_ENVIRONMENT;
+        _3398 = MXC_ENVIRONMENT;
     }
     else
     {
-        _2862 = mxc_view.counts.y;
+        _3398 = mxc_view.counts.y;
     }
-    return _2862;
+    return _3398;
 }
 
 static inline __attribute__((always_inline))
@@ -796,37 +795,37 @@ float mxc_ggx_g2(thread const float3& wo, thread const float3& wi, thread const 
 {
     float3 param = wo;
     float2 param_1 = alpha;
-    float _666 = mxc_ggx_lambda(param, param_1);
+    float _1232 = mxc_ggx_lambda(param, param_1);
     float3 param_2 = wi;
     float2 param_3 = alpha;
-    float _672 = mxc_ggx_lambda(param_2, param_3);
-    return 1.0 / ((1.0 + _666) + _672);
+    float _1236 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0 / ((1.0 + _1232) + _1236);
 }
 
 static inline __attribute__((always_inline))
 float3 mxc_microfacet_reflect(thread const MxcLobe& l, thread const float3& wo, thread const float3& wi)
 {
-    bool _1079 = wo.z <= 0.0;
-    bool _1086;
-    if (!_1079)
+    bool _1668 = wo.z <= 0.0;
+    bool _1675;
+    if (!_1668)
     {
-        _1086 = wi.z <= 0.0;
+        _1675 = wi.z <= 0.0;
     }
     else
     {
-        _1086 = _1079;
+        _1675 = _1668;
     }
-    bool _1095;
-    if (!_1086)
+    bool _1682;
+    if (!_1675)
     {
         float2 param = l.alpha;
-        _1095 = mxc_is_delta(param);
+        _1682 = mxc_is_delta(param);
     }
     else
     {
-        _1095 = _1086;
+        _1682 = _1675;
     }
-    if (_1095)
+    if (_1682)
     {
         return float3(0.0);
     }
@@ -841,11 +840,11 @@ float3 mxc_microfacet_reflect(thread const MxcLobe& l, thread const float3& wo, 
     }
     float3 param_4 = h;
     float2 param_5 = l.alpha;
-    float _1132 = mxc_ggx_d(param_4, param_5);
+    float _1708 = mxc_ggx_d(param_4, param_5);
     float3 param_6 = wo;
     float3 param_7 = wi;
     float2 param_8 = l.alpha;
-    return ((f * _1132) * mxc_ggx_g2(param_6, param_7, param_8)) / float3(4.0 * wo.z);
+    return ((f * _1708) * mxc_ggx_g2(param_6, param_7, param_8)) / float3(4.0 * wo.z);
 }
 
 static inline __attribute__((always_inline))
@@ -853,16 +852,16 @@ float mxc_fon(thread const float& sigma, thread const float3& wo, thread const f
 {
     float a = 1.0 / (1.0 + (0.2877933979034423828125 * sigma));
     float s = dot(wi, wo) - (wi.z * wo.z);
-    float _1170;
+    float _1729;
     if (s > 0.0)
     {
-        _1170 = fast::max(fast::max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
+        _1729 = fast::max(fast::max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
     }
     else
     {
-        _1170 = 1.0;
+        _1729 = 1.0;
     }
-    float t = _1170;
+    float t = _1729;
     return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375;
 }
 
@@ -874,16 +873,16 @@ float mxc_fon_albedo(thread const float& sigma, thread const float& mu)
     float param = 1.0 - (c * c);
     float s = mxc_safe_sqrt(param);
     float theta = acos(c);
-    float _1215;
+    float _1775;
     if (c > 9.9999997473787516355514526367188e-05)
     {
-        _1215 = (1.0 - ((s * s) * s)) / c;
+        _1775 = (1.0 - ((s * s) * s)) / c;
     }
     else
     {
-        _1215 = 1.5 * c;
+        _1775 = 1.5 * c;
     }
-    float tail = _1215;
+    float tail = _1775;
     float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875 * s) * tail)) - (0.666666686534881591796875 * s);
     return a + (((sigma * a) * g) * 0.3183098733425140380859375);
 }
@@ -942,17 +941,17 @@ float3 mxc_lobe_eval(thread const MxcLobe& l, thread const float3& wo, thread co
         case 2:
         case 3:
         {
-            bool _1677 = l.kind == 3;
-            bool _1684;
-            if (_1677)
+            bool _2255 = l.kind == 3;
+            bool _2262;
+            if (_2255)
             {
-                _1684 = (l.mode & 1) == 0;
+                _2262 = (l.mode & 1) == 0;
             }
             else
             {
-                _1684 = _1677;
+                _2262 = _2255;
             }
-            if (_1684)
+            if (_2262)
             {
                 return float3(0.0);
             }
@@ -963,30 +962,30 @@ float3 mxc_lobe_eval(thread const MxcLobe& l, thread const float3& wo, thread co
         }
         case 5:
         {
-            bool _1698 = wo.z > 0.0;
-            bool _1704;
-            if (_1698)
+            bool _2271 = wo.z > 0.0;
+            bool _2277;
+            if (_2271)
             {
-                _1704 = wi.z > 0.0;
+                _2277 = wi.z > 0.0;
             }
             else
             {
-                _1704 = _1698;
+                _2277 = _2271;
             }
-            float3 _1705;
-            if (_1704)
+            float3 _2206;
+            if (_2277)
             {
                 float3 param_9 = l.c0;
                 float param_10 = l.p0;
                 float3 param_11 = wo;
                 float3 param_12 = wi;
-                _1705 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
+                _2206 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
             }
             else
             {
-                _1705 = float3(0.0);
+                _2206 = float3(0.0);
             }
-            return _1705;
+            return _2206;
         }
         default:
         {
@@ -1000,8 +999,8 @@ float mxc_ggx_g1(thread const float3& v, thread const float2& alpha)
 {
     float3 param = v;
     float2 param_1 = alpha;
-    float _657 = mxc_ggx_lambda(param, param_1);
-    return 1.0 / (1.0 + _657);
+    float _1218 = mxc_ggx_lambda(param, param_1);
+    return 1.0 / (1.0 + _1218);
 }
 
 static inline __attribute__((always_inline))
@@ -1015,8 +1014,8 @@ float mxc_ggx_pdf_vndf(thread const float3& wo, thread const float3& m, thread c
     float2 param_1 = alpha;
     float3 param_2 = m;
     float2 param_3 = alpha;
-    float _823 = mxc_ggx_d(param_2, param_3);
-    return ((mxc_ggx_g1(param, param_1) * fast::max(dot(wo, m), 0.0)) * _823) / wo.z;
+    float _1391 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * fast::max(dot(wo, m), 0.0)) * _1391) / wo.z;
 }
 
 static inline __attribute__((always_inline))
@@ -1046,26 +1045,26 @@ float mxc_lobe_pdf(thread const MxcLobe& l, thread const float3& wo, thread cons
                 return 0.0;
             }
             bool above = wo.z > 0.0;
-            float3 _1746;
+            float3 _2300;
             if (above)
             {
-                _1746 = wo;
+                _2300 = wo;
             }
             else
             {
-                _1746 = -wo;
+                _2300 = -wo;
             }
-            float3 o = _1746;
-            float3 _1756;
+            float3 o = _2300;
+            float3 _2302;
             if (above)
             {
-                _1756 = wi;
+                _2302 = wi;
             }
             else
             {
-                _1756 = -wi;
+                _2302 = -wi;
             }
-            float3 i = _1756;
+            float3 i = _2302;
             if (i.z > 0.0)
             {
                 float3 h = fast::normalize(o + i);
@@ -1087,42 +1086,42 @@ float mxc_lobe_pdf(thread const MxcLobe& l, thread const float3& wo, thread cons
                 float3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
                 float fr = mxc_mean(param_7);
                 MxcLobe param_8 = l;
-                bool _1819 = mxc_lobe_transmits(param_8);
-                bool _1826;
-                if (_1819)
+                bool _2402 = mxc_lobe_transmits(param_8);
+                bool _2409;
+                if (_2402)
                 {
-                    _1826 = (l.mode & 1) != 0;
+                    _2409 = (l.mode & 1) != 0;
                 }
                 else
                 {
-                    _1826 = _1819;
+                    _2409 = _2402;
                 }
-                return p * (_1826 ? fr : 1.0);
+                return p * (_2409 ? fr : 1.0);
             }
             return 0.0;
         }
         default:
         {
-            bool _1834 = wo.z > 0.0;
-            bool _1840;
-            if (_1834)
+            bool _2322 = wo.z > 0.0;
+            bool _2328;
+            if (_2322)
             {
-                _1840 = wi.z > 0.0;
+                _2328 = wi.z > 0.0;
             }
             else
             {
-                _1840 = _1834;
+                _2328 = _2322;
             }
-            float _1841;
-            if (_1840)
+            float _2314;
+            if (_2328)
             {
-                _1841 = wi.z * 0.3183098733425140380859375;
+                _2314 = wi.z * 0.3183098733425140380859375;
             }
             else
             {
-                _1841 = 0.0;
+                _2314 = 0.0;
             }
-            return _1841;
+            return _2314;
         }
     }
 }
@@ -1134,16 +1133,16 @@ float3 mxc_ggx_sample_vndf(thread const float3& wo, thread float2& alpha, thread
     alpha = mxc_rough_alpha(param);
     float3 vh = fast::normalize(float3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lensq = (vh.x * vh.x) + (vh.y * vh.y);
-    float3 _710;
+    float3 _1248;
     if (lensq > 0.0)
     {
-        _710 = float3(-vh.y, vh.x, 0.0) * rsqrt(lensq);
+        _1248 = float3(-vh.y, vh.x, 0.0) * rsqrt(lensq);
     }
     else
     {
-        _710 = float3(1.0, 0.0, 0.0);
+        _1248 = float3(1.0, 0.0, 0.0);
     }
-    float3 t1 = _710;
+    float3 t1 = _1248;
     float3 t2 = cross(vh, t1);
     float r = sqrt(u.x);
     float phi = 6.283185482025146484375 * u.y;
@@ -1173,94 +1172,94 @@ MxcLobeSample mxc_lobe_sample(thread const MxcLobe& l, thread const float3& wo, 
         case 3:
         {
             bool above = wo.z > 0.0;
-            float3 _1871;
+            float3 _2421;
             if (above)
             {
-                _1871 = wo;
+                _2421 = wo;
             }
             else
             {
-                _1871 = -wo;
+                _2421 = -wo;
             }
-            float3 o = _1871;
+            float3 o = _2421;
             if (o.z <= 0.0)
             {
                 return s;
             }
             float2 param = l.alpha;
             bool delta = mxc_is_delta(param);
-            float3 _1893;
+            float3 _2425;
             if (delta)
             {
-                _1893 = float3(0.0, 0.0, 1.0);
+                _2425 = float3(0.0, 0.0, 1.0);
             }
             else
             {
                 float3 param_1 = o;
                 float2 param_2 = l.alpha;
                 float2 param_3 = u.xy;
-                float3 _1905 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
-                _1893 = _1905;
+                float3 _2526 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2425 = _2526;
             }
-            float3 m = _1893;
+            float3 m = _2425;
             float hm = dot(o, m);
-            bool _1914 = l.kind == 1;
-            bool _1921;
-            if (!_1914)
+            bool _2533 = l.kind == 1;
+            bool _2540;
+            if (!_2533)
             {
-                _1921 = l.kind == 3;
+                _2540 = l.kind == 3;
             }
             else
             {
-                _1921 = _1914;
+                _2540 = _2533;
             }
-            bool _1927;
-            if (_1921)
+            bool _2545;
+            if (_2540)
             {
                 MxcLobe param_4 = l;
-                _1927 = mxc_lobe_transmits(param_4);
+                _2545 = mxc_lobe_transmits(param_4);
             }
             else
             {
-                _1927 = _1921;
+                _2545 = _2540;
             }
-            bool transmits = _1927;
-            bool _1931 = l.kind == 2;
-            bool _1939;
-            if (!_1931)
+            bool transmits = _2545;
+            bool _2548 = l.kind == 2;
+            bool _2556;
+            if (!_2548)
             {
-                _1939 = (l.mode & 1) != 0;
+                _2556 = (l.mode & 1) != 0;
             }
             else
             {
-                _1939 = _1931;
+                _2556 = _2548;
             }
-            bool reflects = _1939;
+            bool reflects = _2556;
             MxcLobe param_5 = l;
             float param_6 = fast::max(hm, 0.0);
             bool param_7 = above;
             float3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
-            float _1951;
+            float _2438;
             if (transmits)
             {
                 float3 param_8 = f;
-                _1951 = mxc_mean(param_8);
+                _2438 = mxc_mean(param_8);
             }
             else
             {
-                _1951 = 1.0;
+                _2438 = 1.0;
             }
-            float fr = _1951;
-            float _1961;
+            float fr = _2438;
+            float _2441;
             if (transmits)
             {
-                _1961 = reflects ? fr : 0.0;
+                _2441 = reflects ? fr : 0.0;
             }
             else
             {
-                _1961 = 1.0;
+                _2441 = 1.0;
             }
-            float pReflect = _1961;
+            float pReflect = _2441;
             if (u.z < pReflect)
             {
                 float3 i = reflect(-o, m);
@@ -1268,38 +1267,38 @@ MxcLobeSample mxc_lobe_sample(thread const MxcLobe& l, thread const float3& wo, 
                 {
                     return s;
                 }
-                float3 _1988;
+                float3 _2443;
                 if (above)
                 {
-                    _1988 = i;
+                    _2443 = i;
                 }
                 else
                 {
-                    _1988 = -i;
+                    _2443 = -i;
                 }
-                s.wi = _1988;
+                s.wi = _2443;
                 s.delta = short(delta);
                 if (delta)
                 {
-                    float3 _2006;
+                    float3 _2445;
                     if (l.kind == 1)
                     {
-                        float3 _2010;
+                        float3 _2446;
                         if (above)
                         {
-                            _2010 = l.c0;
+                            _2446 = l.c0;
                         }
                         else
                         {
-                            _2010 = float3(1.0);
+                            _2446 = float3(1.0);
                         }
-                        _2006 = _2010;
+                        _2445 = _2446;
                     }
                     else
                     {
-                        _2006 = float3(1.0);
+                        _2445 = float3(1.0);
                     }
-                    float3 tint = _2006;
+                    float3 tint = _2445;
                     s.value = f * tint;
                     s.pdf = pReflect;
                 }
@@ -1474,16 +1473,16 @@ float3 mxc_env_to_map(thread const float3& w, thread const float& angle)
 static inline __attribute__((always_inline))
 float2 mxc_env_uv(thread const float3& d)
 {
-    float _2558;
+    float _3108;
     if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13)
     {
-        _2558 = 0.5 + (precise::atan2(d.x, -d.z) * 0.15915493667125701904296875);
+        _3108 = 0.5 + (precise::atan2(d.x, -d.z) * 0.15915493667125701904296875);
     }
     else
     {
-        _2558 = 0.5;
+        _3108 = 0.5;
     }
-    float u = _2558;
+    float u = _3108;
     float v = precise::atan2(length(d.xz), d.y) * 0.3183098733425140380859375;
     return float2(u, v);
 }
@@ -1496,7 +1495,7 @@ float3 mxc_env_lookup(thread const float3& d, texture2d<float> mxc_env_radiance,
 }
 
 static inline __attribute__((always_inline))
-float3 mxc_environment(thread const float3& d, texture2d<float> mxc_env_radiance, sampler mxc_env_radianceSmplr, constant MxcView& mxc_view)
+float3 mxc_environment(thread const float3& d, constant MxcView& mxc_view, texture2d<float> mxc_env_radiance, sampler mxc_env_radianceSmplr)
 {
     int code = mxc_environment_code(mxc_view);
     if (code == 1)
@@ -1519,21 +1518,21 @@ float3 mxc_environment(thread const float3& d, texture2d<float> mxc_env_radiance
 }
 
 static inline __attribute__((always_inline))
-uint mxc_env_cell(thread const float3& d, const device MxcEnvDistribution& v_2605)
+uint mxc_env_cell(thread const float3& d, const device MxcEnvDistribution& v_192)
 {
     float3 param = d;
     float2 uv = mxc_env_uv(param);
-    uint2 size = max(v_2605.mxc_env_size.xy, uint2(1u));
+    uint2 size = max(v_192.mxc_env_size.xy, uint2(1u));
     uint i = min(uint(fast::max(uv.x, 0.0) * float(size.x)), (size.x - 1u));
     uint j = min(uint(fast::max(uv.y, 0.0) * float(size.y)), (size.y - 1u));
     return (j * size.x) + i;
 }
 
 static inline __attribute__((always_inline))
-float mxc_env_pdf(thread const float3& d, const device MxcEnvDistribution& v_2605)
+float mxc_env_pdf(thread const float3& d, const device MxcEnvDistribution& v_192)
 {
     float3 param = d;
-    return ((device float*)&v_2605.mxc_env_cells[mxc_env_cell(param, v_2605)])[2u];
+    return ((device float*)&v_192.mxc_env_cells[mxc_env_cell(param, v_192)])[2u];
 }
 
 static inline __attribute__((always_inline))
@@ -1541,30 +1540,30 @@ float mxc_power_heuristic(thread const float& a, thread const float& b)
 {
     float a2 = a * a;
     float b2 = b * b;
-    float _2991;
+    float _3498;
     if ((a2 + b2) > 0.0)
     {
-        _2991 = a2 / (a2 + b2);
+        _3498 = a2 / (a2 + b2);
     }
     else
     {
-        _2991 = 0.0;
+        _3498 = 0.0;
     }
-    return _2991;
+    return _3498;
 }
 
 static inline __attribute__((always_inline))
-float3 mxc_env_sample(thread const float4& u, thread float& pdf, const device MxcEnvDistribution& v_2605)
+float3 mxc_env_sample(thread const float4& u, thread float& pdf, const device MxcEnvDistribution& v_192)
 {
-    uint2 size = max(v_2605.mxc_env_size.xy, uint2(1u));
+    uint2 size = max(v_192.mxc_env_size.xy, uint2(1u));
     uint n = size.x * size.y;
     uint k = min(uint(u.x * float(n)), (n - 1u));
-    float4 cell = v_2605.mxc_env_cells[k];
+    float4 cell = v_192.mxc_env_cells[k];
     if (u.y >= cell.x)
     {
         k = min(as_type<uint>(cell.y), (n - 1u));
     }
-    pdf = ((device float*)&v_2605.mxc_env_cells[k])[2u];
+    pdf = ((device float*)&v_192.mxc_env_cells[k])[2u];
     uint i = k % size.x;
     uint j = k / size.x;
     float phi = 6.283185482025146484375 * (((float(i) + u.z) / float(size.x)) - 0.5);
@@ -1619,20 +1618,20 @@ float3 mxc_closure_eval_pdf(thread const MxcClosure& c, thread const float3& wo,
             p += (c.choice[k] * mxc_lobe_pdf(param_11, param_12, param_13));
         }
     }
-    float _2269;
+    float _2772;
     if (c.choiceTotal > 0.0)
     {
-        _2269 = p / c.choiceTotal;
+        _2772 = p / c.choiceTotal;
     }
     else
     {
-        _2269 = 0.0;
+        _2772 = 0.0;
     }
-    pdf = _2269;
+    pdf = _2772;
     return f;
 }
 
-fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[buffer(0)]], const device MxcParameters& mxc_params [[buffer(1)]], const device MxcEnvDistribution& v_2605 [[buffer(2)]], texture2d<float> mxc_tables [[texture(0)]], texture2d<float> mxc_env_radiance [[texture(1)]], sampler mxc_tablesSmplr [[sampler(0)]], sampler mxc_env_radianceSmplr [[sampler(1)]], bool gl_FrontFacing [[front_facing]], float4 gl_FragCoord [[position]])
+fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[buffer(0)]], const device MxcParameters& mxc_params [[buffer(1)]], const device MxcEnvDistribution& v_192 [[buffer(2)]], texture2d<float> mxc_tables [[texture(0)]], texture2d<float> mxc_env_radiance [[texture(1)]], sampler mxc_tablesSmplr [[sampler(0)]], sampler mxc_env_radianceSmplr [[sampler(1)]], bool gl_FrontFacing [[front_facing]], float4 gl_FragCoord [[position]])
 {
     main0_out out = {};
     MxcGeometry g;
@@ -1682,16 +1681,16 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
     int lights = mxc_light_count(mxc_view);
     int kinds = mxc_light_kinds();
     bool image = mxc_environment_code(mxc_view) == 3;
-    int _3190;
+    int _247;
     if (mxc_environment_code(mxc_view) != 0)
     {
-        _3190 = max(mxc_view.counts.w, 1);
+        _247 = max(mxc_view.counts.w, 1);
     }
     else
     {
-        _3190 = 0;
+        _247 = 0;
     }
-    int n = _3190;
+    int n = _247;
     uint param_17 = uint(mxc_view.counts.z);
     uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
     uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
@@ -1700,54 +1699,54 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
     uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
     uint pixel = mxc_pcg(param_21);
     uint param_22 = pixel;
-    float _3233 = mxc_uniform(param_22);
+    float _474 = mxc_uniform(param_22);
     pixel = param_22;
     uint param_23 = pixel;
-    float _3237 = mxc_uniform(param_23);
+    float _478 = mxc_uniform(param_23);
     pixel = param_23;
     uint param_24 = pixel;
-    float _3241 = mxc_uniform(param_24);
+    float _481 = mxc_uniform(param_24);
     pixel = param_24;
     uint param_25 = pixel;
-    float _3245 = mxc_uniform(param_25);
+    float _484 = mxc_uniform(param_25);
     pixel = param_25;
-    float4 shift = float4(_3233, _3237, _3241, _3245);
+    float4 shift = float4(_474, _478, _481, _484);
     float3 sum = float3(0.0);
-    int _3271;
+    int _264;
     MxcSample smp;
-    float3 _3346;
-    float3 _3350;
-    float _3392;
+    float3 _281;
+    float3 _282;
+    float _287;
     float param_49;
-    int _3494;
+    int _311;
     float param_59;
-    float _3653;
+    float _327;
     for (int b = 0; b < max(n, int(lights > 0)); b++)
     {
         int batchLights = (b == 0) ? lights : 0;
         if (b < n)
         {
-            _3271 = 1 + int(image);
+            _264 = 1 + int(image);
         }
         else
         {
-            _3271 = 0;
+            _264 = 0;
         }
-        int batchSamples = _3271;
+        int batchSamples = _264;
         uint index = (uint(mxc_view.counts.z) * uint(max(n, 1))) + uint(b);
         uint param_26 = index;
         uint param_27 = 2u;
-        float _3294 = mxc_radical_inverse(param_26, param_27);
+        float _524 = mxc_radical_inverse(param_26, param_27);
         uint param_28 = index;
         uint param_29 = 3u;
-        float _3298 = mxc_radical_inverse(param_28, param_29);
+        float _527 = mxc_radical_inverse(param_28, param_29);
         uint param_30 = index;
         uint param_31 = 5u;
-        float _3303 = mxc_radical_inverse(param_30, param_31);
+        float _529 = mxc_radical_inverse(param_30, param_31);
         uint param_32 = index;
         uint param_33 = 7u;
-        float _3307 = mxc_radical_inverse(param_32, param_33);
-        float4 choice = fract(float4(_3294, _3298, _3303, _3307) + shift);
+        float _531 = mxc_radical_inverse(param_32, param_33);
+        float4 choice = fract(float4(_524, _527, _529, _531) + shift);
         smp.valid = short(false);
         smp.evaluate = short(false);
         smp.delta = short(false);
@@ -1766,58 +1765,58 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
         {
             if (above)
             {
-                _3350 = smp.wi;
+                _282 = smp.wi;
             }
             else
             {
                 float3 param_37 = -wo;
                 float3 param_38 = smp.wi;
-                _3350 = mxc_exit_direction(param_37, param_38);
+                _282 = mxc_exit_direction(param_37, param_38);
             }
-            float3 param_39 = _3350;
-            _3346 = mxc_environment(param_39, mxc_env_radiance, mxc_env_radianceSmplr, mxc_view);
+            float3 param_39 = _282;
+            _281 = mxc_environment(param_39, mxc_view, mxc_env_radiance, mxc_env_radianceSmplr);
         }
         else
         {
-            _3346 = float3(0.0);
+            _281 = float3(0.0);
         }
-        float3 seen = _3346;
-        bool _3373 = (b < n) && bool(smp.valid);
-        bool _3379;
-        if (_3373)
+        float3 seen = _281;
+        bool _589 = (b < n) && bool(smp.valid);
+        bool _595;
+        if (_589)
         {
-            _3379 = !bool(smp.evaluate);
+            _595 = !bool(smp.evaluate);
         }
         else
         {
-            _3379 = _3373;
+            _595 = _589;
         }
-        if (_3379)
+        if (_595)
         {
-            bool _3385 = image && above;
-            bool _3391;
-            if (_3385)
+            bool _600 = image && above;
+            bool _606;
+            if (_600)
             {
-                _3391 = !bool(smp.delta);
+                _606 = !bool(smp.delta);
             }
             else
             {
-                _3391 = _3385;
+                _606 = _600;
             }
-            if (_3391)
+            if (_606)
             {
                 float3 param_40 = smp.wi;
                 float param_41 = mxc_view.environment.z;
                 float3 param_42 = mxc_env_to_map(param_40, param_41);
                 float param_43 = smp.pdf;
-                float param_44 = mxc_env_pdf(param_42, v_2605);
-                _3392 = mxc_power_heuristic(param_43, param_44);
+                float param_44 = mxc_env_pdf(param_42, v_192);
+                _287 = mxc_power_heuristic(param_43, param_44);
             }
             else
             {
-                _3392 = 1.0;
+                _287 = 1.0;
             }
-            float w = _3392;
+            float w = _287;
             sum += ((smp.weight * w) * seen);
         }
         float3 m = float3(0.0);
@@ -1827,36 +1826,36 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
         if (image && (b < n))
         {
             uint param_45 = seed;
-            float _3436 = mxc_uniform(param_45);
+            float _642 = mxc_uniform(param_45);
             seed = param_45;
             uint param_46 = seed;
-            float _3440 = mxc_uniform(param_46);
+            float _645 = mxc_uniform(param_46);
             seed = param_46;
             uint param_47 = seed;
-            float _3444 = mxc_uniform(param_47);
+            float _648 = mxc_uniform(param_47);
             seed = param_47;
-            float4 v = float4(choice.y, _3436, _3440, _3444);
+            float4 v = float4(choice.y, _642, _645, _648);
             float4 param_48 = v;
-            float3 _3450 = mxc_env_sample(param_48, param_49, v_2605);
+            float3 _652 = mxc_env_sample(param_48, param_49, v_192);
             lightPdf = param_49;
-            m = _3450;
+            m = _652;
             float3 param_50 = m;
             float param_51 = mxc_view.environment.z;
             imageWi = mxc_env_to_world(param_50, param_51);
-            bool _3459 = lightPdf > 0.0;
-            bool _3466;
-            if (_3459)
+            bool _661 = lightPdf > 0.0;
+            bool _668;
+            if (_661)
             {
-                _3466 = dot(imageWi, N) > 0.0;
+                _668 = dot(imageWi, N) > 0.0;
             }
             else
             {
-                _3466 = _3459;
+                _668 = _661;
             }
-            if (_3466)
+            if (_668)
             {
                 float3 param_52 = imageWi;
-                imageSeen = mxc_environment(param_52, mxc_env_radiance, mxc_env_radianceSmplr, mxc_view);
+                imageSeen = mxc_environment(param_52, mxc_view, mxc_env_radiance, mxc_env_radianceSmplr);
             }
         }
         for (int j = 0; j < (batchLights + batchSamples); j++)
@@ -1866,38 +1865,38 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
             bool use = true;
             if ((n == 0) || (j < batchLights))
             {
-                _3494 = 0;
+                _311 = 0;
             }
             else
             {
-                _3494 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+                _311 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
             }
-            int strategy = _3494;
+            int strategy = _311;
             if (strategy == 0)
             {
                 float4 light = mxc_view.lightVector[j];
                 incoming = mxc_view.lightRadiance[j].xyz;
-                bool _3519 = kinds == 1;
-                bool _3532;
-                if (!_3519)
+                bool _713 = kinds == 1;
+                bool _726;
+                if (!_713)
                 {
-                    bool _3525 = (kinds & 1) != 0;
-                    bool _3531;
-                    if (_3525)
+                    bool _719 = (kinds & 1) != 0;
+                    bool _725;
+                    if (_719)
                     {
-                        _3531 = light.w == 0.0;
+                        _725 = light.w == 0.0;
                     }
                     else
                     {
-                        _3531 = _3525;
+                        _725 = _719;
                     }
-                    _3532 = _3531;
+                    _726 = _725;
                 }
                 else
                 {
-                    _3532 = _3519;
+                    _726 = _713;
                 }
-                bool directional = _3532;
+                bool directional = _726;
                 if (directional)
                 {
                     float3 param_53 = light.xyz;
@@ -1910,17 +1909,17 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                     float d2 = fast::max(dot(d, d), 9.9999999392252902907785028219223e-09);
                     wi = d * rsqrt(d2);
                     incoming /= float3(d2);
-                    bool _3564 = (kinds & 4) != 0;
-                    bool _3570;
-                    if (_3564)
+                    bool _753 = (kinds & 4) != 0;
+                    bool _759;
+                    if (_753)
                     {
-                        _3570 = light.w == 2.0;
+                        _759 = light.w == 2.0;
                     }
                     else
                     {
-                        _3570 = _3564;
+                        _759 = _753;
                     }
-                    if (_3570)
+                    if (_759)
                     {
                         float4 spot = mxc_view.lightSpot[j];
                         incoming *= smoothstep(spot.w, mxc_view.lightRadiance[j].w, dot(-wi, spot.xyz));
@@ -1939,26 +1938,26 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                 {
                     wi = imageWi;
                     incoming = imageSeen;
-                    bool _3607 = lightPdf > 0.0;
-                    bool _3614;
-                    if (_3607)
+                    bool _794 = lightPdf > 0.0;
+                    bool _801;
+                    if (_794)
                     {
-                        _3614 = dot(imageWi, N) > 0.0;
+                        _801 = dot(imageWi, N) > 0.0;
                     }
                     else
                     {
-                        _3614 = _3607;
+                        _801 = _794;
                     }
-                    use = _3614;
+                    use = _801;
                 }
             }
             MxcClosure param_55 = c;
             float3 param_56 = wo;
             float3 param_57 = wi;
             bool param_58 = strategy != 0;
-            float3 _3627 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            float3 _807 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
             float pdf = param_59;
-            float3 f = _3627;
+            float3 f = _807;
             if (strategy == 0)
             {
                 radiance += (f * incoming);
@@ -1975,14 +1974,14 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                             float param_61 = mxc_view.environment.z;
                             float3 param_62 = mxc_env_to_map(param_60, param_61);
                             float param_63 = pdf;
-                            float param_64 = mxc_env_pdf(param_62, v_2605);
-                            _3653 = mxc_power_heuristic(param_63, param_64);
+                            float param_64 = mxc_env_pdf(param_62, v_192);
+                            _327 = mxc_power_heuristic(param_63, param_64);
                         }
                         else
                         {
-                            _3653 = 1.0;
+                            _327 = 1.0;
                         }
-                        float w_1 = _3653;
+                        float w_1 = _327;
                         sum += (((f * w_1) / float3(pdf)) * incoming);
                     }
                 }
@@ -1991,7 +1990,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                     if (use)
                     {
                         float3 param_65 = m;
-                        float param_66 = mxc_env_pdf(param_65, v_2605);
+                        float param_66 = mxc_env_pdf(param_65, v_192);
                         float param_67 = pdf;
                         float w_2 = mxc_power_heuristic(param_66, param_67);
                         sum += (((f * w_2) * incoming) / float3(lightPdf));

@@ -11,6 +11,23 @@
 // mxc_env_radiance {"register":"t0","sampler":"s0","space":1}
 // MxcEnvDistribution {"register":"t1","space":1}
 // ==== fragment (main) ====
+struct MxcGeometry
+{
+    float3 P;
+    float3 Pobj;
+    float3 N;
+    float3 Nobj;
+    float3 T;
+    float3 Tobj;
+    float3 B;
+    float3 Bobj;
+    float2 uv;
+    float4 color;
+    float4x4 objectToWorld;
+    float frame;
+    float time;
+};
+
 struct MxcLobe
 {
     int kind;
@@ -28,15 +45,6 @@ struct MxcLobe
     float3 film;
     float3 tau;
     float tauEta;
-};
-
-struct MxcLobeSample
-{
-    float3 wi;
-    float3 value;
-    float pdf;
-    bool delta;
-    bool valid;
 };
 
 struct MxcClosure
@@ -60,42 +68,32 @@ struct MxcSample
     bool valid;
 };
 
-struct MxcGeometry
+struct MxcLobeSample
 {
-    float3 P;
-    float3 Pobj;
-    float3 N;
-    float3 Nobj;
-    float3 T;
-    float3 Tobj;
-    float3 B;
-    float3 Bobj;
-    float2 uv;
-    float4 color;
-    float4x4 objectToWorld;
-    float frame;
-    float time;
+    float3 wi;
+    float3 value;
+    float pdf;
+    bool delta;
+    bool valid;
 };
 
 #ifndef SPIRV_CROSS_CONSTANT_ID_0
 #define SPIRV_CROSS_CONSTANT_ID_0 -1
 #endif
 static const int MXC_ENVIRONMENT = SPIRV_CROSS_CONSTANT_ID_0;
-static const bool _3229 = (MXC_ENVIRONMENT != (-1));
+static const bool _238 = (MXC_ENVIRONMENT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_1
 #define SPIRV_CROSS_CONSTANT_ID_1 -1
 #endif
 static const int MXC_LIGHT_COUNT = SPIRV_CROSS_CONSTANT_ID_1;
-static const bool _3248 = (MXC_LIGHT_COUNT != (-1));
+static const bool _240 = (MXC_LIGHT_COUNT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_2
 #define SPIRV_CROSS_CONSTANT_ID_2 -1
 #endif
 static const int MXC_LIGHT_KINDS = SPIRV_CROSS_CONSTANT_ID_2;
-static const bool _3260 = (MXC_LIGHT_KINDS != (-1));
-static const int _3261 = _3260 ? MXC_LIGHT_KINDS : 7;
+static const bool _242 = (MXC_LIGHT_KINDS != (-1));
+static const int _243 = _242 ? MXC_LIGHT_KINDS : 7;
 
-ByteAddressBuffer mxc_params : register(t2, space0);
-ByteAddressBuffer _2973 : register(t1, space1);
 cbuffer MxcView : register(b1, space0)
 {
     row_major float4x4 mxc_view_objectToWorld : packoffset(c0);
@@ -110,6 +108,8 @@ cbuffer MxcView : register(b1, space0)
     float4 mxc_view_environment : packoffset(c39);
 };
 
+ByteAddressBuffer mxc_params : register(t2, space0);
+ByteAddressBuffer _221 : register(t1, space1);
 Texture2D<float4> mxc_tables : register(t0, space0);
 SamplerState _mxc_tables_sampler : register(s0, space0);
 Texture2D<float4> mxc_texture_0 : register(t5, space0);
@@ -188,16 +188,16 @@ uint2 spvTextureSize(Texture2D<float4> Tex, uint Level, out uint Param)
 float3 mxc_safe_normalize(float3 v, float3 fallback)
 {
     float l2 = dot(v, v);
-    float3 _390;
+    float3 _964;
     if (l2 > 9.9999996826552253889678874634872e-21f)
     {
-        _390 = v * rsqrt(l2);
+        _964 = v * rsqrt(l2);
     }
     else
     {
-        _390 = fallback;
+        _964 = fallback;
     }
-    return _390;
+    return _964;
 }
 
 float3x3 mxc_frame(float3 N, float3 T)
@@ -264,31 +264,31 @@ float4 mxc_sample_image(Texture2D<float4> image, SamplerState _image_sampler, fl
     }
     float param = st.x;
     int param_1 = uaddress;
-    bool _1039 = mxc_address(param, param_1);
+    bool _1626 = mxc_address(param, param_1);
     st.x = param;
-    bool _1042 = !_1039;
-    bool _1055;
-    if (!_1042)
+    bool _1629 = !_1626;
+    bool _1640;
+    if (!_1629)
     {
         float param_2 = st.y;
         int param_3 = vaddress;
-        bool _1051 = mxc_address(param_2, param_3);
+        bool _1636 = mxc_address(param_2, param_3);
         st.y = param_2;
-        _1055 = !_1051;
+        _1640 = !_1636;
     }
     else
     {
-        _1055 = _1042;
+        _1640 = _1629;
     }
-    if (_1055)
+    if (_1640)
     {
         return fallback;
     }
     st.y = 1.0f - st.y;
     if (filtertype == 1)
     {
-        uint _1072_dummy_parameter;
-        float2 size = float2(int2(spvTextureSize(image, uint(0), _1072_dummy_parameter)));
+        uint _1654_dummy_parameter;
+        float2 size = float2(int2(spvTextureSize(image, uint(0), _1654_dummy_parameter)));
         return image.SampleLevel(_image_sampler, (min(floor(st * size), size - 1.0f.xx) + 0.5f.xx) / size, 0.0f);
     }
     return image.SampleGrad(_image_sampler, st, dx, dy);
@@ -303,10 +303,10 @@ float3 mxc_hsv_to_rgb(float3 hsv)
 float3 mxc_normalmap(float3 sampleValue, float2 scale, float3 N, float3 T, float3 B)
 {
     float3 v = (sampleValue * 2.0f) - 1.0f.xxx;
-    float3 _952 = v;
-    float2 _954 = _952.xy * scale;
-    v.x = _954.x;
-    v.y = _954.y;
+    float3 _1532 = v;
+    float2 _1534 = _1532.xy * scale;
+    v.x = _1534.x;
+    v.y = _1534.y;
     float3 param = ((T * v.x) + (B * v.y)) + (N * v.z);
     float3 param_1 = N;
     return mxc_safe_normalize(param, param_1);
@@ -329,16 +329,16 @@ bool mxc_index_matched(MxcLobe l)
 
 float mxc_lobe_eta(MxcLobe l, bool above)
 {
-    float _1238;
+    float _1829;
     if (above)
     {
-        _1238 = l.eta;
+        _1829 = l.eta;
     }
     else
     {
-        _1238 = 1.0f / l.eta;
+        _1829 = 1.0f / l.eta;
     }
-    return _1238;
+    return _1829;
 }
 
 float4 mxc_table_at(float mu, float x, float firstRow)
@@ -426,68 +426,68 @@ float3 mxc_lobe_fresnel(MxcLobe l, float _cosh, bool above)
 
 float3 mxc_lobe_ms_scale(MxcLobe l, float3 wo)
 {
-    bool _1459 = l.kind == 1;
-    bool _1466;
-    if (!_1459)
+    bool _2073 = l.kind == 1;
+    bool _2080;
+    if (!_2073)
     {
-        _1466 = l.kind == 2;
+        _2080 = l.kind == 2;
     }
     else
     {
-        _1466 = _1459;
+        _2080 = _2073;
     }
-    bool _1474;
-    if (!_1466)
+    bool _2087;
+    if (!_2080)
     {
-        _1474 = l.kind == 3;
+        _2087 = l.kind == 3;
     }
     else
     {
-        _1474 = _1466;
+        _2087 = _2080;
     }
-    bool microfacet = _1474;
-    bool _1476 = !microfacet;
-    bool _1484;
-    if (!_1476)
+    bool microfacet = _2087;
+    bool _2089 = !microfacet;
+    bool _2096;
+    if (!_2089)
     {
         float2 param = l.alpha;
-        _1484 = mxc_is_delta(param);
+        _2096 = mxc_is_delta(param);
     }
     else
     {
-        _1484 = _1476;
+        _2096 = _2089;
     }
-    if (_1484)
+    if (_2096)
     {
         return 1.0f.xxx;
     }
     float alpha = sqrt(l.alpha.x * l.alpha.y);
-    bool _1497 = l.kind == 1;
-    bool _1503;
-    if (_1497)
+    bool _2107 = l.kind == 1;
+    bool _2112;
+    if (_2107)
     {
         MxcLobe param_1 = l;
-        _1503 = mxc_index_matched(param_1);
+        _2112 = mxc_index_matched(param_1);
     }
     else
     {
-        _1503 = _1497;
+        _2112 = _2107;
     }
-    if (_1503)
+    if (_2112)
     {
         return 1.0f.xxx;
     }
-    bool _1509 = l.kind == 1;
-    bool _1517;
-    if (_1509)
+    bool _2117 = l.kind == 1;
+    bool _2124;
+    if (_2117)
     {
-        _1517 = (l.mode & 4) == 0;
+        _2124 = (l.mode & 4) == 0;
     }
     else
     {
-        _1517 = _1509;
+        _2124 = _2117;
     }
-    if (_1517)
+    if (_2124)
     {
         MxcLobe param_2 = l;
         bool param_3 = wo.z >= 0.0f;
@@ -510,16 +510,16 @@ float3 mxc_lobe_ms_scale(MxcLobe l, float3 wo)
 
 float mxc_dielectric_albedo(float mu, float alpha, float eta)
 {
-    float _1192;
+    float _1779;
     if (eta >= 1.0f)
     {
-        _1192 = eta;
+        _1779 = eta;
     }
     else
     {
-        _1192 = 1.0f / max(eta, 0.001000000047497451305389404296875f);
+        _1779 = 1.0f / max(eta, 0.001000000047497451305389404296875f);
     }
-    float e = _1192;
+    float e = _1779;
     float param = mu;
     float param_1 = alpha;
     float param_2 = e;
@@ -538,16 +538,16 @@ float mxc_fon_albedo(float sigma, float mu)
     float param = 1.0f - (c * c);
     float s = mxc_safe_sqrt(param);
     float theta = acos(c);
-    float _1414;
+    float _1995;
     if (c > 9.9999997473787516355514526367188e-05f)
     {
-        _1414 = (1.0f - ((s * s) * s)) / c;
+        _1995 = (1.0f - ((s * s) * s)) / c;
     }
     else
     {
-        _1414 = 1.5f * c;
+        _1995 = 1.5f * c;
     }
-    float tail = _1414;
+    float tail = _1995;
     float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875f * s) * tail)) - (0.666666686534881591796875f * s);
     return a + (((sigma * a) * g) * 0.3183098733425140380859375f);
 }
@@ -555,40 +555,40 @@ float mxc_fon_albedo(float sigma, float mu)
 float3 mxc_lobe_albedo_scaled(MxcLobe l, float3 wo, float3 ms)
 {
     float mu = clamp(wo.z, 0.0f, 1.0f);
-    bool _1580 = l.kind == 1;
-    bool _1587;
-    if (!_1580)
+    bool _2199 = l.kind == 1;
+    bool _2206;
+    if (!_2199)
     {
-        _1587 = l.kind == 2;
+        _2206 = l.kind == 2;
     }
     else
     {
-        _1587 = _1580;
+        _2206 = _2199;
     }
-    bool _1594;
-    if (!_1587)
+    bool _2213;
+    if (!_2206)
     {
-        _1594 = l.kind == 3;
+        _2213 = l.kind == 3;
     }
     else
     {
-        _1594 = _1587;
+        _2213 = _2206;
     }
-    if (_1594)
+    if (_2213)
     {
         float alpha = sqrt(l.alpha.x * l.alpha.y);
-        bool _1606 = l.kind == 1;
-        bool _1614;
-        if (_1606)
+        bool _2224 = l.kind == 1;
+        bool _2231;
+        if (_2224)
         {
             float2 param = l.alpha;
-            _1614 = !mxc_is_delta(param);
+            _2231 = !mxc_is_delta(param);
         }
         else
         {
-            _1614 = _1606;
+            _2231 = _2224;
         }
-        if (_1614)
+        if (_2231)
         {
             float param_1 = mu;
             float param_2 = alpha;
@@ -607,16 +607,16 @@ float3 mxc_lobe_albedo_scaled(MxcLobe l, float3 wo, float3 ms)
         float param_10 = 0.0f;
         bool param_11 = true;
         float3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
-        float3 _1659;
+        float3 _2187;
         if (l.kind == 1)
         {
-            _1659 = l.c0;
+            _2187 = l.c0;
         }
         else
         {
-            _1659 = 1.0f.xxx;
+            _2187 = 1.0f.xxx;
         }
-        float3 tint = _1659;
+        float3 tint = _2187;
         float2 param_12 = l.alpha;
         if (mxc_is_delta(param_12))
         {
@@ -652,17 +652,17 @@ float3 mxc_lobe_albedo(MxcLobe l, float3 wo)
 
 float3 mxc_lobe_layer_albedo(MxcLobe l, float3 wo)
 {
-    bool _1742 = l.kind == 9;
-    bool _1749;
-    if (!_1742)
+    bool _2338 = l.kind == 9;
+    bool _2345;
+    if (!_2338)
     {
-        _1749 = l.kind == 10;
+        _2345 = l.kind == 10;
     }
     else
     {
-        _1749 = _1742;
+        _2345 = _2338;
     }
-    if (_1749)
+    if (_2345)
     {
         MxcLobe white = l;
         white.c0 = 1.0f.xxx;
@@ -856,35 +856,35 @@ void mxc_material_closure(MxcGeometry g, float3 wo, inout MxcClosure c)
 
 int mxc_light_count()
 {
-    int _3249;
-    if (_3248)
+    int _3766;
+    if (_240)
     {
-        _3249 = MXC_LIGHT_COUNT;
+        _3766 = MXC_LIGHT_COUNT;
     }
     else
     {
-        _3249 = mxc_view_counts.x;
+        _3766 = mxc_view_counts.x;
     }
-    return min(_3249, 8);
+    return min(_3766, 8);
 }
 
 int mxc_light_kinds()
 {
-    return _3261;
+    return _243;
 }
 
 int mxc_environment_code()
 {
-    int _3230;
-    if (_3229)
+    int _3758;
+    if (_238)
     {
-        _3230 = MXC_ENVIRONMENT;
+        _3758 = MXC_ENVIRONMENT;
     }
     else
     {
-        _3230 = mxc_view_counts.y;
+        _3758 = mxc_view_counts.y;
     }
-    return _3230;
+    return _3758;
 }
 
 float mxc_uniform(inout uint seed)
@@ -961,36 +961,36 @@ float mxc_ggx_g2(float3 wo, float3 wi, float2 alpha)
 {
     float3 param = wo;
     float2 param_1 = alpha;
-    float _691 = mxc_ggx_lambda(param, param_1);
+    float _1268 = mxc_ggx_lambda(param, param_1);
     float3 param_2 = wi;
     float2 param_3 = alpha;
-    float _697 = mxc_ggx_lambda(param_2, param_3);
-    return 1.0f / ((1.0f + _691) + _697);
+    float _1272 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0f / ((1.0f + _1268) + _1272);
 }
 
 float3 mxc_microfacet_reflect(MxcLobe l, float3 wo, float3 wi)
 {
-    bool _1279 = wo.z <= 0.0f;
-    bool _1286;
-    if (!_1279)
+    bool _1888 = wo.z <= 0.0f;
+    bool _1895;
+    if (!_1888)
     {
-        _1286 = wi.z <= 0.0f;
+        _1895 = wi.z <= 0.0f;
     }
     else
     {
-        _1286 = _1279;
+        _1895 = _1888;
     }
-    bool _1295;
-    if (!_1286)
+    bool _1902;
+    if (!_1895)
     {
         float2 param = l.alpha;
-        _1295 = mxc_is_delta(param);
+        _1902 = mxc_is_delta(param);
     }
     else
     {
-        _1295 = _1286;
+        _1902 = _1895;
     }
-    if (_1295)
+    if (_1902)
     {
         return 0.0f.xxx;
     }
@@ -1005,27 +1005,27 @@ float3 mxc_microfacet_reflect(MxcLobe l, float3 wo, float3 wi)
     }
     float3 param_4 = h;
     float2 param_5 = l.alpha;
-    float _1331 = mxc_ggx_d(param_4, param_5);
+    float _1928 = mxc_ggx_d(param_4, param_5);
     float3 param_6 = wo;
     float3 param_7 = wi;
     float2 param_8 = l.alpha;
-    return ((f * _1331) * mxc_ggx_g2(param_6, param_7, param_8)) / (4.0f * wo.z).xxx;
+    return ((f * _1928) * mxc_ggx_g2(param_6, param_7, param_8)) / (4.0f * wo.z).xxx;
 }
 
 float mxc_fon(float sigma, float3 wo, float3 wi)
 {
     float a = 1.0f / (1.0f + (0.2877933979034423828125f * sigma));
     float s = dot(wi, wo) - (wi.z * wo.z);
-    float _1369;
+    float _1949;
     if (s > 0.0f)
     {
-        _1369 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07f);
+        _1949 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07f);
     }
     else
     {
-        _1369 = 1.0f;
+        _1949 = 1.0f;
     }
-    float t = _1369;
+    float t = _1949;
     return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375f;
 }
 
@@ -1061,17 +1061,17 @@ float3 mxc_lobe_eval(MxcLobe l, float3 wo, float3 wi)
         case 2:
         case 3:
         {
-            bool _1823 = l.kind == 3;
-            bool _1830;
-            if (_1823)
+            bool _2419 = l.kind == 3;
+            bool _2426;
+            if (_2419)
             {
-                _1830 = (l.mode & 1) == 0;
+                _2426 = (l.mode & 1) == 0;
             }
             else
             {
-                _1830 = _1823;
+                _2426 = _2419;
             }
-            if (_1830)
+            if (_2426)
             {
                 return 0.0f.xxx;
             }
@@ -1082,29 +1082,29 @@ float3 mxc_lobe_eval(MxcLobe l, float3 wo, float3 wi)
         }
         case 4:
         {
-            bool _1844 = wo.z > 0.0f;
-            bool _1850;
-            if (_1844)
+            bool _2435 = wo.z > 0.0f;
+            bool _2441;
+            if (_2435)
             {
-                _1850 = wi.z > 0.0f;
+                _2441 = wi.z > 0.0f;
             }
             else
             {
-                _1850 = _1844;
+                _2441 = _2435;
             }
-            float3 _1851;
-            if (_1850)
+            float3 _2371;
+            if (_2441)
             {
                 float param_9 = l.p0;
                 float3 param_10 = wo;
                 float3 param_11 = wi;
-                _1851 = (l.c0 * mxc_fon(param_9, param_10, param_11)) * wi.z;
+                _2371 = (l.c0 * mxc_fon(param_9, param_10, param_11)) * wi.z;
             }
             else
             {
-                _1851 = 0.0f.xxx;
+                _2371 = 0.0f.xxx;
             }
-            return _1851;
+            return _2371;
         }
         default:
         {
@@ -1117,8 +1117,8 @@ float mxc_ggx_g1(float3 v, float2 alpha)
 {
     float3 param = v;
     float2 param_1 = alpha;
-    float _682 = mxc_ggx_lambda(param, param_1);
-    return 1.0f / (1.0f + _682);
+    float _1254 = mxc_ggx_lambda(param, param_1);
+    return 1.0f / (1.0f + _1254);
 }
 
 float mxc_ggx_pdf_vndf(float3 wo, float3 m, float2 alpha)
@@ -1131,8 +1131,8 @@ float mxc_ggx_pdf_vndf(float3 wo, float3 m, float2 alpha)
     float2 param_1 = alpha;
     float3 param_2 = m;
     float2 param_3 = alpha;
-    float _848 = mxc_ggx_d(param_2, param_3);
-    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0f)) * _848) / wo.z;
+    float _1427 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0f)) * _1427) / wo.z;
 }
 
 float mxc_mean(float3 c)
@@ -1159,26 +1159,26 @@ float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
                 return 0.0f;
             }
             bool above = wo.z > 0.0f;
-            float3 _1892;
+            float3 _2465;
             if (above)
             {
-                _1892 = wo;
+                _2465 = wo;
             }
             else
             {
-                _1892 = -wo;
+                _2465 = -wo;
             }
-            float3 o = _1892;
-            float3 _1902;
+            float3 o = _2465;
+            float3 _2467;
             if (above)
             {
-                _1902 = wi;
+                _2467 = wi;
             }
             else
             {
-                _1902 = -wi;
+                _2467 = -wi;
             }
-            float3 i = _1902;
+            float3 i = _2467;
             if (i.z > 0.0f)
             {
                 float3 h = normalize(o + i);
@@ -1200,42 +1200,42 @@ float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
                 float3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
                 float fr = mxc_mean(param_7);
                 MxcLobe param_8 = l;
-                bool _1965 = mxc_lobe_transmits(param_8);
-                bool _1972;
-                if (_1965)
+                bool _2567 = mxc_lobe_transmits(param_8);
+                bool _2574;
+                if (_2567)
                 {
-                    _1972 = (l.mode & 1) != 0;
+                    _2574 = (l.mode & 1) != 0;
                 }
                 else
                 {
-                    _1972 = _1965;
+                    _2574 = _2567;
                 }
-                return p * (_1972 ? fr : 1.0f);
+                return p * (_2574 ? fr : 1.0f);
             }
             return 0.0f;
         }
         default:
         {
-            bool _1980 = wo.z > 0.0f;
-            bool _1986;
-            if (_1980)
+            bool _2487 = wo.z > 0.0f;
+            bool _2493;
+            if (_2487)
             {
-                _1986 = wi.z > 0.0f;
+                _2493 = wi.z > 0.0f;
             }
             else
             {
-                _1986 = _1980;
+                _2493 = _2487;
             }
-            float _1987;
-            if (_1986)
+            float _2479;
+            if (_2493)
             {
-                _1987 = wi.z * 0.3183098733425140380859375f;
+                _2479 = wi.z * 0.3183098733425140380859375f;
             }
             else
             {
-                _1987 = 0.0f;
+                _2479 = 0.0f;
             }
-            return _1987;
+            return _2479;
         }
     }
 }
@@ -1246,16 +1246,16 @@ float3 mxc_ggx_sample_vndf(float3 wo, inout float2 alpha, float2 u)
     alpha = mxc_rough_alpha(param);
     float3 vh = normalize(float3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lensq = (vh.x * vh.x) + (vh.y * vh.y);
-    float3 _735;
+    float3 _1284;
     if (lensq > 0.0f)
     {
-        _735 = float3(-vh.y, vh.x, 0.0f) * rsqrt(lensq);
+        _1284 = float3(-vh.y, vh.x, 0.0f) * rsqrt(lensq);
     }
     else
     {
-        _735 = float3(1.0f, 0.0f, 0.0f);
+        _1284 = float3(1.0f, 0.0f, 0.0f);
     }
-    float3 t1 = _735;
+    float3 t1 = _1284;
     float3 t2 = cross(vh, t1);
     float r = sqrt(u.x);
     float phi = 6.283185482025146484375f * u.y;
@@ -1284,94 +1284,94 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, float3 wo, float3 u)
         case 3:
         {
             bool above = wo.z > 0.0f;
-            float3 _2017;
+            float3 _2586;
             if (above)
             {
-                _2017 = wo;
+                _2586 = wo;
             }
             else
             {
-                _2017 = -wo;
+                _2586 = -wo;
             }
-            float3 o = _2017;
+            float3 o = _2586;
             if (o.z <= 0.0f)
             {
                 return s;
             }
             float2 param = l.alpha;
             bool delta = mxc_is_delta(param);
-            float3 _2039;
+            float3 _2590;
             if (delta)
             {
-                _2039 = float3(0.0f, 0.0f, 1.0f);
+                _2590 = float3(0.0f, 0.0f, 1.0f);
             }
             else
             {
                 float3 param_1 = o;
                 float2 param_2 = l.alpha;
                 float2 param_3 = u.xy;
-                float3 _2051 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
-                _2039 = _2051;
+                float3 _2691 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2590 = _2691;
             }
-            float3 m = _2039;
+            float3 m = _2590;
             float hm = dot(o, m);
-            bool _2060 = l.kind == 1;
-            bool _2067;
-            if (!_2060)
+            bool _2698 = l.kind == 1;
+            bool _2705;
+            if (!_2698)
             {
-                _2067 = l.kind == 3;
+                _2705 = l.kind == 3;
             }
             else
             {
-                _2067 = _2060;
+                _2705 = _2698;
             }
-            bool _2073;
-            if (_2067)
+            bool _2710;
+            if (_2705)
             {
                 MxcLobe param_4 = l;
-                _2073 = mxc_lobe_transmits(param_4);
+                _2710 = mxc_lobe_transmits(param_4);
             }
             else
             {
-                _2073 = _2067;
+                _2710 = _2705;
             }
-            bool transmits = _2073;
-            bool _2077 = l.kind == 2;
-            bool _2085;
-            if (!_2077)
+            bool transmits = _2710;
+            bool _2713 = l.kind == 2;
+            bool _2721;
+            if (!_2713)
             {
-                _2085 = (l.mode & 1) != 0;
+                _2721 = (l.mode & 1) != 0;
             }
             else
             {
-                _2085 = _2077;
+                _2721 = _2713;
             }
-            bool reflects = _2085;
+            bool reflects = _2721;
             MxcLobe param_5 = l;
             float param_6 = max(hm, 0.0f);
             bool param_7 = above;
             float3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
-            float _2097;
+            float _2603;
             if (transmits)
             {
                 float3 param_8 = f;
-                _2097 = mxc_mean(param_8);
+                _2603 = mxc_mean(param_8);
             }
             else
             {
-                _2097 = 1.0f;
+                _2603 = 1.0f;
             }
-            float fr = _2097;
-            float _2107;
+            float fr = _2603;
+            float _2606;
             if (transmits)
             {
-                _2107 = reflects ? fr : 0.0f;
+                _2606 = reflects ? fr : 0.0f;
             }
             else
             {
-                _2107 = 1.0f;
+                _2606 = 1.0f;
             }
-            float pReflect = _2107;
+            float pReflect = _2606;
             if (u.z < pReflect)
             {
                 float3 i = reflect(-o, m);
@@ -1379,38 +1379,38 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, float3 wo, float3 u)
                 {
                     return s;
                 }
-                float3 _2134;
+                float3 _2608;
                 if (above)
                 {
-                    _2134 = i;
+                    _2608 = i;
                 }
                 else
                 {
-                    _2134 = -i;
+                    _2608 = -i;
                 }
-                s.wi = _2134;
+                s.wi = _2608;
                 s.delta = delta;
                 if (delta)
                 {
-                    float3 _2152;
+                    float3 _2610;
                     if (l.kind == 1)
                     {
-                        float3 _2156;
+                        float3 _2611;
                         if (above)
                         {
-                            _2156 = l.c0;
+                            _2611 = l.c0;
                         }
                         else
                         {
-                            _2156 = 1.0f.xxx;
+                            _2611 = 1.0f.xxx;
                         }
-                        _2152 = _2156;
+                        _2610 = _2611;
                     }
                     else
                     {
-                        _2152 = 1.0f.xxx;
+                        _2610 = 1.0f.xxx;
                     }
-                    float3 tint = _2152;
+                    float3 tint = _2610;
                     s.value = f * tint;
                     s.pdf = pReflect;
                 }
@@ -1578,16 +1578,16 @@ float3 mxc_env_to_map(float3 w, float angle)
 
 float2 mxc_env_uv(float3 d)
 {
-    float _2926;
+    float _3468;
     if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13f)
     {
-        _2926 = 0.5f + (atan2(d.x, -d.z) * 0.15915493667125701904296875f);
+        _3468 = 0.5f + (atan2(d.x, -d.z) * 0.15915493667125701904296875f);
     }
     else
     {
-        _2926 = 0.5f;
+        _3468 = 0.5f;
     }
-    float u = _2926;
+    float u = _3468;
     float v = atan2(length(d.xz), d.y) * 0.3183098733425140380859375f;
     return float2(u, v);
 }
@@ -1624,7 +1624,7 @@ uint mxc_env_cell(float3 d)
 {
     float3 param = d;
     float2 uv = mxc_env_uv(param);
-    uint2 size = max(_2973.Load4(0).xy, uint2(1u, 1u));
+    uint2 size = max(_221.Load4(0).xy, uint2(1u, 1u));
     uint i = min(uint(max(uv.x, 0.0f) * float(size.x)), (size.x - 1u));
     uint j = min(uint(max(uv.y, 0.0f) * float(size.y)), (size.y - 1u));
     return (j * size.x) + i;
@@ -1633,36 +1633,36 @@ uint mxc_env_cell(float3 d)
 float mxc_env_pdf(float3 d)
 {
     float3 param = d;
-    return asfloat(_2973.Load(mxc_env_cell(param) * 16 + 24));
+    return asfloat(_221.Load(mxc_env_cell(param) * 16 + 24));
 }
 
 float mxc_power_heuristic(float a, float b)
 {
     float a2 = a * a;
     float b2 = b * b;
-    float _3358;
+    float _3858;
     if ((a2 + b2) > 0.0f)
     {
-        _3358 = a2 / (a2 + b2);
+        _3858 = a2 / (a2 + b2);
     }
     else
     {
-        _3358 = 0.0f;
+        _3858 = 0.0f;
     }
-    return _3358;
+    return _3858;
 }
 
 float3 mxc_env_sample(float4 u, out float pdf)
 {
-    uint2 size = max(_2973.Load4(0).xy, uint2(1u, 1u));
+    uint2 size = max(_221.Load4(0).xy, uint2(1u, 1u));
     uint n = size.x * size.y;
     uint k = min(uint(u.x * float(n)), (n - 1u));
-    float4 cell = asfloat(_2973.Load4(k * 16 + 16));
+    float4 cell = asfloat(_221.Load4(k * 16 + 16));
     if (u.y >= cell.x)
     {
         k = min(asuint(cell.y), (n - 1u));
     }
-    pdf = asfloat(_2973.Load(k * 16 + 24));
+    pdf = asfloat(_221.Load(k * 16 + 24));
     uint i = k % size.x;
     uint j = k / size.x;
     float phi = 6.283185482025146484375f * (((float(i) + u.z) / float(size.x)) - 0.5f);
@@ -1715,16 +1715,16 @@ float3 mxc_closure_eval_pdf(MxcClosure c, float3 wo, float3 wi, bool wantPdf, in
             p += (c.choice[k] * mxc_lobe_pdf(param_11, param_12, param_13));
         }
     }
-    float _2415;
+    float _2937;
     if (c.choiceTotal > 0.0f)
     {
-        _2415 = p / c.choiceTotal;
+        _2937 = p / c.choiceTotal;
     }
     else
     {
-        _2415 = 0.0f;
+        _2937 = 0.0f;
     }
-    pdf = _2415;
+    pdf = _2937;
     return f;
 }
 
@@ -1783,16 +1783,16 @@ void frag_main()
     int lights = mxc_light_count();
     int kinds = mxc_light_kinds();
     bool image = mxc_environment_code() == 3;
-    int _3561;
+    int _276;
     if (mxc_environment_code() != 0)
     {
-        _3561 = max(mxc_view_counts.w, 1);
+        _276 = max(mxc_view_counts.w, 1);
     }
     else
     {
-        _3561 = 0;
+        _276 = 0;
     }
-    int n = _3561;
+    int n = _276;
     uint param_17 = uint(mxc_view_counts.z);
     uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
     uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
@@ -1801,54 +1801,54 @@ void frag_main()
     uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
     uint pixel = mxc_pcg(param_21);
     uint param_22 = pixel;
-    float _3604 = mxc_uniform(param_22);
+    float _510 = mxc_uniform(param_22);
     pixel = param_22;
     uint param_23 = pixel;
-    float _3608 = mxc_uniform(param_23);
+    float _514 = mxc_uniform(param_23);
     pixel = param_23;
     uint param_24 = pixel;
-    float _3612 = mxc_uniform(param_24);
+    float _517 = mxc_uniform(param_24);
     pixel = param_24;
     uint param_25 = pixel;
-    float _3616 = mxc_uniform(param_25);
+    float _520 = mxc_uniform(param_25);
     pixel = param_25;
-    float4 shift = float4(_3604, _3608, _3612, _3616);
+    float4 shift = float4(_510, _514, _517, _520);
     float3 sum = 0.0f.xxx;
-    int _3642;
+    int _293;
     MxcSample smp;
-    float3 _3717;
-    float3 _3721;
-    float _3763;
+    float3 _310;
+    float3 _311;
+    float _316;
     float param_49;
-    int _3865;
+    int _340;
     float param_59;
-    float _4024;
+    float _356;
     for (int b = 0; b < max(n, int(lights > 0)); b++)
     {
         int batchLights = (b == 0) ? lights : 0;
         if (b < n)
         {
-            _3642 = 1 + int(image);
+            _293 = 1 + int(image);
         }
         else
         {
-            _3642 = 0;
+            _293 = 0;
         }
-        int batchSamples = _3642;
+        int batchSamples = _293;
         uint index = (uint(mxc_view_counts.z) * uint(max(n, 1))) + uint(b);
         uint param_26 = index;
         uint param_27 = 2u;
-        float _3665 = mxc_radical_inverse(param_26, param_27);
+        float _560 = mxc_radical_inverse(param_26, param_27);
         uint param_28 = index;
         uint param_29 = 3u;
-        float _3669 = mxc_radical_inverse(param_28, param_29);
+        float _563 = mxc_radical_inverse(param_28, param_29);
         uint param_30 = index;
         uint param_31 = 5u;
-        float _3674 = mxc_radical_inverse(param_30, param_31);
+        float _565 = mxc_radical_inverse(param_30, param_31);
         uint param_32 = index;
         uint param_33 = 7u;
-        float _3678 = mxc_radical_inverse(param_32, param_33);
-        float4 choice = frac(float4(_3665, _3669, _3674, _3678) + shift);
+        float _567 = mxc_radical_inverse(param_32, param_33);
+        float4 choice = frac(float4(_560, _563, _565, _567) + shift);
         smp.valid = false;
         smp.evaluate = false;
         smp.delta = false;
@@ -1867,58 +1867,58 @@ void frag_main()
         {
             if (above)
             {
-                _3721 = smp.wi;
+                _311 = smp.wi;
             }
             else
             {
                 float3 param_37 = -wo;
                 float3 param_38 = smp.wi;
-                _3721 = mxc_exit_direction(param_37, param_38);
+                _311 = mxc_exit_direction(param_37, param_38);
             }
-            float3 param_39 = _3721;
-            _3717 = mxc_environment(param_39);
+            float3 param_39 = _311;
+            _310 = mxc_environment(param_39);
         }
         else
         {
-            _3717 = 0.0f.xxx;
+            _310 = 0.0f.xxx;
         }
-        float3 seen = _3717;
-        bool _3744 = (b < n) && smp.valid;
-        bool _3750;
-        if (_3744)
+        float3 seen = _310;
+        bool _625 = (b < n) && smp.valid;
+        bool _631;
+        if (_625)
         {
-            _3750 = !smp.evaluate;
+            _631 = !smp.evaluate;
         }
         else
         {
-            _3750 = _3744;
+            _631 = _625;
         }
-        if (_3750)
+        if (_631)
         {
-            bool _3756 = image && above;
-            bool _3762;
-            if (_3756)
+            bool _636 = image && above;
+            bool _642;
+            if (_636)
             {
-                _3762 = !smp.delta;
+                _642 = !smp.delta;
             }
             else
             {
-                _3762 = _3756;
+                _642 = _636;
             }
-            if (_3762)
+            if (_642)
             {
                 float3 param_40 = smp.wi;
                 float param_41 = mxc_view_environment.z;
                 float3 param_42 = mxc_env_to_map(param_40, param_41);
                 float param_43 = smp.pdf;
                 float param_44 = mxc_env_pdf(param_42);
-                _3763 = mxc_power_heuristic(param_43, param_44);
+                _316 = mxc_power_heuristic(param_43, param_44);
             }
             else
             {
-                _3763 = 1.0f;
+                _316 = 1.0f;
             }
-            float w = _3763;
+            float w = _316;
             sum += ((smp.weight * w) * seen);
         }
         float3 m = 0.0f.xxx;
@@ -1928,33 +1928,33 @@ void frag_main()
         if (image && (b < n))
         {
             uint param_45 = seed;
-            float _3807 = mxc_uniform(param_45);
+            float _678 = mxc_uniform(param_45);
             seed = param_45;
             uint param_46 = seed;
-            float _3811 = mxc_uniform(param_46);
+            float _681 = mxc_uniform(param_46);
             seed = param_46;
             uint param_47 = seed;
-            float _3815 = mxc_uniform(param_47);
+            float _684 = mxc_uniform(param_47);
             seed = param_47;
-            float4 v = float4(choice.y, _3807, _3811, _3815);
+            float4 v = float4(choice.y, _678, _681, _684);
             float4 param_48 = v;
-            float3 _3821 = mxc_env_sample(param_48, param_49);
+            float3 _688 = mxc_env_sample(param_48, param_49);
             lightPdf = param_49;
-            m = _3821;
+            m = _688;
             float3 param_50 = m;
             float param_51 = mxc_view_environment.z;
             imageWi = mxc_env_to_world(param_50, param_51);
-            bool _3830 = lightPdf > 0.0f;
-            bool _3837;
-            if (_3830)
+            bool _697 = lightPdf > 0.0f;
+            bool _704;
+            if (_697)
             {
-                _3837 = dot(imageWi, N) > 0.0f;
+                _704 = dot(imageWi, N) > 0.0f;
             }
             else
             {
-                _3837 = _3830;
+                _704 = _697;
             }
-            if (_3837)
+            if (_704)
             {
                 float3 param_52 = imageWi;
                 imageSeen = mxc_environment(param_52);
@@ -1967,38 +1967,38 @@ void frag_main()
             bool use = true;
             if ((n == 0) || (j < batchLights))
             {
-                _3865 = 0;
+                _340 = 0;
             }
             else
             {
-                _3865 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+                _340 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
             }
-            int strategy = _3865;
+            int strategy = _340;
             if (strategy == 0)
             {
                 float4 light = mxc_view_lightVector[j];
                 incoming = mxc_view_lightRadiance[j].xyz;
-                bool _3890 = kinds == 1;
-                bool _3903;
-                if (!_3890)
+                bool _749 = kinds == 1;
+                bool _762;
+                if (!_749)
                 {
-                    bool _3896 = (kinds & 1) != 0;
-                    bool _3902;
-                    if (_3896)
+                    bool _755 = (kinds & 1) != 0;
+                    bool _761;
+                    if (_755)
                     {
-                        _3902 = light.w == 0.0f;
+                        _761 = light.w == 0.0f;
                     }
                     else
                     {
-                        _3902 = _3896;
+                        _761 = _755;
                     }
-                    _3903 = _3902;
+                    _762 = _761;
                 }
                 else
                 {
-                    _3903 = _3890;
+                    _762 = _749;
                 }
-                bool directional = _3903;
+                bool directional = _762;
                 if (directional)
                 {
                     float3 param_53 = light.xyz;
@@ -2011,17 +2011,17 @@ void frag_main()
                     float d2 = max(dot(d, d), 9.9999999392252902907785028219223e-09f);
                     wi = d * rsqrt(d2);
                     incoming /= d2.xxx;
-                    bool _3935 = (kinds & 4) != 0;
-                    bool _3941;
-                    if (_3935)
+                    bool _789 = (kinds & 4) != 0;
+                    bool _795;
+                    if (_789)
                     {
-                        _3941 = light.w == 2.0f;
+                        _795 = light.w == 2.0f;
                     }
                     else
                     {
-                        _3941 = _3935;
+                        _795 = _789;
                     }
-                    if (_3941)
+                    if (_795)
                     {
                         float4 spot = mxc_view_lightSpot[j];
                         incoming *= smoothstep(spot.w, mxc_view_lightRadiance[j].w, dot(-wi, spot.xyz));
@@ -2040,26 +2040,26 @@ void frag_main()
                 {
                     wi = imageWi;
                     incoming = imageSeen;
-                    bool _3978 = lightPdf > 0.0f;
-                    bool _3985;
-                    if (_3978)
+                    bool _830 = lightPdf > 0.0f;
+                    bool _837;
+                    if (_830)
                     {
-                        _3985 = dot(imageWi, N) > 0.0f;
+                        _837 = dot(imageWi, N) > 0.0f;
                     }
                     else
                     {
-                        _3985 = _3978;
+                        _837 = _830;
                     }
-                    use = _3985;
+                    use = _837;
                 }
             }
             MxcClosure param_55 = c;
             float3 param_56 = wo;
             float3 param_57 = wi;
             bool param_58 = strategy != 0;
-            float3 _3998 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            float3 _843 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
             float pdf = param_59;
-            float3 f = _3998;
+            float3 f = _843;
             if (strategy == 0)
             {
                 radiance += (f * incoming);
@@ -2077,13 +2077,13 @@ void frag_main()
                             float3 param_62 = mxc_env_to_map(param_60, param_61);
                             float param_63 = pdf;
                             float param_64 = mxc_env_pdf(param_62);
-                            _4024 = mxc_power_heuristic(param_63, param_64);
+                            _356 = mxc_power_heuristic(param_63, param_64);
                         }
                         else
                         {
-                            _4024 = 1.0f;
+                            _356 = 1.0f;
                         }
-                        float w_1 = _4024;
+                        float w_1 = _356;
                         sum += (((f * w_1) / pdf.xxx) * incoming);
                     }
                 }

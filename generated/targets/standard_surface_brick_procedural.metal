@@ -64,6 +64,23 @@ inline Tx mod(Tx x, Ty y)
     return x - y * floor(x / y);
 }
 
+struct MxcGeometry
+{
+    float3 P;
+    float3 Pobj;
+    float3 N;
+    float3 Nobj;
+    float3 T;
+    float3 Tobj;
+    float3 B;
+    float3 Bobj;
+    float2 uv;
+    float4 color;
+    float4x4 objectToWorld;
+    float frame;
+    float time;
+};
+
 struct MxcLobe
 {
     int kind;
@@ -81,15 +98,6 @@ struct MxcLobe
     float3 film;
     float3 tau;
     float tauEta;
-};
-
-struct MxcLobeSample
-{
-    float3 wi;
-    float3 value;
-    float pdf;
-    short delta;
-    short valid;
 };
 
 struct MxcClosure
@@ -113,40 +121,6 @@ struct MxcSample
     short valid;
 };
 
-struct MxcGeometry
-{
-    float3 P;
-    float3 Pobj;
-    float3 N;
-    float3 Nobj;
-    float3 T;
-    float3 Tobj;
-    float3 B;
-    float3 Bobj;
-    float2 uv;
-    float4 color;
-    float4x4 objectToWorld;
-    float frame;
-    float time;
-};
-
-struct MxcParameters
-{
-    uint missing_textures;
-    float frame;
-    float time;
-};
-
-struct MxcEnvDistribution
-{
-    uint4 mxc_env_size;
-    float4 mxc_env_cells[1];
-};
-
-constant int MXC_ENVIRONMENT_tmp [[function_constant(0)]];
-constant int MXC_ENVIRONMENT = is_function_constant_defined(MXC_ENVIRONMENT_tmp) ? MXC_ENVIRONMENT_tmp : -1;
-constant bool _3229 = (MXC_ENVIRONMENT != (-1));
-
 struct MxcView
 {
     float4x4 objectToWorld;
@@ -161,13 +135,38 @@ struct MxcView
     float4 environment;
 };
 
+struct MxcParameters
+{
+    uint missing_textures;
+    float frame;
+    float time;
+};
+
+struct MxcLobeSample
+{
+    float3 wi;
+    float3 value;
+    float pdf;
+    short delta;
+    short valid;
+};
+
+struct MxcEnvDistribution
+{
+    uint4 mxc_env_size;
+    float4 mxc_env_cells[1];
+};
+
+constant int MXC_ENVIRONMENT_tmp [[function_constant(0)]];
+constant int MXC_ENVIRONMENT = is_function_constant_defined(MXC_ENVIRONMENT_tmp) ? MXC_ENVIRONMENT_tmp : -1;
+constant bool _238 = (MXC_ENVIRONMENT != (-1));
 constant int MXC_LIGHT_COUNT_tmp [[function_constant(1)]];
 constant int MXC_LIGHT_COUNT = is_function_constant_defined(MXC_LIGHT_COUNT_tmp) ? MXC_LIGHT_COUNT_tmp : -1;
-constant bool _3248 = (MXC_LIGHT_COUNT != (-1));
+constant bool _240 = (MXC_LIGHT_COUNT != (-1));
 constant int MXC_LIGHT_KINDS_tmp [[function_constant(2)]];
 constant int MXC_LIGHT_KINDS = is_function_constant_defined(MXC_LIGHT_KINDS_tmp) ? MXC_LIGHT_KINDS_tmp : -1;
-constant bool _3260 = (MXC_LIGHT_KINDS != (-1));
-constant int _3261 = _3260 ? MXC_LIGHT_KINDS : 7;
+constant bool _242 = (MXC_LIGHT_KINDS != (-1));
+constant int _243 = _242 ? MXC_LIGHT_KINDS : 7;
 
 struct main0_out
 {
@@ -189,16 +188,16 @@ static inline __attribute__((always_inline))
 float3 mxc_safe_normalize(thread const float3& v, thread const float3& fallback)
 {
     float l2 = dot(v, v);
-    float3 _390;
+    float3 _964;
     if (l2 > 9.9999996826552253889678874634872e-21)
     {
-        _390 = v * rsqrt(l2);
+        _964 = v * rsqrt(l2);
     }
     else
     {
-        _390 = fallback;
+        _964 = fallback;
     }
-    return _390;
+    return _964;
 }
 
 static inline __attribute__((always_inline))
@@ -270,23 +269,23 @@ float4 mxc_sample_image(texture2d<float> image, sampler imageSmplr, thread const
     }
     float param = st.x;
     int param_1 = uaddress;
-    bool _1039 = mxc_address(param, param_1);
+    bool _1626 = mxc_address(param, param_1);
     st.x = param;
-    bool _1042 = !_1039;
-    bool _1055;
-    if (!_1042)
+    bool _1629 = !_1626;
+    bool _1640;
+    if (!_1629)
     {
         float param_2 = st.y;
         int param_3 = vaddress;
-        bool _1051 = mxc_address(param_2, param_3);
+        bool _1636 = mxc_address(param_2, param_3);
         st.y = param_2;
-        _1055 = !_1051;
+        _1640 = !_1636;
     }
     else
     {
-        _1055 = _1042;
+        _1640 = _1629;
     }
-    if (_1055)
+    if (_1640)
     {
         return fallback;
     }
@@ -310,10 +309,10 @@ static inline __attribute__((always_inline))
 float3 mxc_normalmap(thread const float3& sampleValue, thread const float2& scale, thread const float3& N, thread const float3& T, thread const float3& B)
 {
     float3 v = (sampleValue * 2.0) - float3(1.0);
-    float3 _952 = v;
-    float2 _954 = _952.xy * scale;
-    v.x = _954.x;
-    v.y = _954.y;
+    float3 _1532 = v;
+    float2 _1534 = _1532.xy * scale;
+    v.x = _1534.x;
+    v.y = _1534.y;
     float3 param = ((T * v.x) + (B * v.y)) + (N * v.z);
     float3 param_1 = N;
     return mxc_safe_normalize(param, param_1);
@@ -340,16 +339,16 @@ bool mxc_index_matched(thread const MxcLobe& l)
 static inline __attribute__((always_inline))
 float mxc_lobe_eta(thread const MxcLobe& l, thread const bool& above)
 {
-    float _1238;
+    float _1829;
     if (above)
     {
-        _1238 = l.eta;
+        _1829 = l.eta;
     }
     else
     {
-        _1238 = 1.0 / l.eta;
+        _1829 = 1.0 / l.eta;
     }
-    return _1238;
+    return _1829;
 }
 
 static inline __attribute__((always_inline))
@@ -445,68 +444,68 @@ float3 mxc_lobe_fresnel(thread const MxcLobe& l, thread const float& _cosh, thre
 static inline __attribute__((always_inline))
 float3 mxc_lobe_ms_scale(thread const MxcLobe& l, thread const float3& wo, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
-    bool _1459 = l.kind == 1;
-    bool _1466;
-    if (!_1459)
+    bool _2073 = l.kind == 1;
+    bool _2080;
+    if (!_2073)
     {
-        _1466 = l.kind == 2;
+        _2080 = l.kind == 2;
     }
     else
     {
-        _1466 = _1459;
+        _2080 = _2073;
     }
-    bool _1474;
-    if (!_1466)
+    bool _2087;
+    if (!_2080)
     {
-        _1474 = l.kind == 3;
+        _2087 = l.kind == 3;
     }
     else
     {
-        _1474 = _1466;
+        _2087 = _2080;
     }
-    bool microfacet = _1474;
-    bool _1476 = !microfacet;
-    bool _1484;
-    if (!_1476)
+    bool microfacet = _2087;
+    bool _2089 = !microfacet;
+    bool _2096;
+    if (!_2089)
     {
         float2 param = l.alpha;
-        _1484 = mxc_is_delta(param);
+        _2096 = mxc_is_delta(param);
     }
     else
     {
-        _1484 = _1476;
+        _2096 = _2089;
     }
-    if (_1484)
+    if (_2096)
     {
         return float3(1.0);
     }
     float alpha = sqrt(l.alpha.x * l.alpha.y);
-    bool _1497 = l.kind == 1;
-    bool _1503;
-    if (_1497)
+    bool _2107 = l.kind == 1;
+    bool _2112;
+    if (_2107)
     {
         MxcLobe param_1 = l;
-        _1503 = mxc_index_matched(param_1);
+        _2112 = mxc_index_matched(param_1);
     }
     else
     {
-        _1503 = _1497;
+        _2112 = _2107;
     }
-    if (_1503)
+    if (_2112)
     {
         return float3(1.0);
     }
-    bool _1509 = l.kind == 1;
-    bool _1517;
-    if (_1509)
+    bool _2117 = l.kind == 1;
+    bool _2124;
+    if (_2117)
     {
-        _1517 = (l.mode & 4) == 0;
+        _2124 = (l.mode & 4) == 0;
     }
     else
     {
-        _1517 = _1509;
+        _2124 = _2117;
     }
-    if (_1517)
+    if (_2124)
     {
         MxcLobe param_2 = l;
         bool param_3 = wo.z >= 0.0;
@@ -530,16 +529,16 @@ float3 mxc_lobe_ms_scale(thread const MxcLobe& l, thread const float3& wo, textu
 static inline __attribute__((always_inline))
 float mxc_dielectric_albedo(thread const float& mu, thread const float& alpha, thread const float& eta, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
-    float _1192;
+    float _1779;
     if (eta >= 1.0)
     {
-        _1192 = eta;
+        _1779 = eta;
     }
     else
     {
-        _1192 = 1.0 / fast::max(eta, 0.001000000047497451305389404296875);
+        _1779 = 1.0 / fast::max(eta, 0.001000000047497451305389404296875);
     }
-    float e = _1192;
+    float e = _1779;
     float param = mu;
     float param_1 = alpha;
     float param_2 = e;
@@ -560,16 +559,16 @@ float mxc_fon_albedo(thread const float& sigma, thread const float& mu)
     float param = 1.0 - (c * c);
     float s = mxc_safe_sqrt(param);
     float theta = acos(c);
-    float _1414;
+    float _1995;
     if (c > 9.9999997473787516355514526367188e-05)
     {
-        _1414 = (1.0 - ((s * s) * s)) / c;
+        _1995 = (1.0 - ((s * s) * s)) / c;
     }
     else
     {
-        _1414 = 1.5 * c;
+        _1995 = 1.5 * c;
     }
-    float tail = _1414;
+    float tail = _1995;
     float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875 * s) * tail)) - (0.666666686534881591796875 * s);
     return a + (((sigma * a) * g) * 0.3183098733425140380859375);
 }
@@ -578,40 +577,40 @@ static inline __attribute__((always_inline))
 float3 mxc_lobe_albedo_scaled(thread const MxcLobe& l, thread const float3& wo, thread const float3& ms, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
     float mu = fast::clamp(wo.z, 0.0, 1.0);
-    bool _1580 = l.kind == 1;
-    bool _1587;
-    if (!_1580)
+    bool _2199 = l.kind == 1;
+    bool _2206;
+    if (!_2199)
     {
-        _1587 = l.kind == 2;
+        _2206 = l.kind == 2;
     }
     else
     {
-        _1587 = _1580;
+        _2206 = _2199;
     }
-    bool _1594;
-    if (!_1587)
+    bool _2213;
+    if (!_2206)
     {
-        _1594 = l.kind == 3;
+        _2213 = l.kind == 3;
     }
     else
     {
-        _1594 = _1587;
+        _2213 = _2206;
     }
-    if (_1594)
+    if (_2213)
     {
         float alpha = sqrt(l.alpha.x * l.alpha.y);
-        bool _1606 = l.kind == 1;
-        bool _1614;
-        if (_1606)
+        bool _2224 = l.kind == 1;
+        bool _2231;
+        if (_2224)
         {
             float2 param = l.alpha;
-            _1614 = !mxc_is_delta(param);
+            _2231 = !mxc_is_delta(param);
         }
         else
         {
-            _1614 = _1606;
+            _2231 = _2224;
         }
-        if (_1614)
+        if (_2231)
         {
             float param_1 = mu;
             float param_2 = alpha;
@@ -630,16 +629,16 @@ float3 mxc_lobe_albedo_scaled(thread const MxcLobe& l, thread const float3& wo, 
         float param_10 = 0.0;
         bool param_11 = true;
         float3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
-        float3 _1659;
+        float3 _2187;
         if (l.kind == 1)
         {
-            _1659 = l.c0;
+            _2187 = l.c0;
         }
         else
         {
-            _1659 = float3(1.0);
+            _2187 = float3(1.0);
         }
-        float3 tint = _1659;
+        float3 tint = _2187;
         float2 param_12 = l.alpha;
         if (mxc_is_delta(param_12))
         {
@@ -677,17 +676,17 @@ float3 mxc_lobe_albedo(thread const MxcLobe& l, thread const float3& wo, texture
 static inline __attribute__((always_inline))
 float3 mxc_lobe_layer_albedo(thread const MxcLobe& l, thread const float3& wo, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
-    bool _1742 = l.kind == 9;
-    bool _1749;
-    if (!_1742)
+    bool _2338 = l.kind == 9;
+    bool _2345;
+    if (!_2338)
     {
-        _1749 = l.kind == 10;
+        _2345 = l.kind == 10;
     }
     else
     {
-        _1749 = _1742;
+        _2345 = _2338;
     }
-    if (_1749)
+    if (_2345)
     {
         MxcLobe white = l;
         white.c0 = float3(1.0);
@@ -750,7 +749,7 @@ void mxc_closure_prepare(thread MxcClosure& c, thread const float3& wo, texture2
 }
 
 static inline __attribute__((always_inline))
-void mxc_material_closure(thread const MxcGeometry& g, thread const float3& wo, thread MxcClosure& c, thread float& mxc_texture_footprint, texture2d<float> mxc_tables, sampler mxc_tablesSmplr, texture2d<float> mxc_texture_0, sampler mxc_texture_0Smplr, const device MxcParameters& mxc_params, texture2d<float> mxc_texture_1, sampler mxc_texture_1Smplr, texture2d<float> mxc_texture_2, sampler mxc_texture_2Smplr, texture2d<float> mxc_texture_3, sampler mxc_texture_3Smplr, texture2d<float> mxc_texture_4, sampler mxc_texture_4Smplr, texture2d<float> mxc_texture_5, sampler mxc_texture_5Smplr)
+void mxc_material_closure(thread const MxcGeometry& g, thread const float3& wo, thread MxcClosure& c, thread float& mxc_texture_footprint, const device MxcParameters& mxc_params, texture2d<float> mxc_tables, sampler mxc_tablesSmplr, texture2d<float> mxc_texture_0, sampler mxc_texture_0Smplr, texture2d<float> mxc_texture_1, sampler mxc_texture_1Smplr, texture2d<float> mxc_texture_2, sampler mxc_texture_2Smplr, texture2d<float> mxc_texture_3, sampler mxc_texture_3Smplr, texture2d<float> mxc_texture_4, sampler mxc_texture_4Smplr, texture2d<float> mxc_texture_5, sampler mxc_texture_5Smplr)
 {
     float2 v3 = g.uv;
     float2 v4 = v3 * float2(3.0);
@@ -886,37 +885,37 @@ void mxc_material_closure(thread const MxcGeometry& g, thread const float3& wo, 
 static inline __attribute__((always_inline))
 int mxc_light_count(constant MxcView& mxc_view)
 {
-    int _3249;
-    if (_3248)
+    int _3766;
+    if (_240)
     {
-        _3249 = MXC_LIGHT_COUNT;
+        _3766 = MXC_LIGHT_COUNT;
     }
     else
     {
-        _3249 = mxc_view.counts.x;
+        _3766 = mxc_view.counts.x;
     }
-    return min(_3249, 8);
+    return min(_3766, 8);
 }
 
 static inline __attribute__((always_inline))
 int mxc_light_kinds()
 {
-    return _3261;
+    return _243;
 }
 
 static inline __attribute__((always_inline))
 int mxc_environment_code(constant MxcView& mxc_view)
 {
-    int _3230;
-    if (_3229)
+    int _3758;
+    if (_238)
     {
-        _3230 = MXC_ENVIRONMENT;
+        _3758 = MXC_ENVIRONMENT;
     }
     else
     {
-        _3230 = mxc_view.counts.y;
+        _3758 = mxc_view.counts.y;
     }
-    return _3230;
+    return _3758;
 }
 
 static inline __attribute__((always_inline))
@@ -1001,37 +1000,37 @@ float mxc_ggx_g2(thread const float3& wo, thread const float3& wi, thread const 
 {
     float3 param = wo;
     float2 param_1 = alpha;
-    float _691 = mxc_ggx_lambda(param, param_1);
+    float _1268 = mxc_ggx_lambda(param, param_1);
     float3 param_2 = wi;
     float2 param_3 = alpha;
-    float _697 = mxc_ggx_lambda(param_2, param_3);
-    return 1.0 / ((1.0 + _691) + _697);
+    float _1272 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0 / ((1.0 + _1268) + _1272);
 }
 
 static inline __attribute__((always_inline))
 float3 mxc_microfacet_reflect(thread const MxcLobe& l, thread const float3& wo, thread const float3& wi)
 {
-    bool _1279 = wo.z <= 0.0;
-    bool _1286;
-    if (!_1279)
+    bool _1888 = wo.z <= 0.0;
+    bool _1895;
+    if (!_1888)
     {
-        _1286 = wi.z <= 0.0;
+        _1895 = wi.z <= 0.0;
     }
     else
     {
-        _1286 = _1279;
+        _1895 = _1888;
     }
-    bool _1295;
-    if (!_1286)
+    bool _1902;
+    if (!_1895)
     {
         float2 param = l.alpha;
-        _1295 = mxc_is_delta(param);
+        _1902 = mxc_is_delta(param);
     }
     else
     {
-        _1295 = _1286;
+        _1902 = _1895;
     }
-    if (_1295)
+    if (_1902)
     {
         return float3(0.0);
     }
@@ -1046,11 +1045,11 @@ float3 mxc_microfacet_reflect(thread const MxcLobe& l, thread const float3& wo, 
     }
     float3 param_4 = h;
     float2 param_5 = l.alpha;
-    float _1331 = mxc_ggx_d(param_4, param_5);
+    float _1928 = mxc_ggx_d(param_4, param_5);
     float3 param_6 = wo;
     float3 param_7 = wi;
     float2 param_8 = l.alpha;
-    return ((f * _1331) * mxc_ggx_g2(param_6, param_7, param_8)) / float3(4.0 * wo.z);
+    return ((f * _1928) * mxc_ggx_g2(param_6, param_7, param_8)) / float3(4.0 * wo.z);
 }
 
 static inline __attribute__((always_inline))
@@ -1058,16 +1057,16 @@ float mxc_fon(thread const float& sigma, thread const float3& wo, thread const f
 {
     float a = 1.0 / (1.0 + (0.2877933979034423828125 * sigma));
     float s = dot(wi, wo) - (wi.z * wo.z);
-    float _1369;
+    float _1949;
     if (s > 0.0)
     {
-        _1369 = fast::max(fast::max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
+        _1949 = fast::max(fast::max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
     }
     else
     {
-        _1369 = 1.0;
+        _1949 = 1.0;
     }
-    float t = _1369;
+    float t = _1949;
     return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375;
 }
 
@@ -1104,17 +1103,17 @@ float3 mxc_lobe_eval(thread const MxcLobe& l, thread const float3& wo, thread co
         case 2:
         case 3:
         {
-            bool _1823 = l.kind == 3;
-            bool _1830;
-            if (_1823)
+            bool _2419 = l.kind == 3;
+            bool _2426;
+            if (_2419)
             {
-                _1830 = (l.mode & 1) == 0;
+                _2426 = (l.mode & 1) == 0;
             }
             else
             {
-                _1830 = _1823;
+                _2426 = _2419;
             }
-            if (_1830)
+            if (_2426)
             {
                 return float3(0.0);
             }
@@ -1125,29 +1124,29 @@ float3 mxc_lobe_eval(thread const MxcLobe& l, thread const float3& wo, thread co
         }
         case 4:
         {
-            bool _1844 = wo.z > 0.0;
-            bool _1850;
-            if (_1844)
+            bool _2435 = wo.z > 0.0;
+            bool _2441;
+            if (_2435)
             {
-                _1850 = wi.z > 0.0;
+                _2441 = wi.z > 0.0;
             }
             else
             {
-                _1850 = _1844;
+                _2441 = _2435;
             }
-            float3 _1851;
-            if (_1850)
+            float3 _2371;
+            if (_2441)
             {
                 float param_9 = l.p0;
                 float3 param_10 = wo;
                 float3 param_11 = wi;
-                _1851 = (l.c0 * mxc_fon(param_9, param_10, param_11)) * wi.z;
+                _2371 = (l.c0 * mxc_fon(param_9, param_10, param_11)) * wi.z;
             }
             else
             {
-                _1851 = float3(0.0);
+                _2371 = float3(0.0);
             }
-            return _1851;
+            return _2371;
         }
         default:
         {
@@ -1161,8 +1160,8 @@ float mxc_ggx_g1(thread const float3& v, thread const float2& alpha)
 {
     float3 param = v;
     float2 param_1 = alpha;
-    float _682 = mxc_ggx_lambda(param, param_1);
-    return 1.0 / (1.0 + _682);
+    float _1254 = mxc_ggx_lambda(param, param_1);
+    return 1.0 / (1.0 + _1254);
 }
 
 static inline __attribute__((always_inline))
@@ -1176,8 +1175,8 @@ float mxc_ggx_pdf_vndf(thread const float3& wo, thread const float3& m, thread c
     float2 param_1 = alpha;
     float3 param_2 = m;
     float2 param_3 = alpha;
-    float _848 = mxc_ggx_d(param_2, param_3);
-    return ((mxc_ggx_g1(param, param_1) * fast::max(dot(wo, m), 0.0)) * _848) / wo.z;
+    float _1427 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * fast::max(dot(wo, m), 0.0)) * _1427) / wo.z;
 }
 
 static inline __attribute__((always_inline))
@@ -1207,26 +1206,26 @@ float mxc_lobe_pdf(thread const MxcLobe& l, thread const float3& wo, thread cons
                 return 0.0;
             }
             bool above = wo.z > 0.0;
-            float3 _1892;
+            float3 _2465;
             if (above)
             {
-                _1892 = wo;
+                _2465 = wo;
             }
             else
             {
-                _1892 = -wo;
+                _2465 = -wo;
             }
-            float3 o = _1892;
-            float3 _1902;
+            float3 o = _2465;
+            float3 _2467;
             if (above)
             {
-                _1902 = wi;
+                _2467 = wi;
             }
             else
             {
-                _1902 = -wi;
+                _2467 = -wi;
             }
-            float3 i = _1902;
+            float3 i = _2467;
             if (i.z > 0.0)
             {
                 float3 h = fast::normalize(o + i);
@@ -1248,42 +1247,42 @@ float mxc_lobe_pdf(thread const MxcLobe& l, thread const float3& wo, thread cons
                 float3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
                 float fr = mxc_mean(param_7);
                 MxcLobe param_8 = l;
-                bool _1965 = mxc_lobe_transmits(param_8);
-                bool _1972;
-                if (_1965)
+                bool _2567 = mxc_lobe_transmits(param_8);
+                bool _2574;
+                if (_2567)
                 {
-                    _1972 = (l.mode & 1) != 0;
+                    _2574 = (l.mode & 1) != 0;
                 }
                 else
                 {
-                    _1972 = _1965;
+                    _2574 = _2567;
                 }
-                return p * (_1972 ? fr : 1.0);
+                return p * (_2574 ? fr : 1.0);
             }
             return 0.0;
         }
         default:
         {
-            bool _1980 = wo.z > 0.0;
-            bool _1986;
-            if (_1980)
+            bool _2487 = wo.z > 0.0;
+            bool _2493;
+            if (_2487)
             {
-                _1986 = wi.z > 0.0;
+                _2493 = wi.z > 0.0;
             }
             else
             {
-                _1986 = _1980;
+                _2493 = _2487;
             }
-            float _1987;
-            if (_1986)
+            float _2479;
+            if (_2493)
             {
-                _1987 = wi.z * 0.3183098733425140380859375;
+                _2479 = wi.z * 0.3183098733425140380859375;
             }
             else
             {
-                _1987 = 0.0;
+                _2479 = 0.0;
             }
-            return _1987;
+            return _2479;
         }
     }
 }
@@ -1295,16 +1294,16 @@ float3 mxc_ggx_sample_vndf(thread const float3& wo, thread float2& alpha, thread
     alpha = mxc_rough_alpha(param);
     float3 vh = fast::normalize(float3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lensq = (vh.x * vh.x) + (vh.y * vh.y);
-    float3 _735;
+    float3 _1284;
     if (lensq > 0.0)
     {
-        _735 = float3(-vh.y, vh.x, 0.0) * rsqrt(lensq);
+        _1284 = float3(-vh.y, vh.x, 0.0) * rsqrt(lensq);
     }
     else
     {
-        _735 = float3(1.0, 0.0, 0.0);
+        _1284 = float3(1.0, 0.0, 0.0);
     }
-    float3 t1 = _735;
+    float3 t1 = _1284;
     float3 t2 = cross(vh, t1);
     float r = sqrt(u.x);
     float phi = 6.283185482025146484375 * u.y;
@@ -1334,94 +1333,94 @@ MxcLobeSample mxc_lobe_sample(thread const MxcLobe& l, thread const float3& wo, 
         case 3:
         {
             bool above = wo.z > 0.0;
-            float3 _2017;
+            float3 _2586;
             if (above)
             {
-                _2017 = wo;
+                _2586 = wo;
             }
             else
             {
-                _2017 = -wo;
+                _2586 = -wo;
             }
-            float3 o = _2017;
+            float3 o = _2586;
             if (o.z <= 0.0)
             {
                 return s;
             }
             float2 param = l.alpha;
             bool delta = mxc_is_delta(param);
-            float3 _2039;
+            float3 _2590;
             if (delta)
             {
-                _2039 = float3(0.0, 0.0, 1.0);
+                _2590 = float3(0.0, 0.0, 1.0);
             }
             else
             {
                 float3 param_1 = o;
                 float2 param_2 = l.alpha;
                 float2 param_3 = u.xy;
-                float3 _2051 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
-                _2039 = _2051;
+                float3 _2691 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2590 = _2691;
             }
-            float3 m = _2039;
+            float3 m = _2590;
             float hm = dot(o, m);
-            bool _2060 = l.kind == 1;
-            bool _2067;
-            if (!_2060)
+            bool _2698 = l.kind == 1;
+            bool _2705;
+            if (!_2698)
             {
-                _2067 = l.kind == 3;
+                _2705 = l.kind == 3;
             }
             else
             {
-                _2067 = _2060;
+                _2705 = _2698;
             }
-            bool _2073;
-            if (_2067)
+            bool _2710;
+            if (_2705)
             {
                 MxcLobe param_4 = l;
-                _2073 = mxc_lobe_transmits(param_4);
+                _2710 = mxc_lobe_transmits(param_4);
             }
             else
             {
-                _2073 = _2067;
+                _2710 = _2705;
             }
-            bool transmits = _2073;
-            bool _2077 = l.kind == 2;
-            bool _2085;
-            if (!_2077)
+            bool transmits = _2710;
+            bool _2713 = l.kind == 2;
+            bool _2721;
+            if (!_2713)
             {
-                _2085 = (l.mode & 1) != 0;
+                _2721 = (l.mode & 1) != 0;
             }
             else
             {
-                _2085 = _2077;
+                _2721 = _2713;
             }
-            bool reflects = _2085;
+            bool reflects = _2721;
             MxcLobe param_5 = l;
             float param_6 = fast::max(hm, 0.0);
             bool param_7 = above;
             float3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
-            float _2097;
+            float _2603;
             if (transmits)
             {
                 float3 param_8 = f;
-                _2097 = mxc_mean(param_8);
+                _2603 = mxc_mean(param_8);
             }
             else
             {
-                _2097 = 1.0;
+                _2603 = 1.0;
             }
-            float fr = _2097;
-            float _2107;
+            float fr = _2603;
+            float _2606;
             if (transmits)
             {
-                _2107 = reflects ? fr : 0.0;
+                _2606 = reflects ? fr : 0.0;
             }
             else
             {
-                _2107 = 1.0;
+                _2606 = 1.0;
             }
-            float pReflect = _2107;
+            float pReflect = _2606;
             if (u.z < pReflect)
             {
                 float3 i = reflect(-o, m);
@@ -1429,38 +1428,38 @@ MxcLobeSample mxc_lobe_sample(thread const MxcLobe& l, thread const float3& wo, 
                 {
                     return s;
                 }
-                float3 _2134;
+                float3 _2608;
                 if (above)
                 {
-                    _2134 = i;
+                    _2608 = i;
                 }
                 else
                 {
-                    _2134 = -i;
+                    _2608 = -i;
                 }
-                s.wi = _2134;
+                s.wi = _2608;
                 s.delta = short(delta);
                 if (delta)
                 {
-                    float3 _2152;
+                    float3 _2610;
                     if (l.kind == 1)
                     {
-                        float3 _2156;
+                        float3 _2611;
                         if (above)
                         {
-                            _2156 = l.c0;
+                            _2611 = l.c0;
                         }
                         else
                         {
-                            _2156 = float3(1.0);
+                            _2611 = float3(1.0);
                         }
-                        _2152 = _2156;
+                        _2610 = _2611;
                     }
                     else
                     {
-                        _2152 = float3(1.0);
+                        _2610 = float3(1.0);
                     }
-                    float3 tint = _2152;
+                    float3 tint = _2610;
                     s.value = f * tint;
                     s.pdf = pReflect;
                 }
@@ -1635,16 +1634,16 @@ float3 mxc_env_to_map(thread const float3& w, thread const float& angle)
 static inline __attribute__((always_inline))
 float2 mxc_env_uv(thread const float3& d)
 {
-    float _2926;
+    float _3468;
     if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13)
     {
-        _2926 = 0.5 + (precise::atan2(d.x, -d.z) * 0.15915493667125701904296875);
+        _3468 = 0.5 + (precise::atan2(d.x, -d.z) * 0.15915493667125701904296875);
     }
     else
     {
-        _2926 = 0.5;
+        _3468 = 0.5;
     }
-    float u = _2926;
+    float u = _3468;
     float v = precise::atan2(length(d.xz), d.y) * 0.3183098733425140380859375;
     return float2(u, v);
 }
@@ -1657,7 +1656,7 @@ float3 mxc_env_lookup(thread const float3& d, texture2d<float> mxc_env_radiance,
 }
 
 static inline __attribute__((always_inline))
-float3 mxc_environment(thread const float3& d, texture2d<float> mxc_env_radiance, sampler mxc_env_radianceSmplr, constant MxcView& mxc_view)
+float3 mxc_environment(thread const float3& d, constant MxcView& mxc_view, texture2d<float> mxc_env_radiance, sampler mxc_env_radianceSmplr)
 {
     int code = mxc_environment_code(mxc_view);
     if (code == 1)
@@ -1680,21 +1679,21 @@ float3 mxc_environment(thread const float3& d, texture2d<float> mxc_env_radiance
 }
 
 static inline __attribute__((always_inline))
-uint mxc_env_cell(thread const float3& d, const device MxcEnvDistribution& v_2973)
+uint mxc_env_cell(thread const float3& d, const device MxcEnvDistribution& v_221)
 {
     float3 param = d;
     float2 uv = mxc_env_uv(param);
-    uint2 size = max(v_2973.mxc_env_size.xy, uint2(1u));
+    uint2 size = max(v_221.mxc_env_size.xy, uint2(1u));
     uint i = min(uint(fast::max(uv.x, 0.0) * float(size.x)), (size.x - 1u));
     uint j = min(uint(fast::max(uv.y, 0.0) * float(size.y)), (size.y - 1u));
     return (j * size.x) + i;
 }
 
 static inline __attribute__((always_inline))
-float mxc_env_pdf(thread const float3& d, const device MxcEnvDistribution& v_2973)
+float mxc_env_pdf(thread const float3& d, const device MxcEnvDistribution& v_221)
 {
     float3 param = d;
-    return ((device float*)&v_2973.mxc_env_cells[mxc_env_cell(param, v_2973)])[2u];
+    return ((device float*)&v_221.mxc_env_cells[mxc_env_cell(param, v_221)])[2u];
 }
 
 static inline __attribute__((always_inline))
@@ -1702,30 +1701,30 @@ float mxc_power_heuristic(thread const float& a, thread const float& b)
 {
     float a2 = a * a;
     float b2 = b * b;
-    float _3358;
+    float _3858;
     if ((a2 + b2) > 0.0)
     {
-        _3358 = a2 / (a2 + b2);
+        _3858 = a2 / (a2 + b2);
     }
     else
     {
-        _3358 = 0.0;
+        _3858 = 0.0;
     }
-    return _3358;
+    return _3858;
 }
 
 static inline __attribute__((always_inline))
-float3 mxc_env_sample(thread const float4& u, thread float& pdf, const device MxcEnvDistribution& v_2973)
+float3 mxc_env_sample(thread const float4& u, thread float& pdf, const device MxcEnvDistribution& v_221)
 {
-    uint2 size = max(v_2973.mxc_env_size.xy, uint2(1u));
+    uint2 size = max(v_221.mxc_env_size.xy, uint2(1u));
     uint n = size.x * size.y;
     uint k = min(uint(u.x * float(n)), (n - 1u));
-    float4 cell = v_2973.mxc_env_cells[k];
+    float4 cell = v_221.mxc_env_cells[k];
     if (u.y >= cell.x)
     {
         k = min(as_type<uint>(cell.y), (n - 1u));
     }
-    pdf = ((device float*)&v_2973.mxc_env_cells[k])[2u];
+    pdf = ((device float*)&v_221.mxc_env_cells[k])[2u];
     uint i = k % size.x;
     uint j = k / size.x;
     float phi = 6.283185482025146484375 * (((float(i) + u.z) / float(size.x)) - 0.5);
@@ -1780,20 +1779,20 @@ float3 mxc_closure_eval_pdf(thread const MxcClosure& c, thread const float3& wo,
             p += (c.choice[k] * mxc_lobe_pdf(param_11, param_12, param_13));
         }
     }
-    float _2415;
+    float _2937;
     if (c.choiceTotal > 0.0)
     {
-        _2415 = p / c.choiceTotal;
+        _2937 = p / c.choiceTotal;
     }
     else
     {
-        _2415 = 0.0;
+        _2937 = 0.0;
     }
-    pdf = _2415;
+    pdf = _2937;
     return f;
 }
 
-fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[buffer(0)]], const device MxcParameters& mxc_params [[buffer(1)]], const device MxcEnvDistribution& v_2973 [[buffer(2)]], texture2d<float> mxc_tables [[texture(0)]], texture2d<float> mxc_texture_0 [[texture(1)]], texture2d<float> mxc_texture_1 [[texture(2)]], texture2d<float> mxc_texture_2 [[texture(3)]], texture2d<float> mxc_texture_3 [[texture(4)]], texture2d<float> mxc_texture_4 [[texture(5)]], texture2d<float> mxc_texture_5 [[texture(6)]], texture2d<float> mxc_env_radiance [[texture(7)]], sampler mxc_tablesSmplr [[sampler(0)]], sampler mxc_texture_0Smplr [[sampler(1)]], sampler mxc_texture_1Smplr [[sampler(2)]], sampler mxc_texture_2Smplr [[sampler(3)]], sampler mxc_texture_3Smplr [[sampler(4)]], sampler mxc_texture_4Smplr [[sampler(5)]], sampler mxc_texture_5Smplr [[sampler(6)]], sampler mxc_env_radianceSmplr [[sampler(7)]], bool gl_FrontFacing [[front_facing]], float4 gl_FragCoord [[position]])
+fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[buffer(0)]], const device MxcParameters& mxc_params [[buffer(1)]], const device MxcEnvDistribution& v_221 [[buffer(2)]], texture2d<float> mxc_tables [[texture(0)]], texture2d<float> mxc_texture_0 [[texture(1)]], texture2d<float> mxc_texture_1 [[texture(2)]], texture2d<float> mxc_texture_2 [[texture(3)]], texture2d<float> mxc_texture_3 [[texture(4)]], texture2d<float> mxc_texture_4 [[texture(5)]], texture2d<float> mxc_texture_5 [[texture(6)]], texture2d<float> mxc_env_radiance [[texture(7)]], sampler mxc_tablesSmplr [[sampler(0)]], sampler mxc_texture_0Smplr [[sampler(1)]], sampler mxc_texture_1Smplr [[sampler(2)]], sampler mxc_texture_2Smplr [[sampler(3)]], sampler mxc_texture_3Smplr [[sampler(4)]], sampler mxc_texture_4Smplr [[sampler(5)]], sampler mxc_texture_5Smplr [[sampler(6)]], sampler mxc_env_radianceSmplr [[sampler(7)]], bool gl_FrontFacing [[front_facing]], float4 gl_FragCoord [[position]])
 {
     main0_out out = {};
     float mxc_texture_footprint = 1.0;
@@ -1843,22 +1842,22 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
     MxcGeometry param_14 = g;
     float3 param_15 = wo;
     MxcClosure param_16;
-    mxc_material_closure(param_14, param_15, param_16, mxc_texture_footprint, mxc_tables, mxc_tablesSmplr, mxc_texture_0, mxc_texture_0Smplr, mxc_params, mxc_texture_1, mxc_texture_1Smplr, mxc_texture_2, mxc_texture_2Smplr, mxc_texture_3, mxc_texture_3Smplr, mxc_texture_4, mxc_texture_4Smplr, mxc_texture_5, mxc_texture_5Smplr);
+    mxc_material_closure(param_14, param_15, param_16, mxc_texture_footprint, mxc_params, mxc_tables, mxc_tablesSmplr, mxc_texture_0, mxc_texture_0Smplr, mxc_texture_1, mxc_texture_1Smplr, mxc_texture_2, mxc_texture_2Smplr, mxc_texture_3, mxc_texture_3Smplr, mxc_texture_4, mxc_texture_4Smplr, mxc_texture_5, mxc_texture_5Smplr);
     MxcClosure c = param_16;
     float3 radiance = c.emission * mxc_view.environment.y;
     int lights = mxc_light_count(mxc_view);
     int kinds = mxc_light_kinds();
     bool image = mxc_environment_code(mxc_view) == 3;
-    int _3561;
+    int _276;
     if (mxc_environment_code(mxc_view) != 0)
     {
-        _3561 = max(mxc_view.counts.w, 1);
+        _276 = max(mxc_view.counts.w, 1);
     }
     else
     {
-        _3561 = 0;
+        _276 = 0;
     }
-    int n = _3561;
+    int n = _276;
     uint param_17 = uint(mxc_view.counts.z);
     uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
     uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
@@ -1867,54 +1866,54 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
     uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
     uint pixel = mxc_pcg(param_21);
     uint param_22 = pixel;
-    float _3604 = mxc_uniform(param_22);
+    float _510 = mxc_uniform(param_22);
     pixel = param_22;
     uint param_23 = pixel;
-    float _3608 = mxc_uniform(param_23);
+    float _514 = mxc_uniform(param_23);
     pixel = param_23;
     uint param_24 = pixel;
-    float _3612 = mxc_uniform(param_24);
+    float _517 = mxc_uniform(param_24);
     pixel = param_24;
     uint param_25 = pixel;
-    float _3616 = mxc_uniform(param_25);
+    float _520 = mxc_uniform(param_25);
     pixel = param_25;
-    float4 shift = float4(_3604, _3608, _3612, _3616);
+    float4 shift = float4(_510, _514, _517, _520);
     float3 sum = float3(0.0);
-    int _3642;
+    int _293;
     MxcSample smp;
-    float3 _3717;
-    float3 _3721;
-    float _3763;
+    float3 _310;
+    float3 _311;
+    float _316;
     float param_49;
-    int _3865;
+    int _340;
     float param_59;
-    float _4024;
+    float _356;
     for (int b = 0; b < max(n, int(lights > 0)); b++)
     {
         int batchLights = (b == 0) ? lights : 0;
         if (b < n)
         {
-            _3642 = 1 + int(image);
+            _293 = 1 + int(image);
         }
         else
         {
-            _3642 = 0;
+            _293 = 0;
         }
-        int batchSamples = _3642;
+        int batchSamples = _293;
         uint index = (uint(mxc_view.counts.z) * uint(max(n, 1))) + uint(b);
         uint param_26 = index;
         uint param_27 = 2u;
-        float _3665 = mxc_radical_inverse(param_26, param_27);
+        float _560 = mxc_radical_inverse(param_26, param_27);
         uint param_28 = index;
         uint param_29 = 3u;
-        float _3669 = mxc_radical_inverse(param_28, param_29);
+        float _563 = mxc_radical_inverse(param_28, param_29);
         uint param_30 = index;
         uint param_31 = 5u;
-        float _3674 = mxc_radical_inverse(param_30, param_31);
+        float _565 = mxc_radical_inverse(param_30, param_31);
         uint param_32 = index;
         uint param_33 = 7u;
-        float _3678 = mxc_radical_inverse(param_32, param_33);
-        float4 choice = fract(float4(_3665, _3669, _3674, _3678) + shift);
+        float _567 = mxc_radical_inverse(param_32, param_33);
+        float4 choice = fract(float4(_560, _563, _565, _567) + shift);
         smp.valid = short(false);
         smp.evaluate = short(false);
         smp.delta = short(false);
@@ -1933,58 +1932,58 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
         {
             if (above)
             {
-                _3721 = smp.wi;
+                _311 = smp.wi;
             }
             else
             {
                 float3 param_37 = -wo;
                 float3 param_38 = smp.wi;
-                _3721 = mxc_exit_direction(param_37, param_38);
+                _311 = mxc_exit_direction(param_37, param_38);
             }
-            float3 param_39 = _3721;
-            _3717 = mxc_environment(param_39, mxc_env_radiance, mxc_env_radianceSmplr, mxc_view);
+            float3 param_39 = _311;
+            _310 = mxc_environment(param_39, mxc_view, mxc_env_radiance, mxc_env_radianceSmplr);
         }
         else
         {
-            _3717 = float3(0.0);
+            _310 = float3(0.0);
         }
-        float3 seen = _3717;
-        bool _3744 = (b < n) && bool(smp.valid);
-        bool _3750;
-        if (_3744)
+        float3 seen = _310;
+        bool _625 = (b < n) && bool(smp.valid);
+        bool _631;
+        if (_625)
         {
-            _3750 = !bool(smp.evaluate);
+            _631 = !bool(smp.evaluate);
         }
         else
         {
-            _3750 = _3744;
+            _631 = _625;
         }
-        if (_3750)
+        if (_631)
         {
-            bool _3756 = image && above;
-            bool _3762;
-            if (_3756)
+            bool _636 = image && above;
+            bool _642;
+            if (_636)
             {
-                _3762 = !bool(smp.delta);
+                _642 = !bool(smp.delta);
             }
             else
             {
-                _3762 = _3756;
+                _642 = _636;
             }
-            if (_3762)
+            if (_642)
             {
                 float3 param_40 = smp.wi;
                 float param_41 = mxc_view.environment.z;
                 float3 param_42 = mxc_env_to_map(param_40, param_41);
                 float param_43 = smp.pdf;
-                float param_44 = mxc_env_pdf(param_42, v_2973);
-                _3763 = mxc_power_heuristic(param_43, param_44);
+                float param_44 = mxc_env_pdf(param_42, v_221);
+                _316 = mxc_power_heuristic(param_43, param_44);
             }
             else
             {
-                _3763 = 1.0;
+                _316 = 1.0;
             }
-            float w = _3763;
+            float w = _316;
             sum += ((smp.weight * w) * seen);
         }
         float3 m = float3(0.0);
@@ -1994,36 +1993,36 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
         if (image && (b < n))
         {
             uint param_45 = seed;
-            float _3807 = mxc_uniform(param_45);
+            float _678 = mxc_uniform(param_45);
             seed = param_45;
             uint param_46 = seed;
-            float _3811 = mxc_uniform(param_46);
+            float _681 = mxc_uniform(param_46);
             seed = param_46;
             uint param_47 = seed;
-            float _3815 = mxc_uniform(param_47);
+            float _684 = mxc_uniform(param_47);
             seed = param_47;
-            float4 v = float4(choice.y, _3807, _3811, _3815);
+            float4 v = float4(choice.y, _678, _681, _684);
             float4 param_48 = v;
-            float3 _3821 = mxc_env_sample(param_48, param_49, v_2973);
+            float3 _688 = mxc_env_sample(param_48, param_49, v_221);
             lightPdf = param_49;
-            m = _3821;
+            m = _688;
             float3 param_50 = m;
             float param_51 = mxc_view.environment.z;
             imageWi = mxc_env_to_world(param_50, param_51);
-            bool _3830 = lightPdf > 0.0;
-            bool _3837;
-            if (_3830)
+            bool _697 = lightPdf > 0.0;
+            bool _704;
+            if (_697)
             {
-                _3837 = dot(imageWi, N) > 0.0;
+                _704 = dot(imageWi, N) > 0.0;
             }
             else
             {
-                _3837 = _3830;
+                _704 = _697;
             }
-            if (_3837)
+            if (_704)
             {
                 float3 param_52 = imageWi;
-                imageSeen = mxc_environment(param_52, mxc_env_radiance, mxc_env_radianceSmplr, mxc_view);
+                imageSeen = mxc_environment(param_52, mxc_view, mxc_env_radiance, mxc_env_radianceSmplr);
             }
         }
         for (int j = 0; j < (batchLights + batchSamples); j++)
@@ -2033,38 +2032,38 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
             bool use = true;
             if ((n == 0) || (j < batchLights))
             {
-                _3865 = 0;
+                _340 = 0;
             }
             else
             {
-                _3865 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+                _340 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
             }
-            int strategy = _3865;
+            int strategy = _340;
             if (strategy == 0)
             {
                 float4 light = mxc_view.lightVector[j];
                 incoming = mxc_view.lightRadiance[j].xyz;
-                bool _3890 = kinds == 1;
-                bool _3903;
-                if (!_3890)
+                bool _749 = kinds == 1;
+                bool _762;
+                if (!_749)
                 {
-                    bool _3896 = (kinds & 1) != 0;
-                    bool _3902;
-                    if (_3896)
+                    bool _755 = (kinds & 1) != 0;
+                    bool _761;
+                    if (_755)
                     {
-                        _3902 = light.w == 0.0;
+                        _761 = light.w == 0.0;
                     }
                     else
                     {
-                        _3902 = _3896;
+                        _761 = _755;
                     }
-                    _3903 = _3902;
+                    _762 = _761;
                 }
                 else
                 {
-                    _3903 = _3890;
+                    _762 = _749;
                 }
-                bool directional = _3903;
+                bool directional = _762;
                 if (directional)
                 {
                     float3 param_53 = light.xyz;
@@ -2077,17 +2076,17 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                     float d2 = fast::max(dot(d, d), 9.9999999392252902907785028219223e-09);
                     wi = d * rsqrt(d2);
                     incoming /= float3(d2);
-                    bool _3935 = (kinds & 4) != 0;
-                    bool _3941;
-                    if (_3935)
+                    bool _789 = (kinds & 4) != 0;
+                    bool _795;
+                    if (_789)
                     {
-                        _3941 = light.w == 2.0;
+                        _795 = light.w == 2.0;
                     }
                     else
                     {
-                        _3941 = _3935;
+                        _795 = _789;
                     }
-                    if (_3941)
+                    if (_795)
                     {
                         float4 spot = mxc_view.lightSpot[j];
                         incoming *= smoothstep(spot.w, mxc_view.lightRadiance[j].w, dot(-wi, spot.xyz));
@@ -2106,26 +2105,26 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                 {
                     wi = imageWi;
                     incoming = imageSeen;
-                    bool _3978 = lightPdf > 0.0;
-                    bool _3985;
-                    if (_3978)
+                    bool _830 = lightPdf > 0.0;
+                    bool _837;
+                    if (_830)
                     {
-                        _3985 = dot(imageWi, N) > 0.0;
+                        _837 = dot(imageWi, N) > 0.0;
                     }
                     else
                     {
-                        _3985 = _3978;
+                        _837 = _830;
                     }
-                    use = _3985;
+                    use = _837;
                 }
             }
             MxcClosure param_55 = c;
             float3 param_56 = wo;
             float3 param_57 = wi;
             bool param_58 = strategy != 0;
-            float3 _3998 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            float3 _843 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
             float pdf = param_59;
-            float3 f = _3998;
+            float3 f = _843;
             if (strategy == 0)
             {
                 radiance += (f * incoming);
@@ -2142,14 +2141,14 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                             float param_61 = mxc_view.environment.z;
                             float3 param_62 = mxc_env_to_map(param_60, param_61);
                             float param_63 = pdf;
-                            float param_64 = mxc_env_pdf(param_62, v_2973);
-                            _4024 = mxc_power_heuristic(param_63, param_64);
+                            float param_64 = mxc_env_pdf(param_62, v_221);
+                            _356 = mxc_power_heuristic(param_63, param_64);
                         }
                         else
                         {
-                            _4024 = 1.0;
+                            _356 = 1.0;
                         }
-                        float w_1 = _4024;
+                        float w_1 = _356;
                         sum += (((f * w_1) / float3(pdf)) * incoming);
                     }
                 }
@@ -2158,7 +2157,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                     if (use)
                     {
                         float3 param_65 = m;
-                        float param_66 = mxc_env_pdf(param_65, v_2973);
+                        float param_66 = mxc_env_pdf(param_65, v_221);
                         float param_67 = pdf;
                         float w_2 = mxc_power_heuristic(param_66, param_67);
                         sum += (((f * w_2) * incoming) / float3(lightPdf));

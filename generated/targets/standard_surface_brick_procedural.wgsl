@@ -11,6 +11,22 @@
 // mxc_env_radiance {"binding":0,"group":1,"samplerBinding":512}
 // MxcEnvDistribution {"binding":1,"group":1}
 // ==== fragment (main) ====
+struct MxcGeometry {
+    P: vec3<f32>,
+    Pobj: vec3<f32>,
+    N: vec3<f32>,
+    Nobj: vec3<f32>,
+    T: vec3<f32>,
+    Tobj: vec3<f32>,
+    B: vec3<f32>,
+    Bobj: vec3<f32>,
+    uv: vec2<f32>,
+    color: vec4<f32>,
+    objectToWorld: mat4x4<f32>,
+    frame: f32,
+    time: f32,
+}
+
 struct MxcLobe {
     kind: i32,
     mode: i32,
@@ -27,14 +43,6 @@ struct MxcLobe {
     film: vec3<f32>,
     tau: vec3<f32>,
     tauEta: f32,
-}
-
-struct MxcLobeSample {
-    wi: vec3<f32>,
-    value: vec3<f32>,
-    pdf: f32,
-    delta: bool,
-    valid: bool,
 }
 
 struct MxcClosure {
@@ -56,33 +64,6 @@ struct MxcSample {
     valid: bool,
 }
 
-struct MxcGeometry {
-    P: vec3<f32>,
-    Pobj: vec3<f32>,
-    N: vec3<f32>,
-    Nobj: vec3<f32>,
-    T: vec3<f32>,
-    Tobj: vec3<f32>,
-    B: vec3<f32>,
-    Bobj: vec3<f32>,
-    uv: vec2<f32>,
-    color: vec4<f32>,
-    objectToWorld: mat4x4<f32>,
-    frame: f32,
-    time: f32,
-}
-
-struct MxcParameters {
-    missing_textures: u32,
-    frame: f32,
-    time: f32,
-}
-
-struct MxcEnvDistribution {
-    mxc_env_size: vec4<u32>,
-    mxc_env_cells: array<vec4<f32>>,
-}
-
 struct MxcView {
     objectToWorld: mat4x4<f32>,
     normalToWorld: mat4x4<f32>,
@@ -96,11 +77,44 @@ struct MxcView {
     environment: vec4<f32>,
 }
 
+struct MxcParameters {
+    missing_textures: u32,
+    frame: f32,
+    time: f32,
+}
+
+struct MxcLobeSample {
+    wi: vec3<f32>,
+    value: vec3<f32>,
+    pdf: f32,
+    delta: bool,
+    valid: bool,
+}
+
+struct MxcEnvDistribution {
+    mxc_env_size: vec4<u32>,
+    mxc_env_cells: array<vec4<f32>>,
+}
+
 const MXC_ENVIRONMENT: i32 = -1i;
 const MXC_LIGHT_COUNT: i32 = -1i;
 const MXC_LIGHT_KINDS: i32 = -1i;
 
 var<private> mxc_texture_footprint: f32;
+var<private> vPosition_1: vec3<f32>;
+var<private> vObjectPosition_1: vec3<f32>;
+var<private> vNormal_1: vec3<f32>;
+var<private> gl_FrontFacing_1: bool;
+var<private> vTangent_1: vec4<f32>;
+var<private> vObjectNormal_1: vec3<f32>;
+var<private> vObjectTangent_1: vec3<f32>;
+var<private> vUv_1: vec2<f32>;
+@group(0) @binding(1) 
+var<uniform> mxc_view: MxcView;
+@group(0) @binding(2) 
+var<storage, read_write> mxc_params: MxcParameters;
+var<private> gl_FragCoord_1: vec4<f32>;
+var<private> outColor: vec4<f32>;
 @group(0) @binding(0) 
 var mxc_tables_texture: texture_2d<f32>;
 @group(0) @binding(512) 
@@ -109,8 +123,6 @@ var mxc_tables_sampler: sampler;
 var mxc_texture_0_texture: texture_2d<f32>;
 @group(0) @binding(517) 
 var mxc_texture_0_sampler: sampler;
-@group(0) @binding(2) 
-var<storage, read_write> mxc_params: MxcParameters;
 @group(0) @binding(6) 
 var mxc_texture_1_texture: texture_2d<f32>;
 @group(0) @binding(518) 
@@ -137,18 +149,6 @@ var mxc_env_radiance_texture: texture_2d<f32>;
 var mxc_env_radiance_sampler: sampler;
 @group(1) @binding(1) 
 var<storage, read_write> unnamed: MxcEnvDistribution;
-@group(0) @binding(1) 
-var<uniform> mxc_view: MxcView;
-var<private> vPosition_1: vec3<f32>;
-var<private> vObjectPosition_1: vec3<f32>;
-var<private> vNormal_1: vec3<f32>;
-var<private> gl_FrontFacing_1: bool;
-var<private> vTangent_1: vec4<f32>;
-var<private> vObjectNormal_1: vec3<f32>;
-var<private> vObjectTangent_1: vec3<f32>;
-var<private> vUv_1: vec2<f32>;
-var<private> gl_FragCoord_1: vec4<f32>;
-var<private> outColor: vec4<f32>;
 
 fn mxc_luminance_u0028_vf3_u003b(c: ptr<function, vec3<f32>>) -> f32 {
     let _e143 = (*c);
@@ -383,8 +383,8 @@ fn mxc_lobe_pdf_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_u002d_vf3
     var param_21: vec3<f32>;
     var param_22: MxcLobe;
     var local_3: f32;
-    var phi_1998_: bool;
-    var phi_1984_: bool;
+    var phi_2512_: bool;
+    var phi_2593_: bool;
 
     let _e164 = (*l_3).kind;
     switch _e164 {
@@ -456,12 +456,12 @@ fn mxc_lobe_pdf_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_u002d_vf3
                 let _e228 = (*l_3);
                 param_22 = _e228;
                 let _e229 = mxc_lobe_transmits_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_u002d_vf3_u002d_vf3_u002d_vf2_u002d_f1_u002d_vf3_u002d_vf3_u002d_vf3_u002d_f1_u002d_f1_u002d_vf3_u002d_vf3_u002d_f11_u003b((&param_22));
-                phi_1984_ = _e229;
+                phi_2593_ = _e229;
                 if _e229 {
                     let _e231 = (*l_3).mode;
-                    phi_1984_ = ((_e231 & 1i) != 0i);
+                    phi_2593_ = ((_e231 & 1i) != 0i);
                 }
-                let _e235 = phi_1984_;
+                let _e235 = phi_2593_;
                 let _e236 = fr;
                 return (_e227 * select(1f, _e236, _e235));
             }
@@ -470,12 +470,12 @@ fn mxc_lobe_pdf_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_u002d_vf3
         default: {
             let _e166 = (*wo_1)[2u];
             let _e167 = (_e166 > 0f);
-            phi_1998_ = _e167;
+            phi_2512_ = _e167;
             if _e167 {
                 let _e169 = (*wi)[2u];
-                phi_1998_ = (_e169 > 0f);
+                phi_2512_ = (_e169 > 0f);
             }
-            let _e172 = phi_1998_;
+            let _e172 = phi_2512_;
             if _e172 {
                 let _e174 = (*wi)[2u];
                 local_3 = (_e174 * 0.31830987f);
@@ -550,25 +550,25 @@ fn mxc_microfacet_reflect_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3
     var param_33: vec3<f32>;
     var param_34: vec3<f32>;
     var param_35: vec2<f32>;
-    var phi_1298_: bool;
-    var phi_1307_: bool;
+    var phi_1914_: bool;
+    var phi_1921_: bool;
 
     let _e157 = (*wo_4)[2u];
     let _e158 = (_e157 <= 0f);
-    phi_1298_ = _e158;
+    phi_1914_ = _e158;
     if !(_e158) {
         let _e161 = (*wi_3)[2u];
-        phi_1298_ = (_e161 <= 0f);
+        phi_1914_ = (_e161 <= 0f);
     }
-    let _e164 = phi_1298_;
-    phi_1307_ = _e164;
+    let _e164 = phi_1914_;
+    phi_1921_ = _e164;
     if !(_e164) {
         let _e167 = (*l_4).alpha;
         param_27 = _e167;
         let _e168 = mxc_is_delta_u0028_vf2_u003b((&param_27));
-        phi_1307_ = _e168;
+        phi_1921_ = _e168;
     }
-    let _e170 = phi_1307_;
+    let _e170 = phi_1921_;
     if _e170 {
         return vec3<f32>(0f, 0f, 0f);
     }
@@ -621,8 +621,8 @@ fn mxc_lobe_eval_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_u002d_vf
     var param_45: f32;
     var param_46: vec3<f32>;
     var param_47: vec3<f32>;
-    var phi_1842_: bool;
-    var phi_1862_: bool;
+    var phi_2445_: bool;
+    var phi_2460_: bool;
 
     let _e160 = (*l_5).kind;
     switch _e160 {
@@ -664,12 +664,12 @@ fn mxc_lobe_eval_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_u002d_vf
         case 3, 2: {
             let _e191 = (*l_5).kind;
             let _e192 = (_e191 == 3i);
-            phi_1842_ = _e192;
+            phi_2445_ = _e192;
             if _e192 {
                 let _e194 = (*l_5).mode;
-                phi_1842_ = ((_e194 & 1i) == 0i);
+                phi_2445_ = ((_e194 & 1i) == 0i);
             }
-            let _e198 = phi_1842_;
+            let _e198 = phi_2445_;
             if _e198 {
                 return vec3<f32>(0f, 0f, 0f);
             }
@@ -685,12 +685,12 @@ fn mxc_lobe_eval_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_u002d_vf
         case 4: {
             let _e204 = (*wo_5)[2u];
             let _e205 = (_e204 > 0f);
-            phi_1862_ = _e205;
+            phi_2460_ = _e205;
             if _e205 {
                 let _e207 = (*wi_4)[2u];
-                phi_1862_ = (_e207 > 0f);
+                phi_2460_ = (_e207 > 0f);
             }
-            let _e210 = phi_1862_;
+            let _e210 = phi_2460_;
             if _e210 {
                 let _e212 = (*l_5).c0_;
                 let _e214 = (*l_5).p0_;
@@ -1360,9 +1360,9 @@ fn mxc_lobe_sample_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_u002d_
     var param_93: MxcLobe;
     var param_94: vec3<f32>;
     var param_95: vec3<f32>;
-    var phi_2079_: bool;
-    var phi_2085_: bool;
-    var phi_2097_: bool;
+    var phi_2724_: bool;
+    var phi_2729_: bool;
+    var phi_2740_: bool;
 
     s_7.valid = false;
     s_7.delta = false;
@@ -1413,29 +1413,29 @@ fn mxc_lobe_sample_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_u002d_
             hm = dot(_e242, _e243);
             let _e246 = (*l_8).kind;
             let _e247 = (_e246 == 1i);
-            phi_2079_ = _e247;
+            phi_2724_ = _e247;
             if !(_e247) {
                 let _e250 = (*l_8).kind;
-                phi_2079_ = (_e250 == 3i);
+                phi_2724_ = (_e250 == 3i);
             }
-            let _e253 = phi_2079_;
-            phi_2085_ = _e253;
+            let _e253 = phi_2724_;
+            phi_2729_ = _e253;
             if _e253 {
                 let _e254 = (*l_8);
                 param_78 = _e254;
                 let _e255 = mxc_lobe_transmits_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_u002d_vf3_u002d_vf3_u002d_vf2_u002d_f1_u002d_vf3_u002d_vf3_u002d_vf3_u002d_f1_u002d_f1_u002d_vf3_u002d_vf3_u002d_f11_u003b((&param_78));
-                phi_2085_ = _e255;
+                phi_2729_ = _e255;
             }
-            let _e257 = phi_2085_;
+            let _e257 = phi_2729_;
             transmits = _e257;
             let _e259 = (*l_8).kind;
             let _e260 = (_e259 == 2i);
-            phi_2097_ = _e260;
+            phi_2740_ = _e260;
             if !(_e260) {
                 let _e263 = (*l_8).mode;
-                phi_2097_ = ((_e263 & 1i) != 0i);
+                phi_2740_ = ((_e263 & 1i) != 0i);
             }
-            let _e267 = phi_2097_;
+            let _e267 = phi_2740_;
             reflects = _e267;
             let _e268 = hm;
             let _e270 = (*l_8);
@@ -2012,40 +2012,40 @@ fn mxc_lobe_albedo_scaled_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3
     var param_138: bool;
     var param_139: f32;
     var param_140: f32;
-    var phi_1599_: bool;
-    var phi_1606_: bool;
-    var phi_1626_: bool;
+    var phi_2225_: bool;
+    var phi_2232_: bool;
+    var phi_2250_: bool;
 
     let _e172 = (*wo_10)[2u];
     mu_7 = clamp(_e172, 0f, 1f);
     let _e175 = (*l_10).kind;
     let _e176 = (_e175 == 1i);
-    phi_1599_ = _e176;
+    phi_2225_ = _e176;
     if !(_e176) {
         let _e179 = (*l_10).kind;
-        phi_1599_ = (_e179 == 2i);
+        phi_2225_ = (_e179 == 2i);
     }
-    let _e182 = phi_1599_;
-    phi_1606_ = _e182;
+    let _e182 = phi_2225_;
+    phi_2232_ = _e182;
     if !(_e182) {
         let _e185 = (*l_10).kind;
-        phi_1606_ = (_e185 == 3i);
+        phi_2232_ = (_e185 == 3i);
     }
-    let _e188 = phi_1606_;
+    let _e188 = phi_2232_;
     if _e188 {
         let _e191 = (*l_10).alpha[0u];
         let _e194 = (*l_10).alpha[1u];
         alpha_11 = sqrt((_e191 * _e194));
         let _e198 = (*l_10).kind;
         let _e199 = (_e198 == 1i);
-        phi_1626_ = _e199;
+        phi_2250_ = _e199;
         if _e199 {
             let _e201 = (*l_10).alpha;
             param_123 = _e201;
             let _e202 = mxc_is_delta_u0028_vf2_u003b((&param_123));
-            phi_1626_ = !(_e202);
+            phi_2250_ = !(_e202);
         }
-        let _e205 = phi_1626_;
+        let _e205 = phi_2250_;
         if _e205 {
             let _e206 = mu_7;
             param_124 = _e206;
@@ -2203,37 +2203,37 @@ fn mxc_lobe_ms_scale_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_u002
     var param_160: MxcLobe;
     var param_161: f32;
     var param_162: bool;
-    var phi_1478_: bool;
-    var phi_1486_: bool;
-    var phi_1496_: bool;
-    var phi_1515_: bool;
-    var phi_1529_: bool;
+    var phi_2099_: bool;
+    var phi_2106_: bool;
+    var phi_2115_: bool;
+    var phi_2131_: bool;
+    var phi_2143_: bool;
 
     let _e163 = (*l_13).kind;
     let _e164 = (_e163 == 1i);
-    phi_1478_ = _e164;
+    phi_2099_ = _e164;
     if !(_e164) {
         let _e167 = (*l_13).kind;
-        phi_1478_ = (_e167 == 2i);
+        phi_2099_ = (_e167 == 2i);
     }
-    let _e170 = phi_1478_;
-    phi_1486_ = _e170;
+    let _e170 = phi_2099_;
+    phi_2106_ = _e170;
     if !(_e170) {
         let _e173 = (*l_13).kind;
-        phi_1486_ = (_e173 == 3i);
+        phi_2106_ = (_e173 == 3i);
     }
-    let _e176 = phi_1486_;
+    let _e176 = phi_2106_;
     microfacet = _e176;
     let _e177 = microfacet;
     let _e178 = !(_e177);
-    phi_1496_ = _e178;
+    phi_2115_ = _e178;
     if !(_e178) {
         let _e181 = (*l_13).alpha;
         param_151 = _e181;
         let _e182 = mxc_is_delta_u0028_vf2_u003b((&param_151));
-        phi_1496_ = _e182;
+        phi_2115_ = _e182;
     }
-    let _e184 = phi_1496_;
+    let _e184 = phi_2115_;
     if _e184 {
         return vec3<f32>(1f, 1f, 1f);
     }
@@ -2242,25 +2242,25 @@ fn mxc_lobe_ms_scale_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_u002
     alpha_13 = sqrt((_e187 * _e190));
     let _e194 = (*l_13).kind;
     let _e195 = (_e194 == 1i);
-    phi_1515_ = _e195;
+    phi_2131_ = _e195;
     if _e195 {
         let _e196 = (*l_13);
         param_152 = _e196;
         let _e197 = mxc_index_matched_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_u002d_vf3_u002d_vf3_u002d_vf2_u002d_f1_u002d_vf3_u002d_vf3_u002d_vf3_u002d_f1_u002d_f1_u002d_vf3_u002d_vf3_u002d_f11_u003b((&param_152));
-        phi_1515_ = _e197;
+        phi_2131_ = _e197;
     }
-    let _e199 = phi_1515_;
+    let _e199 = phi_2131_;
     if _e199 {
         return vec3<f32>(1f, 1f, 1f);
     }
     let _e201 = (*l_13).kind;
     let _e202 = (_e201 == 1i);
-    phi_1529_ = _e202;
+    phi_2143_ = _e202;
     if _e202 {
         let _e204 = (*l_13).mode;
-        phi_1529_ = ((_e204 & 4i) == 0i);
+        phi_2143_ = ((_e204 & 4i) == 0i);
     }
-    let _e208 = phi_1529_;
+    let _e208 = phi_2143_;
     if _e208 {
         let _e210 = (*wo_11)[2u];
         let _e213 = (*wo_11)[2u];
@@ -2399,16 +2399,16 @@ fn mxc_lobe_layer_albedo_u0028_struct_u002d_MxcLobe_u002d_i1_u002d_i1_u002d_vf3_
     var param_178: vec3<f32>;
     var param_179: MxcLobe;
     var param_180: vec3<f32>;
-    var phi_1761_: bool;
+    var phi_2364_: bool;
 
     let _e150 = (*l_16).kind;
     let _e151 = (_e150 == 9i);
-    phi_1761_ = _e151;
+    phi_2364_ = _e151;
     if !(_e151) {
         let _e154 = (*l_16).kind;
-        phi_1761_ = (_e154 == 10i);
+        phi_2364_ = (_e154 == 10i);
     }
-    let _e157 = phi_1761_;
+    let _e157 = phi_2364_;
     if _e157 {
         let _e158 = (*l_16);
         white = _e158;
@@ -2517,7 +2517,7 @@ fn mxc_sample_image_u0028_t21_u003b_p1_u003b_vf2_u003b_vf4_u003b_i1_u003b_i1_u00
     var param_185: f32;
     var param_186: i32;
     var size_2: vec2<f32>;
-    var phi_1057_: bool;
+    var phi_1651_: bool;
 
     let _e158 = (*uv_1);
     let _e159 = dpdx(_e158);
@@ -2544,7 +2544,7 @@ fn mxc_sample_image_u0028_t21_u003b_p1_u003b_vf2_u003b_vf4_u003b_i1_u003b_i1_u00
     let _e179 = param_183;
     st[0u] = _e179;
     let _e181 = !(_e178);
-    phi_1057_ = _e181;
+    phi_1651_ = _e181;
     if !(_e181) {
         let _e184 = st[1u];
         param_185 = _e184;
@@ -2553,9 +2553,9 @@ fn mxc_sample_image_u0028_t21_u003b_p1_u003b_vf2_u003b_vf4_u003b_i1_u003b_i1_u00
         let _e186 = mxc_address_u0028_f1_u003b_i1_u003b((&param_185), (&param_186));
         let _e187 = param_185;
         st[1u] = _e187;
-        phi_1057_ = !(_e186);
+        phi_1651_ = !(_e186);
     }
-    let _e191 = phi_1057_;
+    let _e191 = phi_1651_;
     if _e191 {
         let _e192 = (*fallback_1);
         return _e192;
@@ -3015,13 +3015,13 @@ fn main_1() {
     var param_308: f32;
     var coverage: f32;
     var param_309: vec3<f32>;
-    var phi_3771_: bool;
-    var phi_3783_: bool;
-    var phi_3858_: bool;
-    var phi_3923_: bool;
-    var phi_3924_: bool;
-    var phi_3962_: bool;
-    var phi_4006_: bool;
+    var phi_641_: bool;
+    var phi_652_: bool;
+    var phi_714_: bool;
+    var phi_771_: bool;
+    var phi_772_: bool;
+    var phi_805_: bool;
+    var phi_847_: bool;
 
     mxc_texture_footprint = 1f;
     let _e263 = vPosition_1;
@@ -3257,22 +3257,22 @@ fn main_1() {
             let _e484 = n_1;
             let _e487 = smp.valid;
             let _e488 = ((_e483 < _e484) && _e487);
-            phi_3771_ = _e488;
+            phi_641_ = _e488;
             if _e488 {
                 let _e490 = smp.evaluate;
-                phi_3771_ = !(_e490);
+                phi_641_ = !(_e490);
             }
-            let _e493 = phi_3771_;
+            let _e493 = phi_641_;
             if _e493 {
                 let _e494 = image;
                 let _e495 = above_4;
                 let _e496 = (_e494 && _e495);
-                phi_3783_ = _e496;
+                phi_652_ = _e496;
                 if _e496 {
                     let _e498 = smp.delta;
-                    phi_3783_ = !(_e498);
+                    phi_652_ = !(_e498);
                 }
-                let _e501 = phi_3783_;
+                let _e501 = phi_652_;
                 if _e501 {
                     let _e503 = smp.wi;
                     param_281 = _e503;
@@ -3337,13 +3337,13 @@ fn main_1() {
                 imageWi = _e546;
                 let _e547 = lightPdf;
                 let _e548 = (_e547 > 0f);
-                phi_3858_ = _e548;
+                phi_714_ = _e548;
                 if _e548 {
                     let _e549 = imageWi;
                     let _e550 = N_2;
-                    phi_3858_ = (dot(_e549, _e550) > 0f);
+                    phi_714_ = (dot(_e549, _e550) > 0f);
                 }
-                let _e554 = phi_3858_;
+                let _e554 = phi_714_;
                 if _e554 {
                     let _e555 = imageWi;
                     param_293 = _e555;
@@ -3383,19 +3383,19 @@ fn main_1() {
                         incoming = _e585.xyz;
                         let _e587 = kinds;
                         let _e588 = (_e587 == 1i);
-                        phi_3924_ = _e588;
+                        phi_772_ = _e588;
                         if !(_e588) {
                             let _e590 = kinds;
                             let _e592 = ((_e590 & 1i) != 0i);
-                            phi_3923_ = _e592;
+                            phi_771_ = _e592;
                             if _e592 {
                                 let _e594 = light[3u];
-                                phi_3923_ = (_e594 == 0f);
+                                phi_771_ = (_e594 == 0f);
                             }
-                            let _e597 = phi_3923_;
-                            phi_3924_ = _e597;
+                            let _e597 = phi_771_;
+                            phi_772_ = _e597;
                         }
-                        let _e599 = phi_3924_;
+                        let _e599 = phi_772_;
                         directional = _e599;
                         let _e600 = directional;
                         if _e600 {
@@ -3420,12 +3420,12 @@ fn main_1() {
                             incoming = (_e618 / vec3(_e617));
                             let _e621 = kinds;
                             let _e623 = ((_e621 & 4i) != 0i);
-                            phi_3962_ = _e623;
+                            phi_805_ = _e623;
                             if _e623 {
                                 let _e625 = light[3u];
-                                phi_3962_ = (_e625 == 2f);
+                                phi_805_ = (_e625 == 2f);
                             }
-                            let _e628 = phi_3962_;
+                            let _e628 = phi_805_;
                             if _e628 {
                                 let _e629 = j_2;
                                 let _e632 = mxc_view.lightSpot[_e629];
@@ -3456,13 +3456,13 @@ fn main_1() {
                             incoming = _e659;
                             let _e660 = lightPdf;
                             let _e661 = (_e660 > 0f);
-                            phi_4006_ = _e661;
+                            phi_847_ = _e661;
                             if _e661 {
                                 let _e662 = imageWi;
                                 let _e663 = N_2;
-                                phi_4006_ = (dot(_e662, _e663) > 0f);
+                                phi_847_ = (dot(_e662, _e663) > 0f);
                             }
-                            let _e667 = phi_4006_;
+                            let _e667 = phi_847_;
                             use_ = _e667;
                         }
                     }

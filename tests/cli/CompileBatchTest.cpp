@@ -134,10 +134,13 @@ TEST(CompileBatch, AShaderCodeCompilesOnceAndWritesWhatItWritesAlone) {
   fs::create_directories(folder / "docs");
   writeText(folder / "docs/red.mtlx", document("Red"));
   writeText(folder / "docs/crimson.mtlx", document("Crimson"));
-  writeText(folder / "docs/blue.mtlx", document("Blue", "0.1, 0.1, 0.7"));  // other code: its own compile
+  // Other code, the same library: compiled in one shader with red's, its module cut from it.
+  writeText(folder / "docs/blue.mtlx", document("Blue", "0.1, 0.1, 0.7"));
   CommandRun batch = mxc("compile " + (folder / "docs").string() + " -o " + (folder / "out").string() + " -v");
   ASSERT_EQ(batch.exitCode, 0) << batch.err;
   EXPECT_NE(batch.err.find("1 material(s) had the code of a shader compiled for another"), std::string::npos) << batch.err;
+  EXPECT_NE(batch.err.find("2 module(s) were cut from shaders compiled for several materials"), std::string::npos)
+      << batch.err;
   for (const auto& [name, material] : std::map<std::string, std::string>{{"red", "Red"}, {"crimson", "Crimson"}, {"blue", "Blue"}}) {
     const fs::path alone = folder / (name + ".spv");
     CommandRun single = mxc("compile " + (folder / "docs" / (name + ".mtlx")).string() + " -o " + alone.string());

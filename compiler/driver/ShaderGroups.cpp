@@ -1,0 +1,55 @@
+#include "compiler/driver/ShaderGroups.h"
+
+#include <map>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "compiler/glsl/ShaderGroup.h"
+#include "compiler/spirv/ModuleCut.h"
+
+namespace mxc {
+
+std::string shaderCacheKey(const glsl::MaterialShader& shader, const CompileRequest& request) {
+  return fmt::format("{}{}\n{}", spirv::stageName(shader.glsl.stage), request.optimize ? " -O" : "", shader.codeKey);
+}
+
+void planShaderGroups(ShaderCache& cache, std::vector<glsl::MaterialShader> shaders, const CompileRequest& request) {
+  if (request.optimize) return;
+  // One member per distinct code (materials of one code share its module anyway), by library
+  // and stage.
+  using Members = std::vector<glsl::MaterialShader>;
+  std::map<std::string, Members> libraries;
+  std::map<std::string, bool> seen;
+  for (glsl::MaterialShader& s : shaders) {
+    if (s.codeKey.empty() || s.closureEnd <= s.closureFirst) continue;  // built by hand: no closure lines
+    if (!seen.emplace(shaderCacheKey(s, request), true).second) continue;
+    const std::string library = fmt::format("{}\n{}", spirv::stageName(s.glsl.stage), s.libraryKey);
+    libraries[library].push_back(std::move(s));
+  }
+  for (auto& [library, members] : libraries) {
+    if (members.size() < 2) continue;
+    auto group = std::make_shared<const Members>(std::move(members));
+    std::vector<std::string> keys;
+    for (const glsl::MaterialShader& s : *group) keys.push_back(shaderCacheKey(s, request));
+    cache.addGroup(keys, [group, keys] {
+      std::vector<const glsl::MaterialShader*> pointers;
+      for (const glsl::MaterialShader& s : *group) pointers.push_back(&s);
+      std::map<std::string, ShaderCache::Words> made;
+      // A group that does not compile leaves each member to compile alone, with its own
+      // document's messages: this one's are dropped.
+      Diagnostics diagnostics;
+      const std::optional<std::vector<uint32_t>> words = spirv::compile(glsl::groupSource(pointers), {}, diagnostics);
+      if (!words) return made;
+      const spirv::ModuleCutter cutter(*words);
+      for (size_t k = 0; k < pointers.size(); ++k) {
+        std::string error;
+        auto cut = cutter.cut({glsl::kClosureFunction, glsl::groupMemberFunction(k)}, error);
+        if (cut) made.emplace(keys[k], std::move(*cut));
+      }
+      return made;
+    });
+  }
+}
+
+}  // namespace mxc

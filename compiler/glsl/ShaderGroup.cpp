@@ -1,0 +1,62 @@
+#include "compiler/glsl/ShaderGroup.h"
+
+#include <stdexcept>
+#include <string_view>
+
+#include <fmt/format.h>
+
+namespace mxc::glsl {
+
+namespace {
+
+/// The lines of a shader's text.
+std::vector<std::string_view> splitLines(const std::string& text) {
+  std::vector<std::string_view> lines;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    lines.push_back(std::string_view(text).substr(start, end - start));
+    start = end + 1;
+  }
+  return lines;
+}
+
+}  // namespace
+
+std::string groupMemberFunction(size_t index) { return fmt::format("{}_m{}", kClosureFunction, index); }
+
+spirv::GlslSource groupSource(const std::vector<const MaterialShader*>& members) {
+  if (members.empty()) throw std::logic_error("a shader group without members");
+  const MaterialShader& first = *members.front();
+  const std::vector<std::string_view> lines = splitLines(first.glsl.text);
+  // The closure's first line is its signature: "void mxc_material_closure(<parameters>) {".
+  const std::string signature = fmt::format("void {}(", kClosureFunction);
+  if (first.closureEnd <= first.closureFirst || first.closureEnd > lines.size() ||
+      lines[first.closureFirst].rfind(signature, 0) != 0) {
+    throw std::logic_error("a material shader without its closure function's lines");
+  }
+  spirv::GlslSource out;
+  out.stage = first.glsl.stage;
+  out.name = fmt::format("{} materials of one library ({} first)", members.size(), first.glsl.name);
+  auto add = [&](std::string_view line) {
+    out.text += line;
+    out.text += '\n';
+  };
+  for (size_t i = 0; i < first.closureFirst; ++i) add(lines[i]);
+  for (size_t k = 0; k < members.size(); ++k) {
+    const MaterialShader& m = *members[k];
+    if (m.libraryKey != first.libraryKey) throw std::logic_error("a shader group of different libraries");
+    const std::vector<std::string_view> own = splitLines(m.glsl.text);
+    std::string_view head = own[m.closureFirst];
+    add(fmt::format("void {}({}", groupMemberFunction(k), head.substr(signature.size())));
+    for (size_t i = m.closureFirst + 1; i < m.closureEnd; ++i) add(own[i]);
+  }
+  add(lines[first.closureFirst]);
+  for (size_t k = 0; k < members.size(); ++k) add(fmt::format("  {}(g, wo, c);", groupMemberFunction(k)));
+  add("}");
+  for (size_t i = first.closureEnd; i < lines.size(); ++i) add(lines[i]);
+  return out;
+}
+
+}  // namespace mxc::glsl

@@ -1,0 +1,26 @@
+#pragma once
+/// \file
+/// One GLSL shader for materials whose shaders differ only in their `mxc_material_closure`
+/// (MaterialShader::libraryKey): a batch compiles it once and cuts each material's module from
+/// it (spirv/ModuleCut.h). The corpus's 75 materials have 20 library keys.
+
+#include <string>
+#include <vector>
+
+#include "compiler/glsl/ShaderBuilder.h"
+
+namespace mxc::glsl {
+
+/// The name every material shader's closure function has.
+inline constexpr const char* kClosureFunction = "mxc_material_closure";
+
+/// The name member `index` of a group gives its closure function.
+std::string groupMemberFunction(size_t index);
+
+/// The shader of the group: the first member's text with, in place of its closure function,
+/// each member's (renamed groupMemberFunction(k)) and a forwarder under kClosureFunction that
+/// calls them all (so that glslang, which drops functions nothing calls, compiles them all).
+/// Every member must have the first's library key.
+spirv::GlslSource groupSource(const std::vector<const MaterialShader*>& members);
+
+}  // namespace mxc::glsl

@@ -1,0 +1,473 @@
+#include "compiler/spirv/ModuleCut.h"
+
+#include <algorithm>
+#include <string_view>
+#include <tuple>
+
+#include <fmt/format.h>
+#include <glslang/SPIRV/spirv.hpp>
+#include <spirv-tools/libspirv.h>
+
+// The module's layout is the SPIR-V specification's, section 2.4 (Logical Layout of a Module).
+
+namespace mxc::spirv {
+
+namespace {
+
+enum Section : uint8_t {
+  kCapabilities,
+  kExtensions,
+  kImports,
+  kMemoryModel,
+  kEntryPoints,
+  kExecutionModes,
+  kDebug,
+  kAnnotations,
+  kGlobals,
+  kFunctions,
+  kSectionCount
+};
+
+/// One instruction, its words and operands by offset into the module's flat arrays.
+struct Instruction {
+  uint32_t at = 0;        ///< index of its first word in Parsed::words
+  uint32_t firstUse = 0;  ///< index of its first ID use in Parsed::uses
+  uint16_t count = 0;     ///< words
+  uint16_t opcode = 0;
+  uint16_t useCount = 0;  ///< IDs it uses (its type included), their word offsets in order
+  uint16_t resultAt = 0;  ///< word offset of its result ID; 0 for none
+};
+
+bool isId(spv_operand_type_t type) {
+  return type == SPV_OPERAND_TYPE_ID || type == SPV_OPERAND_TYPE_TYPE_ID ||
+         type == SPV_OPERAND_TYPE_MEMORY_SEMANTICS_ID || type == SPV_OPERAND_TYPE_SCOPE_ID;
+}
+
+Section sectionOf(spv::Op op) {
+  switch (op) {
+    case spv::OpCapability: return kCapabilities;
+    case spv::OpExtension: return kExtensions;
+    case spv::OpExtInstImport: return kImports;
+    case spv::OpMemoryModel: return kMemoryModel;
+    case spv::OpEntryPoint: return kEntryPoints;
+    case spv::OpExecutionMode:
+    case spv::OpExecutionModeId: return kExecutionModes;
+    case spv::OpString:
+    case spv::OpSourceExtension:
+    case spv::OpSource:
+    case spv::OpSourceContinued:
+    case spv::OpName:
+    case spv::OpMemberName:
+    case spv::OpModuleProcessed: return kDebug;
+    case spv::OpDecorate:
+    case spv::OpMemberDecorate:
+    case spv::OpDecorateString:
+    case spv::OpMemberDecorateString: return kAnnotations;
+    default: return kGlobals;
+  }
+}
+
+/// The words of a literal string (UTF-8, nul-terminated, padded to a word: section 2.2.1).
+std::vector<uint32_t> stringWords(std::string_view s) {
+  std::vector<uint32_t> words(s.size() / 4 + 1, 0u);
+  for (size_t i = 0; i < s.size(); ++i) words[i / 4] |= uint32_t(static_cast<unsigned char>(s[i])) << (8 * (i % 4));
+  return words;
+}
+
+/// Whether the capability is still needed by the remaining code, for those whose need follows
+/// from the opcodes present (the capability column of each instruction in the specification);
+/// nullopt for the others.
+std::optional<bool> capabilityNeeded(uint32_t capability, const std::vector<char>& present) {
+  auto any = [&](uint32_t first, uint32_t last) {
+    for (uint32_t op = first; op <= last && op < present.size(); ++op) {
+      if (present[op]) return true;
+    }
+    return false;
+  };
+  switch (static_cast<spv::Capability>(capability)) {
+    case spv::CapabilityShader:
+    case spv::CapabilityMatrix: return true;  // implied by the shader stage itself
+    case spv::CapabilityImageQuery: return any(spv::OpImageQuerySizeLod, spv::OpImageQuerySamples);
+    case spv::CapabilityGroupNonUniform: return any(spv::OpGroupNonUniformElect, spv::OpGroupNonUniformQuadSwap);
+    case spv::CapabilityGroupNonUniformBallot:
+      return any(spv::OpGroupNonUniformBroadcast, spv::OpGroupNonUniformBallotFindMSB);
+    default: return std::nullopt;
+  }
+}
+
+}  // namespace
+
+struct ModuleCutter::Parsed {
+  uint32_t version = 0;
+  uint32_t generator = 0;
+  uint32_t bound = 0;
+  std::vector<uint32_t> words;
+  std::vector<uint16_t> uses;
+  std::vector<Instruction> instructions;
+  std::vector<uint32_t> sections[kSectionCount];  ///< instruction indices; kFunctions: every function instruction
+  std::vector<std::pair<uint32_t, uint32_t>> functions;  ///< [first, end) into sections[kFunctions]
+  std::vector<uint32_t> globalAt;    ///< by ID: the global instruction defining it, or kNone
+  std::vector<uint32_t> functionAt;  ///< by ID: the function it is, or kNone
+  std::string error;
+  bool inFunction = false;
+
+  static constexpr uint32_t kNone = ~0u;
+
+  uint32_t word(const Instruction& i, uint32_t offset) const { return words[i.at + offset]; }
+  uint32_t result(const Instruction& i) const { return i.resultAt ? word(i, i.resultAt) : 0u; }
+  const uint16_t* usesOf(const Instruction& i) const { return uses.data() + i.firstUse; }
+
+  std::string literalString(const Instruction& inst, uint32_t offset) const {
+    std::string s;
+    for (uint32_t w = offset; w < inst.count; ++w) {
+      for (int b = 0; b < 4; ++b) {
+        const char c = static_cast<char>((word(inst, w) >> (8 * b)) & 0xffu);
+        if (c == '\0') return s;
+        s += c;
+      }
+    }
+    return s;
+  }
+
+  /// The function whose OpName is `name` followed by glslang's parameter list; 0 for none.
+  uint32_t functionNamed(const std::string& name) const {
+    const std::string prefix = name + "(";
+    for (uint32_t index : sections[kDebug]) {
+      const Instruction& d = instructions[index];
+      if (d.opcode != spv::OpName || d.count < 3) continue;
+      const uint32_t target = word(d, 1);
+      if (target < bound && functionAt[target] != kNone && literalString(d, 2).rfind(prefix, 0) == 0) return target;
+    }
+    return 0;
+  }
+};
+
+namespace {
+
+spv_result_t onHeader(void* user, spv_endianness_t, uint32_t, uint32_t version, uint32_t generator, uint32_t bound,
+                      uint32_t) {
+  auto& m = *static_cast<ModuleCutter::Parsed*>(user);
+  m.version = version;
+  m.generator = generator;
+  m.bound = bound;
+  m.words.reserve(size_t(bound) * 5);
+  m.instructions.reserve(bound);
+  return SPV_SUCCESS;
+}
+
+spv_result_t onInstruction(void* user, const spv_parsed_instruction_t* parsed) {
+  auto& m = *static_cast<ModuleCutter::Parsed*>(user);
+  Instruction inst;
+  inst.at = uint32_t(m.words.size());
+  inst.count = parsed->num_words;
+  inst.opcode = parsed->opcode;
+  inst.firstUse = uint32_t(m.uses.size());
+  m.words.insert(m.words.end(), parsed->words, parsed->words + parsed->num_words);
+  for (uint16_t i = 0; i < parsed->num_operands; ++i) {
+    const spv_parsed_operand_t& o = parsed->operands[i];
+    const bool result = o.type == SPV_OPERAND_TYPE_RESULT_ID;
+    if (!result && !isId(o.type)) continue;
+    // Every ID is below the header's bound (section 2.3), which sizes the cut's tables.
+    if (parsed->words[o.offset] >= m.bound) {
+      m.error = fmt::format("the module uses ID {}, not below its bound {}", parsed->words[o.offset], m.bound);
+      return SPV_ERROR_INVALID_ID;
+    }
+    if (result) {
+      inst.resultAt = o.offset;
+    } else {
+      m.uses.push_back(o.offset);
+      ++inst.useCount;
+    }
+  }
+  const auto op = static_cast<spv::Op>(inst.opcode);
+  switch (op) {
+    case spv::OpDecorateId:
+    case spv::OpDecorationGroup:
+    case spv::OpGroupDecorate:
+    case spv::OpGroupMemberDecorate:
+    case spv::OpLine:
+    case spv::OpNoLine:
+      // glslang writes none of these for mxc's shaders (no -g); a decoration naming IDs
+      // besides its target, or a group, would need more than a target to keep or remove.
+      m.error = fmt::format("the module has an instruction the cut does not handle (opcode {})", inst.opcode);
+      return SPV_ERROR_INVALID_BINARY;
+    default: break;
+  }
+  const uint32_t index = uint32_t(m.instructions.size());
+  m.instructions.push_back(inst);
+  // Inside a function everything belongs to it, up to its OpFunctionEnd.
+  if (m.inFunction || op == spv::OpFunction) {
+    if (op == spv::OpFunction) {
+      m.functions.emplace_back(uint32_t(m.sections[kFunctions].size()), 0u);
+      m.inFunction = true;
+    }
+    m.sections[kFunctions].push_back(index);
+    if (op == spv::OpFunctionEnd) {
+      m.functions.back().second = uint32_t(m.sections[kFunctions].size());
+      m.inFunction = false;
+    }
+    return SPV_SUCCESS;
+  }
+  m.sections[sectionOf(op)].push_back(index);
+  return SPV_SUCCESS;
+}
+
+}  // namespace
+
+ModuleCutter::ModuleCutter(const std::vector<uint32_t>& module) : parsed_(std::make_unique<Parsed>()) {
+  Parsed& m = *parsed_;
+  spv_context context = spvContextCreate(SPV_ENV_VULKAN_1_1);
+  const spv_result_t result =
+      spvBinaryParse(context, &m, module.data(), module.size(), onHeader, onInstruction, nullptr);
+  spvContextDestroy(context);
+  if (result != SPV_SUCCESS) {
+    if (m.error.empty()) m.error = "the module does not parse";
+    return;
+  }
+  if (m.inFunction) {
+    m.error = "the module ends inside a function";
+    return;
+  }
+  m.globalAt.assign(m.bound, Parsed::kNone);
+  m.functionAt.assign(m.bound, Parsed::kNone);
+  for (uint32_t index : m.sections[kGlobals]) {
+    if (const uint32_t id = m.result(m.instructions[index]); id && id < m.bound) m.globalAt[id] = index;
+  }
+  for (size_t f = 0; f < m.functions.size(); ++f) {
+    const Instruction& head = m.instructions[m.sections[kFunctions][m.functions[f].first]];
+    if (const uint32_t id = m.result(head); id < m.bound) m.functionAt[id] = uint32_t(f);
+  }
+}
+
+ModuleCutter::~ModuleCutter() = default;
+
+const std::string& ModuleCutter::error() const { return parsed_->error; }
+
+std::optional<std::vector<uint32_t>> ModuleCutter::cut(const CutRequest& request, std::string& error) const {
+  const Parsed& m = *parsed_;
+  if (!m.error.empty()) {
+    error = m.error;
+    return std::nullopt;
+  }
+  constexpr uint32_t kNone = Parsed::kNone;
+  const bool cutting = !request.forwarder.empty();
+  uint32_t forwarder = 0, member = 0;
+  if (cutting) {
+    forwarder = m.functionNamed(request.forwarder);
+    member = m.functionNamed(request.member);
+    if (!forwarder || !member) {
+      error = fmt::format("the module has no function '{}' or '{}'", request.forwarder, request.member);
+      return std::nullopt;
+    }
+  }
+  // Every use of the forwarder (its calls: the only way GLSL uses a function) is the member's.
+  auto used = [&](uint32_t id) { return id == forwarder && cutting ? member : id; };
+  auto functionInstructions = [&](size_t f) {
+    const auto [first, end] = m.functions[f];
+    return std::pair(m.sections[kFunctions].data() + first, m.sections[kFunctions].data() + end);
+  };
+
+  // What the entry points reach: their functions and interfaces, then everything their
+  // instructions use. Every result inside a reached function is kept with it.
+  std::vector<char> kept(m.bound, 0);
+  std::vector<uint32_t> work;
+  auto reach = [&](uint32_t id) {
+    id = used(id);
+    if (id < m.bound && !kept[id]) {
+      kept[id] = 1;
+      work.push_back(id);
+    }
+  };
+  auto reachUses = [&](const Instruction& inst) {
+    const uint16_t* u = m.usesOf(inst);
+    for (uint16_t k = 0; k < inst.useCount; ++k) reach(m.word(inst, u[k]));
+  };
+  for (Section s : {kEntryPoints, kExecutionModes}) {
+    for (uint32_t index : m.sections[s]) reachUses(m.instructions[index]);
+  }
+  for (uint32_t index : m.sections[kDebug]) {
+    if (m.instructions[index].opcode == spv::OpString) reach(m.result(m.instructions[index]));
+  }
+  std::vector<char> present(65536, 0);  // the opcodes of what is kept
+  while (!work.empty()) {
+    const uint32_t id = work.back();
+    work.pop_back();
+    if (m.globalAt[id] != kNone) {
+      reachUses(m.instructions[m.globalAt[id]]);
+    } else if (m.functionAt[id] != kNone) {
+      const auto [first, end] = functionInstructions(m.functionAt[id]);
+      for (const uint32_t* i = first; i != end; ++i) {
+        const Instruction& inst = m.instructions[*i];
+        present[inst.opcode] = 1;
+        if (const uint32_t r = m.result(inst)) kept[r] = 1;
+        reachUses(inst);
+      }
+    }
+  }
+  for (uint32_t index : m.sections[kGlobals]) {
+    const Instruction& g = m.instructions[index];
+    if (kept[m.result(g)]) present[g.opcode] = 1;
+  }
+
+  std::vector<uint32_t> capabilities;
+  for (uint32_t index : m.sections[kCapabilities]) {
+    const uint32_t capability = m.word(m.instructions[index], 1);
+    const std::optional<bool> needed = capabilityNeeded(capability, present);
+    if (!needed && cutting) {
+      error = fmt::format("the module declares capability {}, which the cut cannot decide", capability);
+      return std::nullopt;
+    }
+    if (needed.value_or(true)) capabilities.push_back(index);
+  }
+  if (cutting && !m.sections[kExtensions].empty()) {
+    error = "the module declares an extension, which the cut cannot decide";
+    return std::nullopt;
+  }
+
+  // The global section in the order the code first uses it, each instruction after those it
+  // uses (a type before the pointer to it, a constant's type and constituents before it).
+  std::vector<uint32_t> globals;
+  std::vector<char> placed(m.bound, 0);
+  // Type and constant chains are a few levels deep (a pointer to a struct of arrays of vectors).
+  auto place = [&](auto&& self, uint32_t id) -> void {
+    id = used(id);
+    if (id >= m.bound || placed[id] || !kept[id] || m.globalAt[id] == kNone) return;
+    placed[id] = 1;
+    const Instruction& g = m.instructions[m.globalAt[id]];
+    const uint16_t* u = m.usesOf(g);
+    for (uint16_t k = 0; k < g.useCount; ++k) self(self, m.word(g, u[k]));
+    globals.push_back(m.globalAt[id]);
+  };
+  auto placeUses = [&](const Instruction& inst) {
+    const uint16_t* u = m.usesOf(inst);
+    for (uint16_t k = 0; k < inst.useCount; ++k) place(place, m.word(inst, u[k]));
+  };
+  std::vector<size_t> functions;  // kept, in module order
+  for (size_t f = 0; f < m.functions.size(); ++f) {
+    if (kept[m.result(m.instructions[m.sections[kFunctions][m.functions[f].first]])]) functions.push_back(f);
+  }
+  for (size_t f : functions) {
+    const auto [first, end] = functionInstructions(f);
+    for (const uint32_t* i = first; i != end; ++i) placeUses(m.instructions[*i]);
+  }
+  for (uint32_t index : m.sections[kEntryPoints]) placeUses(m.instructions[index]);
+  for (uint32_t index : m.sections[kGlobals]) place(place, m.result(m.instructions[index]));
+
+  // IDs numbered in the order they are defined or first used.
+  std::vector<uint32_t> renumbered(m.bound, 0);
+  uint32_t next = 1;
+  auto number = [&](uint32_t id) {
+    id = used(id);
+    if (id < m.bound && !renumbered[id]) renumbered[id] = next++;
+  };
+  auto numberAll = [&](const Instruction& inst) {
+    const uint16_t* u = m.usesOf(inst);
+    bool resultDone = inst.resultAt == 0;
+    for (uint16_t k = 0; k < inst.useCount; ++k) {
+      if (!resultDone && inst.resultAt < u[k]) {
+        number(m.word(inst, inst.resultAt));
+        resultDone = true;
+      }
+      number(m.word(inst, u[k]));
+    }
+    if (!resultDone) number(m.word(inst, inst.resultAt));
+  };
+  for (uint32_t index : m.sections[kImports]) {
+    if (kept[m.result(m.instructions[index])]) number(m.result(m.instructions[index]));
+  }
+  for (uint32_t index : m.sections[kDebug]) {
+    if (m.instructions[index].opcode == spv::OpString) number(m.result(m.instructions[index]));
+  }
+  for (uint32_t index : globals) numberAll(m.instructions[index]);
+  for (size_t f : functions) {
+    const auto [first, end] = functionInstructions(f);
+    for (const uint32_t* i = first; i != end; ++i) numberAll(m.instructions[*i]);
+  }
+
+  // Names and decorations of what is kept, by the ID they name (word 1), each ID's in the
+  // order glslang wrote them (the order its code adds them, the same in every module).
+  auto targetKept = [&](const Instruction& inst) {
+    const uint32_t target = inst.count > 1 ? m.word(inst, 1) : 0u;
+    return target < m.bound && kept[target] && !(cutting && target == forwarder);
+  };
+  std::vector<uint32_t> sources, names, processed, annotations;
+  for (uint32_t index : m.sections[kDebug]) {
+    const Instruction& d = m.instructions[index];
+    if (d.opcode == spv::OpName || d.opcode == spv::OpMemberName) {
+      if (targetKept(d)) names.push_back(index);
+    } else {
+      (d.opcode == spv::OpModuleProcessed ? processed : sources).push_back(index);
+    }
+  }
+  for (uint32_t index : m.sections[kAnnotations]) {
+    if (targetKept(m.instructions[index])) annotations.push_back(index);
+  }
+  auto newTarget = [&](uint32_t index) { return renumbered[used(m.word(m.instructions[index], 1))]; };
+  // A struct's OpName before its OpMemberNames, these by member index.
+  std::stable_sort(names.begin(), names.end(), [&](uint32_t a, uint32_t b) {
+    const Instruction& x = m.instructions[a];
+    const Instruction& y = m.instructions[b];
+    const uint32_t mx = x.opcode == spv::OpMemberName ? m.word(x, 2) : 0u;
+    const uint32_t my = y.opcode == spv::OpMemberName ? m.word(y, 2) : 0u;
+    return std::tuple(newTarget(a), x.opcode, mx) < std::tuple(newTarget(b), y.opcode, my);
+  });
+  std::stable_sort(annotations.begin(), annotations.end(),
+                   [&](uint32_t a, uint32_t b) { return newTarget(a) < newTarget(b); });
+
+  std::vector<uint32_t> out = {spv::MagicNumber, m.version, m.generator, next, 0u};
+  out.reserve(m.words.size());
+  bool missing = false;
+  auto emit = [&](uint32_t index) {
+    const Instruction& inst = m.instructions[index];
+    const size_t at = out.size();
+    const std::string name = cutting && inst.opcode == spv::OpName && used(m.word(inst, 1)) == member
+                                 ? m.literalString(inst, 2) : std::string();
+    if (name.rfind(request.member + "(", 0) == 0) {
+      // The member takes the forwarder's name: "<member>(params" becomes "<forwarder>(params".
+      const std::string renamed = request.forwarder + name.substr(request.member.size());
+      const std::vector<uint32_t> text = stringWords(renamed);
+      out.push_back((uint32_t(2 + text.size()) << 16) | spv::OpName);
+      out.push_back(renumbered[member]);
+      out.insert(out.end(), text.begin(), text.end());
+      return;
+    }
+    out.insert(out.end(), m.words.begin() + inst.at, m.words.begin() + inst.at + inst.count);
+    auto rewrite = [&](uint32_t offset) {
+      const uint32_t id = used(out[at + offset]);
+      if (id >= m.bound || !renumbered[id]) missing = true;
+      else out[at + offset] = renumbered[id];
+    };
+    const uint16_t* u = m.usesOf(inst);
+    for (uint16_t k = 0; k < inst.useCount; ++k) rewrite(u[k]);
+    if (inst.resultAt) rewrite(inst.resultAt);
+    // OpEntryPoint: execution model, function, name, then the interface IDs, by ID.
+    if (inst.opcode == spv::OpEntryPoint && inst.useCount > 1) {
+      std::sort(out.begin() + long(at + u[1]), out.begin() + long(at + inst.count));
+    }
+  };
+  for (uint32_t index : capabilities) emit(index);
+  for (Section s : {kExtensions, kImports, kMemoryModel, kEntryPoints, kExecutionModes}) {
+    for (uint32_t index : m.sections[s]) {
+      if (s != kImports || kept[m.result(m.instructions[index])]) emit(index);
+    }
+  }
+  for (const std::vector<uint32_t>* part : {&sources, &names, &processed, &annotations, &globals}) {
+    for (uint32_t index : *part) emit(index);
+  }
+  for (size_t f : functions) {
+    const auto [first, end] = functionInstructions(f);
+    for (const uint32_t* i = first; i != end; ++i) emit(*i);
+  }
+  if (missing) {
+    error = "the cut left an instruction using an ID it removed";
+    return std::nullopt;
+  }
+  return out;
+}
+
+std::optional<std::vector<uint32_t>> cutModule(const std::vector<uint32_t>& module, const CutRequest& request,
+                                               std::string& error) {
+  return ModuleCutter(module).cut(request, error);
+}
+
+}  // namespace mxc::spirv
