@@ -338,10 +338,27 @@ int runCompileBatch(const CompileOptions& options) {
       jobs[i]->result.messages += fmt::format("error: {}: {}\n", items[i].file.string(), e.what());
     }
   };
+  // glslang builds its built-in symbol tables (135 M instructions) at the first compile of a
+  // version, once per process, and a second worker's first compile waits for them. The vertex
+  // stage every raster output has beside it is of the fragment stage's version: compiled while
+  // the documents are prepared, it has the tables ready for the group compiles.
+  std::thread tables;
+  if (batch.kind == glsl::ShaderKind::Raster && !options.output.empty()) {
+    tables = std::thread([] {
+      try {
+        vertexStageSpirv();
+      } catch (const std::exception&) {
+        // The workers meet the same failure where they write the vertex stage, and report it.
+      }
+    });
+  }
+  const auto preparing = std::chrono::steady_clock::now();
   forEachItem([&](size_t i) {
     jobs[i] = std::make_unique<Job>();
     guarded(i, [&] { prepareItem(batch, items[i], *jobs[i]); });
   });
+  if (tables.joinable()) tables.join();
+  detail("prepared {} document(s) in {:.1f} ms", items.size(), millisecondsSince(preparing));
   // The shaders of one library compile as one (driver/ShaderGroups.h), each group before the
   // documents that need it, the largest first, so that no worker waits on another's group.
   {
@@ -355,6 +372,7 @@ int runCompileBatch(const CompileOptions& options) {
   }
   std::mutex printing;
   Progress progress(items.size());
+  const auto compiling = std::chrono::steady_clock::now();
   forEachItem([&](size_t i) {
     while (shaderCache.compileAGroup()) {
     }
@@ -367,9 +385,10 @@ int runCompileBatch(const CompileOptions& options) {
     }
     progress.step(items[i].file.filename().string());
   });
+  progress.clear();
+  detail("compiled and wrote them in {:.1f} ms", millisecondsSince(compiling));
   std::vector<ItemResult> results(items.size());
   for (size_t i = 0; i < items.size(); ++i) results[i] = std::move(jobs[i]->result);
-  progress.clear();
 
   size_t compiled = 0, nothing = 0, materials = 0;
   std::vector<std::string> failed;

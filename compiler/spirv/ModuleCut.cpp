@@ -129,14 +129,13 @@ struct ModuleCutter::Parsed {
     return s;
   }
 
-  /// The function whose OpName is `name` followed by glslang's parameter list; 0 for none.
+  /// Each function's name as GLSL spells it: its OpName up to glslang's parameter list.
+  std::vector<std::pair<std::string, uint32_t>> functionNames;
+
+  /// The function named `name`; 0 for none.
   uint32_t functionNamed(const std::string& name) const {
-    const std::string prefix = name + "(";
-    for (uint32_t index : sections[kDebug]) {
-      const Instruction& d = instructions[index];
-      if (d.opcode != spv::OpName || d.count < 3) continue;
-      const uint32_t target = word(d, 1);
-      if (target < bound && functionAt[target] != kNone && literalString(d, 2).rfind(prefix, 0) == 0) return target;
+    for (const auto& [function, id] : functionNames) {
+      if (function == name) return id;
     }
     return 0;
   }
@@ -236,6 +235,12 @@ ModuleCutter::ModuleCutter(const std::vector<uint32_t>& module) : parsed_(std::m
   for (size_t f = 0; f < m.functions.size(); ++f) {
     const Instruction& head = m.instructions[m.sections[kFunctions][m.functions[f].first]];
     if (const uint32_t id = m.result(head); id < m.bound) m.functionAt[id] = uint32_t(f);
+  }
+  for (uint32_t index : m.sections[kDebug]) {
+    const Instruction& d = m.instructions[index];
+    if (d.opcode != spv::OpName || d.count < 3 || m.functionAt[m.word(d, 1)] == Parsed::kNone) continue;
+    const std::string name = m.literalString(d, 2);
+    m.functionNames.emplace_back(name.substr(0, name.find('(')), m.word(d, 1));
   }
 }
 
@@ -414,15 +419,16 @@ std::optional<std::vector<uint32_t>> ModuleCutter::cut(const CutRequest& request
   std::stable_sort(annotations.begin(), annotations.end(),
                    [&](uint32_t a, uint32_t b) { return newTarget(a) < newTarget(b); });
 
+  const std::string memberPrefix = request.member + "(";
   std::vector<uint32_t> out = {spv::MagicNumber, m.version, m.generator, next, 0u};
   out.reserve(m.words.size());
   bool missing = false;
   auto emit = [&](uint32_t index) {
     const Instruction& inst = m.instructions[index];
     const size_t at = out.size();
-    const std::string name = cutting && inst.opcode == spv::OpName && used(m.word(inst, 1)) == member
-                                 ? m.literalString(inst, 2) : std::string();
-    if (name.rfind(request.member + "(", 0) == 0) {
+    std::string name;
+    if (cutting && inst.opcode == spv::OpName && used(m.word(inst, 1)) == member) name = m.literalString(inst, 2);
+    if (!name.empty() && name.rfind(memberPrefix, 0) == 0) {
       // The member takes the forwarder's name: "<member>(params" becomes "<forwarder>(params".
       const std::string renamed = request.forwarder + name.substr(request.member.size());
       const std::vector<uint32_t> text = stringWords(renamed);
