@@ -123,7 +123,11 @@ class Writer {
         key += lines_.text[i];
         key += '\n';
         if (i < closure_.first || i >= closure_.second) {
-          libraryKey += lines_.text[i];
+          // Without its comment: a texture's declaration names its file in one, and materials
+          // whose declarations differ only there compile as one (GLSL has no strings: `//`
+          // always starts a comment).
+          const std::string& line = lines_.text[i];
+          libraryKey.append(line, 0, line.find("//"));
           libraryKey += '\n';
         }
       }

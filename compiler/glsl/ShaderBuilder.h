@@ -56,8 +56,8 @@ struct MaterialShader {
   /// file by its path (its text is fixed in the executable). Two shaders with the same key
   /// compile to the same SPIR-V (ShaderCache).
   std::string codeKey;
-  /// The code key but for the body of `mxc_material_closure`: shaders with the same library key
-  /// compile as one shader in a batch (ShaderGroup.h).
+  /// The code key but for the body of `mxc_material_closure` and for comments: shaders with the
+  /// same library key compile as one shader in a batch (ShaderGroup.h).
   std::string libraryKey;
   /// The lines [first, end) of glsl.text that define `mxc_material_closure`.
   size_t closureFirst = 0;

@@ -167,5 +167,34 @@ TEST(ShaderBuilder, CodeKeyIgnoresTheNamesAndKeepsTheCode) {
   EXPECT_NE(a.codeKey.find("void mxc_material_closure("), std::string::npos);
 }
 
+// The library key (what a batch's group compile shares, ShaderGroup.h) leaves out the closure
+// function's body and the comments: two materials whose textures differ only in their files
+// are one library, while their codes differ.
+TEST(ShaderBuilder, LibraryKeyLeavesOutTheClosureAndComments) {
+  auto textured = [](const std::string& file, const std::string& roughness) {
+    return mtlx("  <image name=\"img\" type=\"color3\"><input name=\"file\" type=\"filename\" value=\"" + file +
+                "\" /></image>\n  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n"
+                "    <input name=\"base_color\" type=\"color3\" nodename=\"img\" />\n"
+                "    <input name=\"specular_roughness\" type=\"float\" value=\"" + roughness + "\" />\n"
+                "  </open_pbr_surface>\n  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
+                "type=\"surfaceshader\" nodename=\"s\" /></surfacematerial>\n");
+  };
+  const glsl::MaterialShader a = shaderOf(textured("a.png", "0.3"));
+  const glsl::MaterialShader b = shaderOf(textured("b.png", "0.3"));
+  const glsl::MaterialShader rougher = shaderOf(textured("a.png", "0.6"));
+  ASSERT_EQ(a.interface.textures.size(), 1u);
+  EXPECT_NE(a.codeKey, b.codeKey);  // the declaration's comment names the file
+  EXPECT_EQ(a.libraryKey, b.libraryKey);
+  EXPECT_NE(a.codeKey, rougher.codeKey);  // a constant of the closure
+  EXPECT_EQ(a.libraryKey, rougher.libraryKey);
+  EXPECT_EQ(a.libraryKey.find("a.png"), std::string::npos);
+  // The closure's lines are the function, whole.
+  const std::string& text = a.glsl.text;
+  size_t line = 0, at = 0;
+  for (; line < a.closureFirst; ++line) at = text.find('\n', at) + 1;
+  EXPECT_EQ(text.compare(at, 26, "void mxc_material_closure("), 0) << text.substr(at, 80);
+  EXPECT_EQ(a.libraryKey.find("void mxc_material_closure("), std::string::npos);
+}
+
 }  // namespace
 }  // namespace mxc::test
