@@ -346,7 +346,7 @@ int runCompileBatch(const CompileOptions& options) {
   if (batch.kind == glsl::ShaderKind::Raster && !options.output.empty()) {
     tables = std::thread([] {
       try {
-        vertexStageSpirv();
+        glsl::vertexStageSpirv();
       } catch (const std::exception&) {
         // The workers meet the same failure where they write the vertex stage, and report it.
       }

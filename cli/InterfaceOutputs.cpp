@@ -44,7 +44,7 @@ std::string bytesOf(const std::vector<uint32_t>& words) {
 /// a target places alike: it is translated and checked once per run for each placement of its own
 /// descriptors, not once per material of a batch (for WGSL, two runs of naga each).
 std::optional<target::Translation> vertexStageIn(Compiler& compiler, const std::vector<target::Placement>& placements) {
-  static const std::vector<std::pair<uint32_t, uint32_t>> bound = target::descriptorBindings(vertexStageSpirv());
+  static const std::vector<std::pair<uint32_t, uint32_t>> bound = target::descriptorBindings(glsl::vertexStageSpirv());
   const target::Target target = compiler.request().target;
   std::vector<target::Placement> own;
   std::string key(target::targetName(target));
@@ -59,7 +59,7 @@ std::optional<target::Translation> vertexStageIn(Compiler& compiler, const std::
     const std::lock_guard<std::mutex> lock(mutex);
     if (auto found = translated.find(key); found != translated.end()) return found->second;
   }
-  std::optional<target::Translation> vertex = compiler.translate(vertexStageSpirv(), spirv::Stage::Vertex, own, "the vertex stage");
+  std::optional<target::Translation> vertex = compiler.translate(glsl::vertexStageSpirv(), spirv::Stage::Vertex, own, "the vertex stage");
   if (vertex) {
     const std::lock_guard<std::mutex> lock(mutex);
     translated.emplace(key, *vertex);
@@ -124,7 +124,7 @@ Staged stageShaderOutputs(OutputSet& outputs, const fs::path& path, bool interfa
       vertexEntry = vertex->entryPoint;
     }
   } else if (interface && raster) {
-    vertexText = bytesOf(vertexStageSpirv());
+    vertexText = bytesOf(glsl::vertexStageSpirv());
   }
   if (auto why = outputs.stage(path, std::move(text))) return error = *why, Staged::OutputFailed;
   if (!interface) return Staged::Ok;

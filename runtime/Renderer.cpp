@@ -295,10 +295,7 @@ RgbaImage renderBackground(const RenderSettings& s) {
 }
 
 Renderer::Renderer(VulkanContext& context, const AlbedoTables& tables) : context_(context), tables_(tables) {
-  Diagnostics diagnostics;
-  auto words = spirv::compile(glsl::buildVertexShader(), {}, diagnostics);
-  if (!words) throw VulkanError("the renderer's vertex shader does not compile:\n" + diagnostics.format());
-  vertexSpirv_ = std::move(*words);
+  vertexSpirv_ = glsl::vertexStageSpirv();
   black_ = std::make_unique<EnvironmentMap>(context, RgbaImage{});
 }
 

@@ -109,17 +109,6 @@ glsl::MaterialShader buildShader(const ir::Material& material, glsl::ShaderKind 
   return glsl::buildMaterialShader(material, kind, options);
 }
 
-const std::vector<uint32_t>& vertexStageSpirv() {
-  static const std::vector<uint32_t> words = [] {
-    Diagnostics diagnostics;
-    auto compiled = spirv::compile(glsl::buildVertexShader(), {}, diagnostics);
-    // The vertex stage is mxc's own fixed code, compiled by every test: a failure is a bug.
-    if (!compiled) throw std::logic_error("the vertex stage does not compile: " + diagnostics.format());
-    return std::move(*compiled);
-  }();
-  return words;
-}
-
 std::optional<std::vector<uint32_t>> compileShader(const glsl::MaterialShader& shader, const CompileRequest& request,
                                                    Diagnostics& diagnostics) {
   return compileShader(shader, request, request.shaderCache, diagnostics);

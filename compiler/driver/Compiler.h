@@ -162,9 +162,6 @@ class Compiler {
 void finishMaterial(ir::Material& material, const CompileRequest& request = {});
 /// The GLSL of the material's shader of `kind`.
 glsl::MaterialShader buildShader(const ir::Material& material, glsl::ShaderKind kind, const CompileRequest& request = {});
-/// The raster renderer's vertex stage (glsl::buildVertexShader, the same for every material)
-/// as validated SPIR-V, compiled once per process.
-const std::vector<uint32_t>& vertexStageSpirv();
 
 /// The shader compiled to validated SPIR-V; nullopt (reported in `diagnostics`) when glslang
 /// rejects it. Through `cache` when there is one (default: the request's).

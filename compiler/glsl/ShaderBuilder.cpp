@@ -318,6 +318,17 @@ spirv::GlslSource buildVertexShader() {
   return w.finish(spirv::Stage::Vertex, "renderer (vertex)");
 }
 
+const std::vector<uint32_t>& vertexStageSpirv() {
+  static const std::vector<uint32_t> words = [] {
+    Diagnostics diagnostics;
+    auto compiled = spirv::compile(buildVertexShader(), {}, diagnostics);
+    // The vertex stage is mxc's own fixed code, compiled by every test: a failure is a bug.
+    if (!compiled) throw std::logic_error("the vertex stage does not compile: " + diagnostics.format());
+    return std::move(*compiled);
+  }();
+  return words;
+}
+
 spirv::GlslSource buildTablesShader() {
   Writer w;
   versionLines(w, false);

@@ -90,6 +90,9 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
 
 /// The vertex shader of the raster renderer (the same for every material).
 spirv::GlslSource buildVertexShader();
+/// buildVertexShader() as validated SPIR-V, compiled once per process: the renderer's and the
+/// vertex stage `mxc compile` writes beside each fragment shader.
+const std::vector<uint32_t>& vertexStageSpirv();
 /// The compute shader that fills the albedo tables the lobes read (kTableSize^2 texels).
 spirv::GlslSource buildTablesShader();
 

@@ -14,7 +14,7 @@ namespace {
 class TargetCorpus : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(TargetCorpus, EveryMaterialTranslatesToEveryTarget) {
-  const std::vector<uint32_t>& vertex = vertexStageSpirv();
+  const std::vector<uint32_t>& vertex = glsl::vertexStageSpirv();
   for (target::Target t : target::allTargets()) {
     if (t == target::Target::Spirv) continue;
     Context context;

@@ -37,7 +37,7 @@ std::string translated(const std::string& relative, target::Target t) {
       out += "// " + p.resource.name + " " + target::placementJson(p, t).dump() + "\n";
     }
     const auto fragment = compiler.translate(*words, spirv::Stage::Fragment, placements, material.name);
-    const auto vertexText = compiler.translate(vertexStageSpirv(), spirv::Stage::Vertex, placements, "vertex");
+    const auto vertexText = compiler.translate(glsl::vertexStageSpirv(), spirv::Stage::Vertex, placements, "vertex");
     if (!fragment || !vertexText) break;
     out += "// ==== fragment (" + fragment->entryPoint + ") ====\n" + fragment->text;
     out += "// ==== vertex (" + vertexText->entryPoint + ") ====\n" + vertexText->text;

@@ -135,7 +135,7 @@ Translated translateDocument(const std::filesystem::path& document, Target targe
   out.interface = glsl::shaderInterfaceJson(material, shader, glsl::ShaderKind::Raster, {});
   out.placements = target::placeResources(target::resourcesOfInterface(out.interface), target);
   auto fragment = compiler.translate(*words, spirv::Stage::Fragment, out.placements, "fragment");
-  auto vertex = compiler.translate(vertexStageSpirv(), spirv::Stage::Vertex, out.placements, "vertex");
+  auto vertex = compiler.translate(glsl::vertexStageSpirv(), spirv::Stage::Vertex, out.placements, "vertex");
   EXPECT_TRUE(fragment && vertex) << context.diagnostics.format();
   if (fragment) out.fragment = fragment->text;
   if (vertex) out.vertex = vertex->text;
