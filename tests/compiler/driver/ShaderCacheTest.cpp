@@ -1,11 +1,12 @@
 // ShaderCache (compiler/driver/ShaderCache.h): a batch's workers compile each shader code once,
-// a failed compile is not kept, and a compile through compileShader is the same module with or
-// without the cache.
+// a failed compile is not kept, a group of codes compiles once for all, and a compile through
+// compileShader is the same module with or without the cache.
 
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <chrono>
+#include <map>
 #include <stdexcept>
 #include <thread>
 
@@ -94,6 +95,66 @@ void waiterCompilesAfterTheOwnerFails(bool owner_throws) {
 TEST(ShaderCache, AWorkerWaitingOnAFailedCompileCompilesItself) { waiterCompilesAfterTheOwnerFails(false); }
 
 TEST(ShaderCache, AWorkerWaitingOnACompileThatThrowsCompilesItself) { waiterCompilesAfterTheOwnerFails(true); }
+
+// A group (driver/ShaderGroups.h) compiles once for all its keys, at the first request of any;
+// a key it did not make, or every key of a group that throws, compiles alone.
+TEST(ShaderCache, AGroupCompilesOnceForAllItsKeys) {
+  ShaderCache cache;
+  int groupCompiles = 0;
+  cache.addGroup({"a", "b", "c"}, [&] {
+    ++groupCompiles;
+    return std::map<std::string, Words>{{"a", Words{1u}}, {"b", Words{2u}}};  // c: not made
+  });
+  auto never = []() -> std::optional<Words> {
+    ADD_FAILURE() << "a key the group made compiled alone";
+    return std::nullopt;
+  };
+  EXPECT_EQ(cache.getOrCompile("b", never), Words{2u});
+  EXPECT_EQ(cache.getOrCompile("a", never), Words{1u});
+  int alone = 0;
+  EXPECT_EQ(cache.getOrCompile("c", [&] {
+    ++alone;
+    return std::optional<Words>(Words{3u});
+  }), Words{3u});
+  EXPECT_EQ(groupCompiles, 1);
+  EXPECT_EQ(alone, 1);
+  EXPECT_EQ(cache.grouped(), 2u);
+  EXPECT_EQ(cache.hits(), 0u);  // each module went to the material it was made for
+  EXPECT_EQ(cache.getOrCompile("a", never), Words{1u});
+  EXPECT_EQ(cache.hits(), 1u);  // another material of a's code
+}
+
+TEST(ShaderCache, AGroupThatThrowsLeavesEachKeyToCompileAlone) {
+  ShaderCache cache;
+  cache.addGroup({"a", "b"}, []() -> std::map<std::string, Words> { throw std::runtime_error("glslang"); });
+  EXPECT_TRUE(cache.compileAGroup());
+  EXPECT_FALSE(cache.compileAGroup());
+  EXPECT_EQ(cache.getOrCompile("a", [] { return std::optional<Words>(Words{5u}); }), Words{5u});
+  EXPECT_EQ(cache.getOrCompile("b", [] { return std::optional<Words>(Words{6u}); }), Words{6u});
+  EXPECT_EQ(cache.grouped(), 0u);
+}
+
+TEST(ShaderCache, CompileAGroupTakesTheLargestFirstAndKeysAreInOneGroup) {
+  ShaderCache cache;
+  std::vector<std::string> order;
+  auto group = [&](std::string name, std::vector<std::string> keys) {
+    return [&order, name, keys] {
+      order.push_back(name);
+      std::map<std::string, Words> made;
+      for (const std::string& k : keys) made[k] = Words{uint32_t(k.size())};
+      return made;
+    };
+  };
+  cache.addGroup({"a", "b"}, group("small", {"a", "b"}));
+  cache.addGroup({"c", "d", "e"}, group("large", {"c", "d", "e"}));
+  // A key already in a group stays in it; a group left with one key is no group.
+  cache.addGroup({"a", "f"}, group("taken", {"a", "f"}));
+  EXPECT_TRUE(cache.compileAGroup());
+  EXPECT_TRUE(cache.compileAGroup());
+  EXPECT_FALSE(cache.compileAGroup());
+  EXPECT_EQ(order, (std::vector<std::string>{"large", "small"}));
+  EXPECT_EQ(cache.grouped(), 5u);
+}
 
 // Through the compiler's entry point: the second material of the same code takes the first's
 // module, which is the module compiled without the cache.
