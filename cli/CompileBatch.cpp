@@ -326,17 +326,18 @@ int runCompileBatch(const CompileOptions& options) {
   };
   // An exception ends the document with an error; the others go on.
   auto guarded = [&](size_t i, const std::function<void()>& step) {
+    std::string why;
     try {
       step();
+      return;
     } catch (const std::bad_alloc&) {
-      jobs[i]->prepared = false;
-      jobs[i]->result = {};
-      jobs[i]->result.messages += fmt::format("error: {}: out of memory\n", items[i].file.string());
+      why = "out of memory";
     } catch (const std::exception& e) {
-      jobs[i]->prepared = false;
-      jobs[i]->result = {};
-      jobs[i]->result.messages += fmt::format("error: {}: {}\n", items[i].file.string(), e.what());
+      why = e.what();
     }
+    jobs[i]->prepared = false;
+    jobs[i]->result = {};
+    jobs[i]->result.messages += fmt::format("error: {}: {}\n", items[i].file.string(), why);
   };
   // glslang builds its built-in symbol tables (135 M instructions) at the first compile of a
   // version, once per process, and a second worker's first compile waits for them. The vertex
