@@ -211,7 +211,8 @@ void finishItem(const Batch& batch, const Item& item, Job& job) {
     const auto start = std::chrono::steady_clock::now();
     Compiler& compiler = pipeline->compiler();
     const glsl::MaterialShader& shader = job.shaders[u];
-    std::optional<std::vector<uint32_t>> words = compiler.spirv(shader);
+    ShaderCache::Served served = ShaderCache::Served::Compiled;
+    std::optional<std::vector<uint32_t>> words = compiler.spirv(shader, &served);
     session.printDiagnostics();
     const auto [spv, glslPath] = pathsOf(*material);
     if (!glslPath.empty()) {
@@ -238,7 +239,10 @@ void finishItem(const Batch& batch, const Item& item, Job& job) {
         continue;
       }
     }
-    detail("{}: {}: {} SPIR-V instructions in {:.1f} ms", file, material->name, spirv::instructionCount(*words),
+    detail("{}: {}: {} SPIR-V instructions, {} {:.1f} ms", file, material->name, spirv::instructionCount(*words),
+           served == ShaderCache::Served::Compiled       ? "compiled and written in"
+           : served == ShaderCache::Served::SameCode     ? "the module of a shader of the same code, written in"
+                                                         : "cut from its library's shader, written in",
            millisecondsSince(start));
     ++result.materials;
   }

@@ -121,10 +121,9 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
     glsl::MaterialShader shader = compiler.shader(material);
     detail("{}: GLSL generated in {:.1f} ms", material.name, millisecondsSince(stage));
     stage = std::chrono::steady_clock::now();
-    // One compile at a time here, so a hit counted meanwhile is this material's.
-    const size_t hits = session.workspace.shaderCache.hits();
-    std::optional<std::vector<uint32_t>> words = compiler.spirv(shader);
-    if (session.workspace.shaderCache.hits() > hits) {
+    ShaderCache::Served served = ShaderCache::Served::Compiled;
+    std::optional<std::vector<uint32_t>> words = compiler.spirv(shader, &served);
+    if (served == ShaderCache::Served::SameCode) {
       detail("{}: SPIR-V of a shader with the same code, compiled for another material, taken in {:.1f} ms",
              material.name, millisecondsSince(stage));
     } else {

@@ -84,9 +84,9 @@ glsl::MaterialShader Compiler::shader(const ir::Material& material, glsl::Shader
   return buildShader(material, kind, request_);
 }
 
-std::optional<std::vector<uint32_t>> Compiler::spirv(const glsl::MaterialShader& shader) {
+std::optional<std::vector<uint32_t>> Compiler::spirv(const glsl::MaterialShader& shader, ShaderCache::Served* served) {
   return compileShader(shader, request_, request_.shaderCache ? request_.shaderCache : &workspace_.shaderCache,
-                       workspace_.diagnostics);
+                       workspace_.diagnostics, served);
 }
 
 std::optional<target::Translation> Compiler::translate(const std::vector<uint32_t>& words, spirv::Stage stage,
@@ -115,7 +115,9 @@ std::optional<std::vector<uint32_t>> compileShader(const glsl::MaterialShader& s
 }
 
 std::optional<std::vector<uint32_t>> compileShader(const glsl::MaterialShader& shader, const CompileRequest& request,
-                                                   ShaderCache* cache, Diagnostics& diagnostics) {
+                                                   ShaderCache* cache, Diagnostics& diagnostics,
+                                                   ShaderCache::Served* served) {
+  if (served) *served = ShaderCache::Served::Compiled;
   spirv::CompileOptions options;
   options.optimize = request.optimize;
   // A shader built by hand has no code key: it is compiled for itself.
@@ -130,7 +132,7 @@ std::optional<std::vector<uint32_t>> compileShader(const glsl::MaterialShader& s
     std::string error;
     std::optional<std::vector<uint32_t>> canonical = spirv::cutModule(*words, {}, error);
     return canonical ? canonical : words;
-  });
+  }, served);
 }
 
 }  // namespace mxc

@@ -137,7 +137,9 @@ class Compiler {
   glsl::MaterialShader shader(const ir::Material& material, glsl::ShaderKind kind) const;
   /// The shader compiled to validated SPIR-V (optimised when the request says so); nullopt when
   /// glslang rejects it (reported at the document elements the failing lines came from).
-  std::optional<std::vector<uint32_t>> spirv(const glsl::MaterialShader& shader);
+  /// `served`, when given, says whether the cache had it (ShaderCache::Served).
+  std::optional<std::vector<uint32_t>> spirv(const glsl::MaterialShader& shader,
+                                             ShaderCache::Served* served = nullptr);
   /// A stage's SPIR-V in the request's target, each resource at its placement
   /// (target::placeResources), validated by the target's toolchain; nullopt when it fails
   /// (reported, naming `what`: "material Glass (fragment)").
@@ -168,6 +170,7 @@ glsl::MaterialShader buildShader(const ir::Material& material, glsl::ShaderKind 
 std::optional<std::vector<uint32_t>> compileShader(const glsl::MaterialShader& shader, const CompileRequest& request,
                                                    Diagnostics& diagnostics);
 std::optional<std::vector<uint32_t>> compileShader(const glsl::MaterialShader& shader, const CompileRequest& request,
-                                                   ShaderCache* cache, Diagnostics& diagnostics);
+                                                   ShaderCache* cache, Diagnostics& diagnostics,
+                                                   ShaderCache::Served* served = nullptr);
 
 }  // namespace mxc

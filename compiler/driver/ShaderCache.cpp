@@ -5,7 +5,11 @@
 namespace mxc {
 
 std::optional<ShaderCache::Words> ShaderCache::getOrCompile(const std::string& key,
-                                                             const std::function<std::optional<Words>()>& compile) {
+                                                             const std::function<std::optional<Words>()>& compile,
+                                                             Served* served) {
+  Served how = Served::Compiled;
+  if (!served) served = &how;
+  *served = Served::Compiled;
   {
     std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
@@ -19,8 +23,13 @@ std::optional<ShaderCache::Words> ShaderCache::getOrCompile(const std::string& k
         break;
       }
       if (!it->second.pending) {
-        if (it->second.unclaimed) it->second.unclaimed = false;  // the material it was made for
-        else ++hits_;
+        if (it->second.unclaimed) {
+          it->second.unclaimed = false;  // the material it was made for
+          *served = Served::CutFromGroup;
+        } else {
+          ++hits_;
+          *served = Served::SameCode;
+        }
         return it->second.words;
       }
       // Another worker compiles this code: wait for its words, or for its failure (the entry

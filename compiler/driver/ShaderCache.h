@@ -25,6 +25,12 @@ namespace mxc {
 class ShaderCache {
  public:
   using Words = std::vector<uint32_t>;
+  /// How getOrCompile came by a key's module.
+  enum class Served {
+    Compiled,      ///< compiled for this call
+    SameCode,      ///< compiled earlier for a material of the same code
+    CutFromGroup,  ///< cut from the compile of its library's group (addGroup)
+  };
 
   /// The module of the shader whose code is `key` (glsl::MaterialShader::codeKey): compiled
   /// by `compile` unless another worker has compiled it (then copied) or is compiling it (then
@@ -37,7 +43,8 @@ class ShaderCache {
   /// Entries live as long as the cache (a batch, a workspace): a key is the generated part of a
   /// shader (library files count by their paths: under a fifth of the text, ShaderBuilderTest
   /// checks) and a module about 25 kB, so a batch holds some tens of kB per distinct shader.
-  std::optional<Words> getOrCompile(const std::string& key, const std::function<std::optional<Words>()>& compile);
+  std::optional<Words> getOrCompile(const std::string& key, const std::function<std::optional<Words>()>& compile,
+                                    Served* served = nullptr);
 
   /// Keys that compile together (shaders of one library, driver/ShaderGroups.h): the first
   /// getOrCompile of any of them runs `compile` once for all, which returns the words of each

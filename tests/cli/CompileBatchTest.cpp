@@ -141,6 +141,10 @@ TEST(CompileBatch, AShaderCodeCompilesOnceAndWritesWhatItWritesAlone) {
   EXPECT_NE(batch.err.find("1 material(s) had the code of a shader compiled for another"), std::string::npos) << batch.err;
   EXPECT_NE(batch.err.find("2 module(s) were cut from shaders compiled for several materials"), std::string::npos)
       << batch.err;
+  EXPECT_NE(batch.err.find("Blue: "), std::string::npos) << batch.err;
+  EXPECT_NE(batch.err.find("SPIR-V instructions, cut from its library's shader"), std::string::npos) << batch.err;
+  EXPECT_NE(batch.err.find("SPIR-V instructions, the module of a shader of the same code"), std::string::npos)
+      << batch.err;
   for (const auto& [name, material] : std::map<std::string, std::string>{{"red", "Red"}, {"crimson", "Crimson"}, {"blue", "Blue"}}) {
     const fs::path alone = folder / (name + ".spv");
     CommandRun single = mxc("compile " + (folder / "docs" / (name + ".mtlx")).string() + " -o " + alone.string());

@@ -109,18 +109,22 @@ TEST(ShaderCache, AGroupCompilesOnceForAllItsKeys) {
     ADD_FAILURE() << "a key the group made compiled alone";
     return std::nullopt;
   };
-  EXPECT_EQ(cache.getOrCompile("b", never), Words{2u});
+  ShaderCache::Served served = ShaderCache::Served::Compiled;
+  EXPECT_EQ(cache.getOrCompile("b", never, &served), Words{2u});
+  EXPECT_EQ(served, ShaderCache::Served::CutFromGroup);
   EXPECT_EQ(cache.getOrCompile("a", never), Words{1u});
   int alone = 0;
   EXPECT_EQ(cache.getOrCompile("c", [&] {
     ++alone;
     return std::optional<Words>(Words{3u});
-  }), Words{3u});
+  }, &served), Words{3u});
+  EXPECT_EQ(served, ShaderCache::Served::Compiled);
   EXPECT_EQ(groupCompiles, 1);
   EXPECT_EQ(alone, 1);
   EXPECT_EQ(cache.grouped(), 2u);
   EXPECT_EQ(cache.hits(), 0u);  // each module went to the material it was made for
-  EXPECT_EQ(cache.getOrCompile("a", never), Words{1u});
+  EXPECT_EQ(cache.getOrCompile("a", never, &served), Words{1u});
+  EXPECT_EQ(served, ShaderCache::Served::SameCode);
   EXPECT_EQ(cache.hits(), 1u);  // another material of a's code
 }
 
