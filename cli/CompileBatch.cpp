@@ -392,15 +392,14 @@ int runCompileBatch(const CompileOptions& options) {
   });
   progress.clear();
   detail("compiled and wrote them in {:.1f} ms", millisecondsSince(compiling));
-  std::vector<ItemResult> results(items.size());
-  for (size_t i = 0; i < items.size(); ++i) results[i] = std::move(jobs[i]->result);
 
   size_t compiled = 0, nothing = 0, materials = 0;
   std::vector<std::string> failed;
   for (size_t i = 0; i < items.size(); ++i) {
-    materials += results[i].materials;
-    if (results[i].outcome == Outcome::Compiled) ++compiled;
-    else if (results[i].outcome == Outcome::Nothing) ++nothing;
+    const ItemResult& result = jobs[i]->result;
+    materials += result.materials;
+    if (result.outcome == Outcome::Compiled) ++compiled;
+    else if (result.outcome == Outcome::Nothing) ++nothing;
     else failed.push_back(items[i].file.string());
   }
   const double seconds = millisecondsSince(start) / 1000.0;

@@ -2,6 +2,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -20,10 +21,10 @@ void planShaderGroups(ShaderCache& cache, std::vector<glsl::MaterialShader> shad
   // and stage.
   using Members = std::vector<glsl::MaterialShader>;
   std::map<std::string, Members> libraries;
-  std::map<std::string, bool> seen;
+  std::set<std::string> seen;
   for (glsl::MaterialShader& s : shaders) {
     if (s.codeKey.empty() || s.closureEnd <= s.closureFirst) continue;  // built by hand: no closure lines
-    if (!seen.emplace(shaderCacheKey(s, request), true).second) continue;
+    if (!seen.insert(shaderCacheKey(s, request)).second) continue;
     const std::string library = fmt::format("{}\n{}", spirv::stageName(s.glsl.stage), s.libraryKey);
     libraries[library].push_back(std::move(s));
   }

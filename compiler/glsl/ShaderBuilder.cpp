@@ -273,7 +273,7 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   w.line("");
   w.namingLine(fmt::format("// ---- material '{}' ----", material.name), material.origin.location);
   w.beginClosure();
-  w.line("void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {", material.origin.location);
+  w.line(fmt::format("void {}({}) {{", kClosureFunction, kClosureParameters), material.origin.location);
   w.lines(exprs.statements());
   w.lines(closure.lines);
   w.line("}");

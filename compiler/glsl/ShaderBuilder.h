@@ -49,6 +49,12 @@ struct MaterialInterface {
   std::vector<std::string> geomprops;
 };
 
+/// Every material shader's closure function (what the stages call, `mxc_material_closure(g, wo,
+/// c)`): its name, parameters and the arguments that pass them on.
+inline constexpr const char* kClosureFunction = "mxc_material_closure";
+inline constexpr const char* kClosureParameters = "in MxcGeometry g, vec3 wo, out MxcClosure c";
+inline constexpr const char* kClosureArguments = "g, wo, c";
+
 struct MaterialShader {
   spirv::GlslSource glsl;
   MaterialInterface interface;

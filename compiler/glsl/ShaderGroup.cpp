@@ -30,10 +30,9 @@ spirv::GlslSource groupSource(const std::vector<const MaterialShader*>& members)
   if (members.empty()) throw std::logic_error("a shader group without members");
   const MaterialShader& first = *members.front();
   const std::vector<std::string_view> lines = splitLines(first.glsl.text);
-  // The closure's first line is its signature: "void mxc_material_closure(<parameters>) {".
-  const std::string signature = fmt::format("void {}(", kClosureFunction);
-  if (first.closureEnd <= first.closureFirst || first.closureEnd > lines.size() ||
-      lines[first.closureFirst].rfind(signature, 0) != 0) {
+  // The closure's first line is its signature, as ShaderBuilder writes it.
+  const std::string signature = fmt::format("void {}({}) {{", kClosureFunction, kClosureParameters);
+  if (first.closureEnd <= first.closureFirst || first.closureEnd > lines.size() || lines[first.closureFirst] != signature) {
     throw std::logic_error("a material shader without its closure function's lines");
   }
   spirv::GlslSource out;
@@ -48,12 +47,14 @@ spirv::GlslSource groupSource(const std::vector<const MaterialShader*>& members)
     const MaterialShader& m = *members[k];
     if (m.libraryKey != first.libraryKey) throw std::logic_error("a shader group of different libraries");
     const std::vector<std::string_view> own = splitLines(m.glsl.text);
-    std::string_view head = own[m.closureFirst];
-    add(fmt::format("void {}({}", groupMemberFunction(k), head.substr(signature.size())));
+    if (m.closureEnd > own.size() || own[m.closureFirst] != signature) {
+      throw std::logic_error("a material shader without its closure function's lines");
+    }
+    add(fmt::format("void {}({}) {{", groupMemberFunction(k), kClosureParameters));
     for (size_t i = m.closureFirst + 1; i < m.closureEnd; ++i) add(own[i]);
   }
-  add(lines[first.closureFirst]);
-  for (size_t k = 0; k < members.size(); ++k) add(fmt::format("  {}(g, wo, c);", groupMemberFunction(k)));
+  add(signature);
+  for (size_t k = 0; k < members.size(); ++k) add(fmt::format("  {}({});", groupMemberFunction(k), kClosureArguments));
   add("}");
   for (size_t i = first.closureEnd; i < lines.size(); ++i) add(lines[i]);
   return out;

@@ -11,9 +11,6 @@
 
 namespace mxc::glsl {
 
-/// The name every material shader's closure function has.
-inline constexpr const char* kClosureFunction = "mxc_material_closure";
-
 /// The name member `index` of a group gives its closure function.
 std::string groupMemberFunction(size_t index);
 

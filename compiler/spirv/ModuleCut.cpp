@@ -246,8 +246,6 @@ ModuleCutter::ModuleCutter(const std::vector<uint32_t>& module) : parsed_(std::m
 
 ModuleCutter::~ModuleCutter() = default;
 
-const std::string& ModuleCutter::error() const { return parsed_->error; }
-
 std::optional<std::vector<uint32_t>> ModuleCutter::cut(const CutRequest& request, std::string& error) const {
   const Parsed& m = *parsed_;
   if (!m.error.empty()) {
@@ -393,7 +391,7 @@ std::optional<std::vector<uint32_t>> ModuleCutter::cut(const CutRequest& request
   // order glslang wrote them (the order its code adds them, the same in every module).
   auto targetKept = [&](const Instruction& inst) {
     const uint32_t target = inst.count > 1 ? m.word(inst, 1) : 0u;
-    return target < m.bound && kept[target] && !(cutting && target == forwarder);
+    return target < m.bound && kept[target];  // never the forwarder: reach() takes the member for it
   };
   std::vector<uint32_t> sources, names, processed, annotations;
   for (uint32_t index : m.sections[kDebug]) {

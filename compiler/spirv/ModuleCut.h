@@ -45,17 +45,15 @@ struct CutRequest {
 /// times as a group has members.
 class ModuleCutter {
  public:
-  /// `module` as glslang wrote it; error() says why not when it holds an instruction the cut
-  /// does not handle (a decoration group, OpDecorateId, OpLine).
+  /// `module` as glslang wrote it; a module holding an instruction the cut does not handle (a
+  /// decoration group, OpDecorateId, OpLine) makes every cut() fail, saying so.
   explicit ModuleCutter(const std::vector<uint32_t>& module);
   ~ModuleCutter();
   ModuleCutter(const ModuleCutter&) = delete;
   ModuleCutter& operator=(const ModuleCutter&) = delete;
 
-  const std::string& error() const;
-
   /// The module of `request.member`, in canonical form; nullopt with `error` saying why when
-  /// the module cannot be cut (see error(), and the capabilities and extensions above).
+  /// the module cannot be cut (see the constructor, and the capabilities and extensions above).
   std::optional<std::vector<uint32_t>> cut(const CutRequest& request, std::string& error) const;
 
   struct Parsed;  ///< the instructions, in flat arrays (defined in ModuleCut.cpp)
