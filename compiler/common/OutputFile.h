@@ -6,7 +6,7 @@
 /// names, `-` is standard output, and a path that exists and is not a regular file (a device such
 /// as `/dev/null`, a FIFO, a socket) is written through directly: it is never replaced by a
 /// regular file. A regular file (or a new one) is written to a temporary file in the same folder,
-/// checked at every write, flush and close, synced, given the mode (and, for root, the owner) of
+/// checked at every write and at close, given the mode (and, for root, the owner) of
 /// the file it replaces, and renamed over it only once complete. A failure keeps the old file.
 /// Temporaries are registered (`TemporaryFiles`) so a termination signal can remove them.
 
@@ -44,7 +44,7 @@ bool sameExistingFile(const std::filesystem::path& a, const std::filesystem::pat
 class StagedFile {
  public:
   /// Creates the temporary beside `target` (a Kind::File target) and writes `bytes` to it,
-  /// checking every write and the final sync and close. Errors name the target, never the
+  /// checking every write and the close. Errors name the target, never the
   /// temporary.
   static std::variant<StagedFile, std::string> write(const OutputTarget& target, std::string_view bytes);
 
