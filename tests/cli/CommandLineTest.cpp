@@ -91,6 +91,13 @@ TEST(CommandLine, VersionNamesTheLibrariesAndDevices) {
   for (const char* part : {"\nglslang ", "\nSPIRV-Tools v", "\nSPIRV-Cross 20", "\nnaga 30.", "\nOpenImageIO ", "\nVulkan device 0: "}) {
     EXPECT_NE(r.out.find(part), std::string::npos) << part << " in\n" << r.out;
   }
+#ifndef __SANITIZE_ADDRESS__
+  // mimalloc replaces malloc (cli/CMakeLists.txt), and mxc asks it whether it does.
+  EXPECT_NE(r.out.find("\nmimalloc 2."), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(", the memory allocator\n"), std::string::npos) << r.out;
+#else
+  EXPECT_EQ(r.out.find("mimalloc"), std::string::npos) << "the sanitizers bring their own allocator";
+#endif
 }
 
 TEST(CommandLine, AnUnknownCommandIsNamed) {
