@@ -293,6 +293,28 @@ int runCompileBatch(const CompileOptions& options) {
       return kOutputFailed;
     }
   }
+  // glslang builds its built-in symbol tables (135 M instructions) at the first compile of a
+  // version, once per process, and a second worker's first compile waits for them. The vertex
+  // stage every raster output has beside it is of the fragment stage's version: compiled while
+  // the libraries are loaded (one thread) and the documents prepared, it has the tables ready for
+  // the group compiles.
+  std::thread vertexStage;
+  if (kindOf(options.stage) == glsl::ShaderKind::Raster && !options.output.empty()) {
+    vertexStage = std::thread([] {
+      try {
+        glsl::vertexStageSpirv();
+      } catch (const std::exception&) {
+        // The workers meet the same failure where they write the vertex stage, and report it.
+      }
+    });
+  }
+  // Every return below joins it first.
+  struct Join {
+    std::thread& thread;
+    ~Join() {
+      if (thread.joinable()) thread.join();
+    }
+  } joinVertexStage{vertexStage};
   // The libraries, once for every document.
   Session libraries;
   if (!libraries.loadLibraries(options.materials.libraries)) {
@@ -343,26 +365,12 @@ int runCompileBatch(const CompileOptions& options) {
     jobs[i]->result = {};
     jobs[i]->result.messages += fmt::format("error: {}: {}\n", items[i].file.string(), why);
   };
-  // glslang builds its built-in symbol tables (135 M instructions) at the first compile of a
-  // version, once per process, and a second worker's first compile waits for them. The vertex
-  // stage every raster output has beside it is of the fragment stage's version: compiled while
-  // the documents are prepared, it has the tables ready for the group compiles.
-  std::thread tables;
-  if (batch.kind == glsl::ShaderKind::Raster && !options.output.empty()) {
-    tables = std::thread([] {
-      try {
-        glsl::vertexStageSpirv();
-      } catch (const std::exception&) {
-        // The workers meet the same failure where they write the vertex stage, and report it.
-      }
-    });
-  }
   const auto preparing = std::chrono::steady_clock::now();
   forEachItem([&](size_t i) {
     jobs[i] = std::make_unique<Job>();
     guarded(i, [&] { prepareItem(batch, items[i], *jobs[i]); });
   });
-  if (tables.joinable()) tables.join();
+  if (vertexStage.joinable()) vertexStage.join();
   detail("prepared {} document(s) in {:.1f} ms", items.size(), millisecondsSince(preparing));
   // The shaders of one library compile as one (driver/ShaderGroups.h), each group before the
   // documents that need it, the largest first, so that no worker waits on another's group.
