@@ -1,7 +1,6 @@
 #include "cli/CompileBatch.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -340,16 +339,7 @@ int runCompileBatch(const CompileOptions& options) {
   detail("{} document(s) on {} worker(s)", items.size(), workers);
   // Every document prepared (loaded, lowered, its shaders built), `workers` at a time.
   std::vector<std::unique_ptr<Job>> jobs(items.size());
-  auto forEachItem = [&](const std::function<void(size_t)>& step) {
-    std::atomic<size_t> next{0};
-    auto work = [&] {
-      for (size_t i = next++; i < items.size(); i = next++) step(i);
-    };
-    std::vector<std::thread> threads;
-    for (size_t t = 1; t < workers; ++t) threads.emplace_back(work);
-    work();
-    for (std::thread& t : threads) t.join();
-  };
+  auto forEachItem = [&](const std::function<void(size_t)>& step) { runOnThreads(items.size(), workers, step); };
   // An exception ends the document with an error; the others go on.
   auto guarded = [&](size_t i, const std::function<void()>& step) {
     std::string why;

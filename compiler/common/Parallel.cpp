@@ -105,17 +105,18 @@ Pool& pool() {
 
 void startWorkers() { pool(); }
 
-void runOnEveryCore(size_t count, const std::function<void(size_t)>& job) {
+void runOnThreads(size_t count, size_t threads, const std::function<void(size_t)>& job) {
   Batch batch;
   batch.count = count;
   batch.job = &job;
   batch.failures.resize(count);
-  if (count <= 1) {
+  if (count <= 1 || threads <= 1) {
     batch.work();
-  } else if (!pool().tryRun(batch)) {
-    // The pool is busy (a nested call, or another thread's): threads of this call's own.
+  } else if (threads != coreCount() || !pool().tryRun(batch)) {
+    // Another count than the pool's, or the pool is busy (a nested call, or another thread's):
+    // threads of this call's own.
     std::vector<std::thread> helpers;
-    for (size_t t = 1; t < std::min(count, coreCount()); ++t) helpers.emplace_back([&] { batch.work(); });
+    for (size_t t = 1; t < std::min(count, threads); ++t) helpers.emplace_back([&] { batch.work(); });
     batch.work();
     for (std::thread& helper : helpers) helper.join();
   }
@@ -123,5 +124,7 @@ void runOnEveryCore(size_t count, const std::function<void(size_t)>& job) {
     if (failure) std::rethrow_exception(failure);
   }
 }
+
+void runOnEveryCore(size_t count, const std::function<void(size_t)>& job) { runOnThreads(count, coreCount(), job); }
 
 }  // namespace mxc

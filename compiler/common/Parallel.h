@@ -28,4 +28,8 @@ void startWorkers();
 /// another runs on threads of its own.
 void runOnEveryCore(size_t count, const std::function<void(size_t)>& job);
 
+/// runOnEveryCore on `threads` threads (the caller's among them) instead of one per core: the
+/// pool's when that is its size, else threads of the call's own (`mxc compile -j N`).
+void runOnThreads(size_t count, size_t threads, const std::function<void(size_t)>& job);
+
 }  // namespace mxc

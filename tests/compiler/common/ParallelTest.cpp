@@ -87,5 +87,42 @@ TEST(Parallel, ThePoolsThreadsAreReused) {
   EXPECT_LE(serials.size(), coreCount());
 }
 
+// `mxc compile -j N`: every job once, on at most N threads at a time, whatever the cores;
+// one thread is the caller alone.
+TEST(Parallel, RunOnThreadsKeepsToItsCount) {
+  for (size_t threads : {size_t(1), size_t(3), coreCount() + 2}) {
+    std::vector<std::atomic<int>> runs(24);
+    std::atomic<int> running{0}, most{0};
+    std::mutex mutex;
+    std::set<std::thread::id> ids;
+    runOnThreads(runs.size(), threads, [&](size_t i) {
+      const int now = ++running;
+      for (int seen = most.load(); now > seen && !most.compare_exchange_weak(seen, now);) {
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      ++runs[i];
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        ids.insert(std::this_thread::get_id());
+      }
+      --running;
+    });
+    for (size_t i = 0; i < runs.size(); ++i) EXPECT_EQ(runs[i].load(), 1) << "job " << i << " of " << threads;
+    EXPECT_LE(size_t(most.load()), threads);
+    EXPECT_LE(ids.size(), threads);
+    if (threads == 1) {
+      EXPECT_EQ(*ids.begin(), std::this_thread::get_id()) << "the caller's thread alone";
+    }
+  }
+  // A failure is rethrown once every job has stopped, as by runOnEveryCore.
+  std::atomic<int> done{0};
+  EXPECT_THROW(runOnThreads(8, 3, [&](size_t i) {
+                 ++done;
+                 if (i == 5) throw std::runtime_error("job 5");
+               }),
+               std::runtime_error);
+  EXPECT_EQ(done.load(), 8);
+}
+
 }  // namespace
 }  // namespace mxc
