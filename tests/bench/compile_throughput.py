@@ -13,7 +13,8 @@ Two measurements, both whole processes with everything they load:
 - A batch: every document of ../shared/corpus (materialx/examples, openpbr-presets) in one
   process: `mxc compile FOLDERS -o DIR -j JOBS` against one MaterialX process over all of them
   followed by glslangValidator on every pixel stage, JOBS at a time (as `xargs -P` would).
-  Reported per material (each side divides by the materials it compiled).
+  Reported per material (each side divides by the materials it compiled); the median of
+  max(3, N) runs a side, the sides alternated.
 
 MaterialX runs with the options of materialx_compare.py (one directional light, no environment
 lighting, no transparency, linear output), from the venv that script makes (DIR/materialx-venv).
@@ -130,15 +131,20 @@ def main() -> int:
     rows = []
     for relative in materialx_compare.DEFAULT_DOCUMENTS:
         doc = str(SHARED / "corpus" / relative)
-        theirs = [materialx_run(python, [doc], 1)[0] for _ in range(args.repeat)]
-        ours = [mxc_run(mxc, [doc], 1)[0] for _ in range(args.repeat)]
+        theirs, ours = [], []
+        for _ in range(args.repeat):  # alternated, as the batch below
+            theirs.append(materialx_run(python, [doc], 1)[0])
+            ours.append(mxc_run(mxc, [doc], 1)[0])
         rows.append((Path(relative).stem, statistics.median(theirs), statistics.median(ours)))
         print(f"{rows[-1][0]}: MaterialX {1000 * rows[-1][1]:.0f} ms, mxc {1000 * rows[-1][2]:.0f} ms", file=sys.stderr)
 
     documents = corpus_documents()
-    their_batch = [materialx_run(python, documents, args.jobs) for _ in range(max(1, args.repeat // 2))]
-    our_batch = [mxc_run(mxc, [str(SHARED / "corpus" / f) for f in BATCH_FOLDERS], args.jobs)
-                 for _ in range(max(1, args.repeat // 2))]
+    # At least three runs a side, alternated run by run, so that a drift of the machine's speed
+    # (seen here: a tenth over an hour) weighs on both sides alike.
+    their_batch, our_batch = [], []
+    for _ in range(max(3, args.repeat)):
+        their_batch.append(materialx_run(python, documents, args.jobs))
+        our_batch.append(mxc_run(mxc, [str(SHARED / "corpus" / f) for f in BATCH_FOLDERS], args.jobs))
     their_seconds = statistics.median(t for t, _ in their_batch)
     our_seconds = statistics.median(t for t, _ in our_batch)
     their_count = their_batch[0][1]
