@@ -296,10 +296,10 @@ int runCompileBatch(const CompileOptions& options) {
   // version, once per process, and a second worker's first compile waits for them. The vertex
   // stage every raster output has beside it is of the fragment stage's version: compiled while
   // the libraries are loaded (one thread) and the documents prepared, it has the tables ready for
-  // the group compiles.
-  std::thread vertexStage;
+  // the group compiles. A jthread: every return below joins it.
+  std::jthread vertexStage;
   if (kindOf(options.stage) == glsl::ShaderKind::Raster && !options.output.empty()) {
-    vertexStage = std::thread([] {
+    vertexStage = std::jthread([] {
       try {
         glsl::vertexStageSpirv();
       } catch (const std::exception&) {
@@ -307,13 +307,6 @@ int runCompileBatch(const CompileOptions& options) {
       }
     });
   }
-  // Every return below joins it first.
-  struct Join {
-    std::thread& thread;
-    ~Join() {
-      if (thread.joinable()) thread.join();
-    }
-  } joinVertexStage{vertexStage};
   // The libraries, once for every document.
   Session libraries;
   if (!libraries.loadLibraries(options.materials.libraries)) {
