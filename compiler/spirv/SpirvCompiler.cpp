@@ -1,4 +1,5 @@
 #include "compiler/spirv/SpirvCompiler.h"
+#include "compiler/spirv/SourceTrim.h"
 
 #include <functional>
 #include <mutex>
@@ -193,7 +194,10 @@ std::optional<std::vector<uint32_t>> compile(const GlslSource& source, const Com
   initialise();
   const EShLanguage stage = language(source.stage);
   glslang::TShader shader(stage);
-  const char* text = source.text.c_str();
+  // glslang reads the text without what cannot reach the SPIR-V (comments, branches not taken,
+  // functions nothing calls); its lines are those of source.text, for the messages.
+  const std::string parsed = options.trimSource ? trimForParse(source.text).text : std::string();
+  const char* text = options.trimSource ? parsed.c_str() : source.text.c_str();
   shader.setStrings(&text, 1);
   const EShMessages messages = forVulkan(shader, glslang::EShSourceGlsl, stage);
   if (!shader.parse(GetDefaultResources(), 450, false, messages)) {

@@ -70,6 +70,9 @@ struct CompileOptions {
   /// With `optimize`: specialization constants (SpecId, value) fixed before the passes, so that
   /// they fold what the values decide, as a pipeline created with those values can.
   std::vector<std::pair<uint32_t, int32_t>> specialization;
+  /// glslang reads the text trimmed (spirv/SourceTrim.h): the same module, parsed faster. Off
+  /// only to check that claim.
+  bool trimSource = true;
 };
 
 /// Compiles GLSL (as mxc writes it: 4.00 with ARB extensions, compute 4.40) for Vulkan 1.1 / SPIR-V 1.3 and validates the module. On failure the
