@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <map>
+#include <mutex>
 #include <span>
 #include <stdexcept>
 #include <tuple>
@@ -62,20 +64,63 @@ std::string accuracyMacro(Accuracy accuracy) {
   return name;
 }
 
-/// Accumulates GLSL lines with their origins.
+/// A library file as a shader holds it: its lines, with each `#include "path"` of the file (the
+/// contract's generated declarations) replaced by that file's marker line and lines.
+struct ExpandedFile {
+  std::string text;  ///< every line ends with '\n'
+  size_t lines = 0;
+};
+
+void expandInto(std::string_view path, ExpandedFile& out) {
+  const std::string text = libraryFile(path);
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view l = std::string_view(text).substr(start, end - start);
+    constexpr std::string_view kInclude = "#include \"";
+    if (l.rfind(kInclude, 0) == 0 && l.size() > kInclude.size() + 1 && l.back() == '"') {
+      const std::string_view included = l.substr(kInclude.size(), l.size() - kInclude.size() - 1);
+      out.text += fmt::format("// ---- {} ----\n", included);
+      ++out.lines;
+      expandInto(included, out);
+    } else {
+      out.text.append(l);
+      out.text += '\n';
+      ++out.lines;
+    }
+    start = end + 1;
+  }
+}
+
+/// The file expanded once per process: its text is fixed in the executable (the generated
+/// files by the contract), and every material's shader holds it.
+const ExpandedFile& expandedFile(std::string_view path) {
+  static std::mutex mutex;
+  static std::map<std::string, ExpandedFile, std::less<>> files;  // nodes never move
+  std::lock_guard<std::mutex> lock(mutex);
+  auto found = files.find(path);
+  if (found == files.end()) {
+    ExpandedFile f;
+    expandInto(path, f);
+    found = files.emplace(std::string(path), std::move(f)).first;
+  }
+  return found->second;
+}
+
+/// Accumulates GLSL lines with their origins: lines of its own, and library files whole.
 class Writer {
  public:
   explicit Writer(bool expand = true) : expand_(expand) {}
-  void line(std::string text, SourceLocation origin = {}) { lines_.add(std::move(text), origin); }
+  void line(std::string text, SourceLocation origin = {}) { addLine(std::move(text), origin, true); }
   /// A comment line that names the material: part of the text, not of its code key.
-  void namingLine(std::string text, SourceLocation origin = {}) {
-    unkeyed_.emplace_back(lines_.text.size(), lines_.text.size() + 1);
-    lines_.add(std::move(text), origin);
+  void namingLine(std::string text, SourceLocation origin = {}) { addLine(std::move(text), origin, false); }
+  void lines(const Lines& more) {
+    for (size_t i = 0; i < more.text.size(); ++i) line(more.text[i], more.origins[i]);
   }
-  void lines(const Lines& more) { lines_.append(more); }
   /// The lines from here to endClosure() define the material's function: out of the library key.
-  void beginClosure() { closure_.first = lines_.text.size(); }
-  void endClosure() { closure_.second = lines_.text.size(); }
+  void beginClosure() { closure_.first = lineCount_; closurePieces_.first = pieces_.size(); }
+  void endClosure() { closure_.second = lineCount_; closurePieces_.second = pieces_.size(); }
   /// A library file, whole, with a marker naming it.
   void file(std::string_view path) {
     if (!expand_) {
@@ -84,24 +129,11 @@ class Writer {
     }
     line(fmt::format("// ---- {} ----", path));
     // A library file's text is fixed in the executable, so its path stands for it in the key.
-    const size_t first = lines_.text.size();
-    const std::string text = libraryFile(path);
-    size_t start = 0;
-    while (start < text.size()) {
-      size_t end = text.find('\n', start);
-      if (end == std::string_view::npos) end = text.size();
-      std::string_view l = std::string_view(text).substr(start, end - start);
-      // A library file's own `#include "path"` (the contract's generated declarations) is
-      // pasted in its place.
-      constexpr std::string_view kInclude = "#include \"";
-      if (l.rfind(kInclude, 0) == 0 && l.size() > kInclude.size() + 1 && l.back() == '"') {
-        file(l.substr(kInclude.size(), l.size() - kInclude.size() - 1));
-      } else {
-        line(std::string(l));
-      }
-      start = end + 1;
-    }
-    unkeyed_.emplace_back(first, lines_.text.size());
+    const ExpandedFile& f = expandedFile(path);
+    Piece& p = pieces_.emplace_back();
+    p.file = &f;
+    p.keyed = false;
+    lineCount_ += f.lines;
   }
   /// The code key of the text finish() returned: its lines but for the naming ones, library
   /// files by their paths.
@@ -113,38 +145,60 @@ class Writer {
     spirv::GlslSource out;
     out.stage = stage;
     out.name = std::move(name);
-    std::vector<bool> keyed(lines_.text.size(), true);
-    for (const auto& [first, end] : unkeyed_) std::fill(keyed.begin() + long(first), keyed.begin() + long(end), false);
+    size_t bytes = 0;
+    for (const Piece& p : pieces_) bytes += p.file ? p.file->text.size() : p.text.size() + 1;
+    out.text.reserve(bytes);
+    out.origins.reserve(lineCount_);
     std::string key, libraryKey;
-    for (size_t i = 0; i < lines_.text.size(); ++i) {
-      out.text += lines_.text[i];
+    for (size_t i = 0; i < pieces_.size(); ++i) {
+      const Piece& p = pieces_[i];
+      if (p.file) {
+        out.text += p.file->text;
+        out.origins.resize(out.origins.size() + p.file->lines);
+        continue;
+      }
+      out.text += p.text;
       out.text += '\n';
-      if (keyed[i]) {
-        key += lines_.text[i];
-        key += '\n';
-        if (i < closure_.first || i >= closure_.second) {
-          // Without its comment: a texture's declaration names its file in one, and materials
-          // whose declarations differ only there compile as one (GLSL has no strings: `//`
-          // always starts a comment).
-          const std::string& line = lines_.text[i];
-          libraryKey.append(line, 0, line.find("//"));
-          libraryKey += '\n';
-        }
+      out.origins.push_back(p.origin);
+      if (!p.keyed) continue;
+      key += p.text;
+      key += '\n';
+      if (i < closurePieces_.first || i >= closurePieces_.second) {
+        // Without its comment: a texture's declaration names its file in one, and materials
+        // whose declarations differ only there compile as one (GLSL has no strings: `//`
+        // always starts a comment).
+        libraryKey.append(p.text, 0, p.text.find("//"));
+        libraryKey += '\n';
       }
     }
     key_ = std::move(key);
     libraryKey_ = std::move(libraryKey);
-    out.origins = std::move(lines_.origins);
     return out;
   }
 
  private:
-  Lines lines_;
+  /// A line of the writer's own, or a library file.
+  struct Piece {
+    std::string text;
+    const ExpandedFile* file = nullptr;
+    SourceLocation origin;
+    bool keyed = true;
+  };
+  void addLine(std::string&& text, SourceLocation origin, bool keyed) {
+    Piece& p = pieces_.emplace_back();
+    p.text = std::move(text);
+    p.origin = origin;
+    p.keyed = keyed;
+    ++lineCount_;
+  }
+
+  std::vector<Piece> pieces_;
+  size_t lineCount_ = 0;
   bool expand_ = true;
-  std::vector<std::pair<size_t, size_t>> unkeyed_;  ///< line ranges [first, end) left out of the key
   std::string key_;
   std::string libraryKey_;
-  std::pair<size_t, size_t> closure_{0, 0};  ///< the lines of mxc_material_closure, [first, end)
+  std::pair<size_t, size_t> closure_{0, 0};        ///< the lines of mxc_material_closure, [first, end)
+  std::pair<size_t, size_t> closurePieces_{0, 0};  ///< the same as pieces
 };
 
 std::vector<UniformField> parameterLayout(const ir::Material& material, const ExprEmitter& exprs, uint32_t& bytes) {
