@@ -1,12 +1,13 @@
 #include "compiler/spirv/ModuleCut.h"
 
+#include "compiler/spirv/InstructionIds.h"
+
 #include <algorithm>
 #include <string_view>
 #include <tuple>
 
 #include <fmt/format.h>
 #include <glslang/SPIRV/spirv.hpp>
-#include <spirv-tools/libspirv.h>
 
 // The module's layout is the SPIR-V specification's, section 2.4 (Logical Layout of a Module).
 
@@ -28,20 +29,7 @@ enum Section : uint8_t {
   kSectionCount
 };
 
-/// One instruction, its words and operands by offset into the module's flat arrays.
-struct Instruction {
-  uint32_t at = 0;        ///< index of its first word in Parsed::words
-  uint32_t firstUse = 0;  ///< index of its first ID use in Parsed::uses
-  uint16_t count = 0;     ///< words
-  uint16_t opcode = 0;
-  uint16_t useCount = 0;  ///< IDs it uses (its type included), their word offsets in order
-  uint16_t resultAt = 0;  ///< word offset of its result ID; 0 for none
-};
-
-bool isId(spv_operand_type_t type) {
-  return type == SPV_OPERAND_TYPE_ID || type == SPV_OPERAND_TYPE_TYPE_ID ||
-         type == SPV_OPERAND_TYPE_MEMORY_SEMANTICS_ID || type == SPV_OPERAND_TYPE_SCOPE_ID;
-}
+using Instruction = InstructionIds;
 
 Section sectionOf(spv::Op op) {
   switch (op) {
@@ -143,58 +131,10 @@ struct ModuleCutter::Parsed {
 
 namespace {
 
-spv_result_t onHeader(void* user, spv_endianness_t, uint32_t, uint32_t version, uint32_t generator, uint32_t bound,
-                      uint32_t) {
-  auto& m = *static_cast<ModuleCutter::Parsed*>(user);
-  m.version = version;
-  m.generator = generator;
-  m.bound = bound;
-  m.words.reserve(size_t(bound) * 5);
-  m.instructions.reserve(bound);
-  return SPV_SUCCESS;
-}
-
-spv_result_t onInstruction(void* user, const spv_parsed_instruction_t* parsed) {
-  auto& m = *static_cast<ModuleCutter::Parsed*>(user);
-  Instruction inst;
-  inst.at = uint32_t(m.words.size());
-  inst.count = parsed->num_words;
-  inst.opcode = parsed->opcode;
-  inst.firstUse = uint32_t(m.uses.size());
-  m.words.insert(m.words.end(), parsed->words, parsed->words + parsed->num_words);
-  for (uint16_t i = 0; i < parsed->num_operands; ++i) {
-    const spv_parsed_operand_t& o = parsed->operands[i];
-    const bool result = o.type == SPV_OPERAND_TYPE_RESULT_ID;
-    if (!result && !isId(o.type)) continue;
-    // Every ID is below the header's bound (section 2.3), which sizes the cut's tables.
-    if (parsed->words[o.offset] >= m.bound) {
-      m.error = fmt::format("the module uses ID {}, not below its bound {}", parsed->words[o.offset], m.bound);
-      return SPV_ERROR_INVALID_ID;
-    }
-    if (result) {
-      inst.resultAt = o.offset;
-    } else {
-      m.uses.push_back(o.offset);
-      ++inst.useCount;
-    }
-  }
-  const auto op = static_cast<spv::Op>(inst.opcode);
-  switch (op) {
-    case spv::OpDecorateId:
-    case spv::OpDecorationGroup:
-    case spv::OpGroupDecorate:
-    case spv::OpGroupMemberDecorate:
-    case spv::OpLine:
-    case spv::OpNoLine:
-      // glslang writes none of these for mxc's shaders (no -g); a decoration naming IDs
-      // besides its target, or a group, would need more than a target to keep or remove.
-      m.error = fmt::format("the module has an instruction the cut does not handle (opcode {})", inst.opcode);
-      return SPV_ERROR_INVALID_BINARY;
-    default: break;
-  }
-  const uint32_t index = uint32_t(m.instructions.size());
-  m.instructions.push_back(inst);
-  // Inside a function everything belongs to it, up to its OpFunctionEnd.
+/// Files the instruction into its section (section 2.4); inside a function everything belongs
+/// to it, up to its OpFunctionEnd.
+void file(ModuleCutter::Parsed& m, uint32_t index) {
+  const auto op = static_cast<spv::Op>(m.instructions[index].opcode);
   if (m.inFunction || op == spv::OpFunction) {
     if (op == spv::OpFunction) {
       m.functions.emplace_back(uint32_t(m.sections[kFunctions].size()), 0u);
@@ -205,23 +145,39 @@ spv_result_t onInstruction(void* user, const spv_parsed_instruction_t* parsed) {
       m.functions.back().second = uint32_t(m.sections[kFunctions].size());
       m.inFunction = false;
     }
-    return SPV_SUCCESS;
+    return;
   }
   m.sections[sectionOf(op)].push_back(index);
-  return SPV_SUCCESS;
 }
 
 }  // namespace
 
 ModuleCutter::ModuleCutter(const std::vector<uint32_t>& module) : parsed_(std::make_unique<Parsed>()) {
   Parsed& m = *parsed_;
-  spv_context context = spvContextCreate(SPV_ENV_VULKAN_1_1);
-  const spv_result_t result =
-      spvBinaryParse(context, &m, module.data(), module.size(), onHeader, onInstruction, nullptr);
-  spvContextDestroy(context);
-  if (result != SPV_SUCCESS) {
-    if (m.error.empty()) m.error = "the module does not parse";
-    return;
+  std::optional<ModuleIds> ids = instructionIds(module, m.error);
+  if (!ids) return;
+  m.version = ids->version;
+  m.generator = ids->generator;
+  m.bound = ids->bound;
+  m.words = module;
+  m.instructions = std::move(ids->instructions);
+  m.uses = std::move(ids->uses);
+  for (uint32_t index = 0; index < m.instructions.size(); ++index) {
+    switch (static_cast<spv::Op>(m.instructions[index].opcode)) {
+      case spv::OpDecorateId:
+      case spv::OpDecorationGroup:
+      case spv::OpGroupDecorate:
+      case spv::OpGroupMemberDecorate:
+      case spv::OpLine:
+      case spv::OpNoLine:
+        // glslang writes none of these for mxc's shaders (no -g); a decoration naming IDs
+        // besides its target, or a group, would need more than a target to keep or remove.
+        m.error = fmt::format("the module has an instruction the cut does not handle (opcode {})",
+                              m.instructions[index].opcode);
+        return;
+      default: break;
+    }
+    file(m, index);
   }
   if (m.inFunction) {
     m.error = "the module ends inside a function";
