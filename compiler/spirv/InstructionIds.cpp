@@ -1,7 +1,5 @@
 #include "compiler/spirv/InstructionIds.h"
 
-#include <cstring>
-#include <mutex>
 #include <unordered_set>
 
 #include <fmt/format.h>
@@ -14,11 +12,16 @@
 namespace mxc::spirv {
 namespace {
 
-/// glslang's tables, filled once (spv::Parameterize() fills them on its first call, unguarded).
-void parameterize() {
-  static std::once_flag once;
-  std::call_once(once, [] { spv::Parameterize(); });
-}
+/// One opcode of glslang's table: its operand classes are kGrammarOperandClasses[first, first + count).
+struct GrammarEntry {
+  uint16_t first;
+  uint8_t count;
+  bool known;
+  bool hasType;
+  bool hasResult;
+};
+
+#include "SpirvGrammar.inc"  // generated at build time by mxc-spirv-grammar (SpirvGrammarGenerator.cpp)
 
 /// Words of a literal string starting at `at`: up to and including the word holding its nul
 /// (section 2.2.1); 0 when no word in [at, end) does.
@@ -46,7 +49,6 @@ std::string literalString(const uint32_t* words, uint32_t at, uint32_t end) {
 }  // namespace
 
 std::optional<ModuleIds> instructionIds(const std::vector<uint32_t>& module, std::string& error) {
-  parameterize();
   ModuleIds m;
   if (module.size() < 5 || module[0] != spv::MagicNumber) {
     error = "not a SPIR-V module (its header is missing or in the other byte order)";
@@ -85,14 +87,13 @@ std::optional<ModuleIds> instructionIds(const std::vector<uint32_t>& module, std
     auto useRest = [&] {
       while (w < end) use(w++);
     };
-    const spv::InstructionParameters& desc = spv::InstructionDesc[opcode];
-    // An opcode glslang's table does not know reads as "Bad" (its entry is a default one).
-    if (std::strcmp(spv::OpcodeString(int(opcode)), "Bad") == 0) {
+    if (opcode > kGrammarLastOpcode || !kGrammar[opcode].known) {
       error = fmt::format("the module has an instruction the cut does not know (opcode {})", opcode);
       return std::nullopt;
     }
-    if (desc.hasType() && w < end) use(w++);
-    if (desc.hasResult() && w < end) {
+    const GrammarEntry& grammar = kGrammar[opcode];
+    if (grammar.hasType && w < end) use(w++);
+    if (grammar.hasResult && w < end) {
       if (words[w] >= m.bound || words[w] == 0) bad = true;
       inst.resultAt = uint16_t(w - at);
       ++w;
@@ -132,9 +133,9 @@ std::optional<ModuleIds> instructionIds(const std::vector<uint32_t>& module, std
         break;
       default: break;
     }
-    const spv::OperandParameters& operands = desc.operands;
-    for (int k = 0; k < operands.getNum() && w < end; ++k) {
-      switch (operands.getClass(k)) {
+    const unsigned char* classes = kGrammarOperandClasses + grammar.first;
+    for (int k = 0; k < grammar.count && w < end; ++k) {
+      switch (static_cast<spv::OperandClass>(classes[k])) {
         case spv::OperandId:
         case spv::OperandScope:
         case spv::OperandMemorySemantics: use(w++); break;

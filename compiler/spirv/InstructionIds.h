@@ -6,7 +6,8 @@
 /// operand. It read them from SPIRV-Tools' binary parser, which decodes every operand of every
 /// instruction into a typed record: 7.7 M instructions per library module, a twentieth of a
 /// corpus batch. This walk reads the same from glslang's own table of the SPIR-V grammar
-/// (glslang/SPIRV/doc.h, the operand classes of every opcode that its disassembler follows),
+/// (glslang/SPIRV/doc.h, the operand classes of every opcode that its disassembler follows,
+/// turned into a constant table when mxc is built: SpirvGrammarGenerator.cpp),
 /// about twenty times faster. Where that table cannot say which words are IDs without more
 /// context than one instruction (an OpSwitch on a selector wider than 32 bits, two memory
 /// operands of OpCopyMemory, OpExtInst of a set other than GLSL.std.450, an OpSpecConstantOp),
