@@ -374,36 +374,48 @@ std::optional<std::vector<uint32_t>> ModuleCutter::cut(const CutRequest& request
                    [&](uint32_t a, uint32_t b) { return newTarget(a) < newTarget(b); });
 
   const std::string memberPrefix = request.member + "(";
-  std::vector<uint32_t> out = {spv::MagicNumber, m.version, m.generator, next, 0u};
-  out.reserve(m.words.size());
+  // Written through `n`: the module's own size bounds the output but for a renamed OpName,
+  // which may grow it (checked at every instruction).
+  std::vector<uint32_t> out(5 + m.words.size());
+  out[0] = spv::MagicNumber;
+  out[1] = m.version;
+  out[2] = m.generator;
+  out[3] = next;
+  out[4] = 0u;
+  size_t n = 5;
+  auto room = [&](size_t words) {
+    if (n + words > out.size()) out.resize(n + words + 64);
+  };
   bool missing = false;
   auto emit = [&](uint32_t index) {
     const Instruction& inst = m.instructions[index];
-    const size_t at = out.size();
-    std::string name;
-    if (cutting && inst.opcode == spv::OpName && used(m.word(inst, 1)) == member) name = m.literalString(inst, 2);
-    if (!name.empty() && name.rfind(memberPrefix, 0) == 0) {
-      // The member takes the forwarder's name: "<member>(params" becomes "<forwarder>(params".
-      const std::string renamed = request.forwarder + name.substr(request.member.size());
-      const std::vector<uint32_t> text = stringWords(renamed);
-      out.push_back((uint32_t(2 + text.size()) << 16) | spv::OpName);
-      out.push_back(renumbered[member]);
-      out.insert(out.end(), text.begin(), text.end());
-      return;
+    if (cutting && inst.opcode == spv::OpName && used(m.word(inst, 1)) == member) {
+      const std::string name = m.literalString(inst, 2);
+      if (name.rfind(memberPrefix, 0) == 0) {
+        // The member takes the forwarder's name: "<member>(params" becomes "<forwarder>(params".
+        const std::vector<uint32_t> text = stringWords(request.forwarder + name.substr(request.member.size()));
+        room(2 + text.size());
+        out[n++] = (uint32_t(2 + text.size()) << 16) | spv::OpName;
+        out[n++] = renumbered[member];
+        std::copy(text.begin(), text.end(), out.begin() + long(n));
+        n += text.size();
+        return;
+      }
     }
-    out.insert(out.end(), m.words.begin() + inst.at, m.words.begin() + inst.at + inst.count);
+    room(inst.count);
+    uint32_t* const o = out.data() + n;
+    std::copy_n(m.words.data() + inst.at, inst.count, o);
+    n += inst.count;
     auto rewrite = [&](uint32_t offset) {
-      const uint32_t id = used(out[at + offset]);
+      const uint32_t id = cutting ? used(o[offset]) : o[offset];
       if (id >= m.bound || !renumbered[id]) missing = true;
-      else out[at + offset] = renumbered[id];
+      else o[offset] = renumbered[id];
     };
     const uint16_t* u = m.usesOf(inst);
     for (uint16_t k = 0; k < inst.useCount; ++k) rewrite(u[k]);
     if (inst.resultAt) rewrite(inst.resultAt);
     // OpEntryPoint: execution model, function, name, then the interface IDs, by ID.
-    if (inst.opcode == spv::OpEntryPoint && inst.useCount > 1) {
-      std::sort(out.begin() + long(at + u[1]), out.begin() + long(at + inst.count));
-    }
+    if (inst.opcode == spv::OpEntryPoint && inst.useCount > 1) std::sort(o + u[1], o + inst.count);
   };
   for (uint32_t index : capabilities) emit(index);
   for (Section s : {kExtensions, kImports, kMemoryModel, kEntryPoints, kExecutionModes}) {
@@ -422,6 +434,7 @@ std::optional<std::vector<uint32_t>> ModuleCutter::cut(const CutRequest& request
     error = "the cut left an instruction using an ID it removed";
     return std::nullopt;
   }
+  out.resize(n);
   return out;
 }
 
