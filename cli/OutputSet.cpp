@@ -1,6 +1,9 @@
 #include "cli/OutputSet.h"
 
+#include <sys/stat.h>
+
 #include <cstdio>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -10,16 +13,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The same target: one existing file, or one path (absolute, normalised) that does not exist
-/// yet. Standard output counts as one target too.
-bool sameTarget(const OutputTarget& a, const OutputTarget& b) {
-  using Kind = OutputTarget::Kind;
-  if (a.kind == Kind::Standard || b.kind == Kind::Standard) return a.kind == b.kind;
-  if (sameExistingFile(a.path, b.path)) return true;
-  std::error_code ec;
-  const fs::path pa = fs::weakly_canonical(fs::absolute(a.path), ec);
-  const fs::path pb = fs::weakly_canonical(fs::absolute(b.path), ec);
-  return pa == pb;
+/// What names a target, computed once per target: the file it is (device and inode) when it
+/// exists, and its path with the symbolic links of its folder resolved. Two targets are the same
+/// when both exist as one file, or when those paths are equal. Standard output is one target.
+struct TargetIdentity {
+  bool standard = false;
+  bool exists = false;
+  dev_t device = 0;
+  ino_t inode = 0;
+  fs::path resolved;
+};
+
+bool sameTarget(const TargetIdentity& a, const TargetIdentity& b) {
+  if (a.standard || b.standard) return a.standard == b.standard;
+  if (a.exists && b.exists && a.device == b.device && a.inode == b.inode) return true;
+  return a.resolved == b.resolved;
 }
 
 }  // namespace
@@ -32,10 +40,31 @@ std::optional<std::string> OutputSet::declare(const fs::path& path, const std::s
 }
 
 std::optional<std::string> OutputSet::checkDistinct() const {
+  // A command's outputs share a folder or a few: each folder is resolved once (a path's
+  // resolution stats and reads the links of every component), each target stated once.
+  std::map<fs::path, fs::path> folders;
+  std::vector<TargetIdentity> identities(entries_.size());
+  for (size_t i = 0; i < entries_.size(); ++i) {
+    const OutputTarget& t = entries_[i].target;
+    TargetIdentity& id = identities[i];
+    id.standard = t.kind == OutputTarget::Kind::Standard;
+    if (id.standard) continue;
+    struct stat st {};
+    if (::stat(t.path.c_str(), &st) == 0) {
+      id.exists = true;
+      id.device = st.st_dev;
+      id.inode = st.st_ino;
+    }
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(t.path, ec);
+    auto [folder, added] = folders.try_emplace(absolute.parent_path());
+    if (added) folder->second = fs::weakly_canonical(folder->first, ec);
+    id.resolved = folder->second / absolute.filename();
+  }
   for (size_t i = 0; i < entries_.size(); ++i) {
     for (size_t k = 0; k < i; ++k) {
       const Entry &a = entries_[k], &b = entries_[i];
-      if (b.target.kind == OutputTarget::Kind::Special || !sameTarget(a.target, b.target)) continue;
+      if (b.target.kind == OutputTarget::Kind::Special || !sameTarget(identities[k], identities[i])) continue;
       return fmt::format("{} '{}' and {} '{}' name the same file: one would overwrite the other", a.option,
                          a.target.requested.string(), b.option, b.target.requested.string());
     }

@@ -227,6 +227,20 @@ TEST(OutputSafety, TwoOutputsOnOnePathAreAUsageError) {
   EXPECT_EQ(r.exitCode, 2) << r.err;
   EXPECT_NE(r.err.find("m_first.spv' and --glsl '"), std::string::npos) << r.err;
   EXPECT_EQ(folder.entries(), (std::vector<std::string>{"names.mtlx"}));
+  // Through a link to the folder, and through `..` out of a link to a folder elsewhere: the
+  // folders are resolved, not compared as spelled.
+  fs::create_directories(folder / "real" / "deep");
+  fs::create_directory_symlink(folder / "real", folder / "link");
+  fs::create_directory_symlink(folder / "real" / "deep", folder / "hop");
+  r = mxc("compile " + corpus(kDefault) + " -o " + (folder / "real" / "x").string() + " --glsl " +
+          (folder / "link" / "x").string());
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("name the same file"), std::string::npos) << r.err;
+  r = mxc("compile " + corpus(kDefault) + " -o " + (folder / "real" / "y").string() + " --glsl " +
+          (folder / "hop" / ".." / "y").string());
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("name the same file"), std::string::npos) << r.err;
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"hop", "link", "names.mtlx", "real"}));
 }
 
 // --- Sets of outputs ----------------------------------------------------------------------
