@@ -113,7 +113,7 @@ struct Job {
   std::unique_ptr<SceneDocuments> scene;
   /// The materials to compile, each with the pipeline of its document, and their shaders.
   std::vector<std::pair<MaterialPipeline*, const ir::Material*>> units;
-  std::vector<glsl::MaterialShader> shaders;
+  std::vector<std::shared_ptr<const glsl::MaterialShader>> shaders;
   bool prepared = false;  ///< false: result says why not (or that there is nothing to compile)
   Job() { session.capture = &result.messages; }
 };
@@ -156,7 +156,9 @@ void prepareItem(const Batch& batch, const Item& item, Job& job) {
     result.outcome = Outcome::Nothing;
     return;
   }
-  for (const auto& [pipeline, material] : units) job.shaders.push_back(pipeline->compiler().shader(*material));
+  for (const auto& [pipeline, material] : units) {
+    job.shaders.push_back(std::make_shared<const glsl::MaterialShader>(pipeline->compiler().shader(*material)));
+  }
   job.prepared = true;
 }
 
@@ -209,7 +211,7 @@ void finishItem(const Batch& batch, const Item& item, Job& job) {
     }
     const auto start = std::chrono::steady_clock::now();
     Compiler& compiler = pipeline->compiler();
-    const glsl::MaterialShader& shader = job.shaders[u];
+    const glsl::MaterialShader& shader = *job.shaders[u];
     ShaderCache::Served served = ShaderCache::Served::Compiled;
     std::optional<std::vector<uint32_t>> words = compiler.spirv(shader, &served);
     session.printDiagnostics();
@@ -358,13 +360,13 @@ int runCompileBatch(const CompileOptions& options) {
   // The shaders of one library compile as one (driver/ShaderGroups.h), each group before the
   // documents that need it, the largest first, so that no worker waits on another's group.
   {
-    std::vector<glsl::MaterialShader> shaders;
+    std::vector<std::shared_ptr<const glsl::MaterialShader>> shaders;
     for (const auto& job : jobs) {
       if (job->prepared) shaders.insert(shaders.end(), job->shaders.begin(), job->shaders.end());
     }
     CompileRequest request;
     request.optimize = options.optimize;
-    planShaderGroups(shaderCache, std::move(shaders), request);
+    planShaderGroups(shaderCache, shaders, request);
   }
   std::mutex printing;
   Progress progress(items.size());

@@ -15,27 +15,27 @@ std::string shaderCacheKey(const glsl::MaterialShader& shader, const CompileRequ
   return fmt::format("{}{}\n{}", spirv::stageName(shader.glsl.stage), request.optimize ? " -O" : "", shader.codeKey);
 }
 
-void planShaderGroups(ShaderCache& cache, std::vector<glsl::MaterialShader> shaders, const CompileRequest& request) {
+void planShaderGroups(ShaderCache& cache, const std::vector<std::shared_ptr<const glsl::MaterialShader>>& shaders,
+                      const CompileRequest& request) {
   if (request.optimize) return;
   // One member per distinct code (materials of one code share its module anyway), by library
   // and stage.
-  using Members = std::vector<glsl::MaterialShader>;
+  using Members = std::vector<std::shared_ptr<const glsl::MaterialShader>>;
   std::map<std::string, Members> libraries;
   std::set<std::string> seen;
-  for (glsl::MaterialShader& s : shaders) {
-    if (s.codeKey.empty() || s.closureEnd <= s.closureFirst) continue;  // built by hand: no closure lines
-    if (!seen.insert(shaderCacheKey(s, request)).second) continue;
-    const std::string library = fmt::format("{}\n{}", spirv::stageName(s.glsl.stage), s.libraryKey);
-    libraries[library].push_back(std::move(s));
+  for (const auto& s : shaders) {
+    if (s->codeKey.empty() || s->closureEnd <= s->closureFirst) continue;  // built by hand: no closure lines
+    if (!seen.insert(shaderCacheKey(*s, request)).second) continue;
+    const std::string library = fmt::format("{}\n{}", spirv::stageName(s->glsl.stage), s->libraryKey);
+    libraries[library].push_back(s);
   }
   for (auto& [library, members] : libraries) {
     if (members.size() < 2) continue;
-    auto group = std::make_shared<const Members>(std::move(members));
     std::vector<std::string> keys;
-    for (const glsl::MaterialShader& s : *group) keys.push_back(shaderCacheKey(s, request));
-    cache.addGroup(keys, [group, keys] {
+    for (const auto& s : members) keys.push_back(shaderCacheKey(*s, request));
+    cache.addGroup(keys, [group = std::move(members), keys] {
       std::vector<const glsl::MaterialShader*> pointers;
-      for (const glsl::MaterialShader& s : *group) pointers.push_back(&s);
+      for (const auto& s : group) pointers.push_back(s.get());
       std::map<std::string, ShaderCache::Words> made;
       // A group that does not compile leaves each member to compile alone, with its own
       // document's messages: this one's are dropped.

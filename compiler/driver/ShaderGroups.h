@@ -11,6 +11,7 @@
 /// are cut from the validated module (spirv/ModuleCut.h), the same bytes a compile of each
 /// alone writes (ShaderGroupTest checks every corpus material).
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,9 @@ std::string shaderCacheKey(const glsl::MaterialShader& shader, const CompileRequ
 /// Adds to `cache` a group for each library of `shaders` (the shaders a batch is about to
 /// compile with `request`'s options) that has two distinct codes or more. Nothing is compiled
 /// here: the first material of a group to reach compileShader compiles the group.
-/// Optimised modules (-O) are not grouped: each is optimised from its own module.
-void planShaderGroups(ShaderCache& cache, std::vector<glsl::MaterialShader> shaders, const CompileRequest& request);
+/// Optimised modules (-O) are not grouped: each is optimised from its own module. A group holds
+/// its members (shared with the caller, not copied: a batch's shaders are megabytes of text).
+void planShaderGroups(ShaderCache& cache, const std::vector<std::shared_ptr<const glsl::MaterialShader>>& shaders,
+                      const CompileRequest& request);
 
 }  // namespace mxc
