@@ -243,11 +243,13 @@ void finishItem(const Batch& batch, const Item& item, Job& job) {
         continue;
       }
     }
-    detail("{}: {}: {} SPIR-V instructions, {} {:.1f} ms", file, material->name, spirv::instructionCount(*words),
-           served == ShaderCache::Served::Compiled       ? "compiled and written in"
-           : served == ShaderCache::Served::SameCode     ? "the module of a shader of the same code, written in"
-                                                         : "cut from its library's shader, written in",
-           millisecondsSince(start));
+    if (verbose()) {  // counting the instructions is work of its own
+      detail("{}: {}: {} SPIR-V instructions, {} {:.1f} ms", file, material->name, spirv::instructionCount(*words),
+             served == ShaderCache::Served::Compiled       ? "compiled and written in"
+             : served == ShaderCache::Served::SameCode     ? "the module of a shader of the same code, written in"
+                                                           : "cut from its library's shader, written in",
+             millisecondsSince(start));
+    }
     ++result.materials;
   }
   // All or nothing for the document, as for a single compile.

@@ -104,6 +104,9 @@ struct ModuleCutter::Parsed {
   uint32_t word(const Instruction& i, uint32_t offset) const { return words[i.at + offset]; }
   uint32_t result(const Instruction& i) const { return i.resultAt ? word(i, i.resultAt) : 0u; }
   const uint16_t* usesOf(const Instruction& i) const { return uses.data() + i.firstUse; }
+  /// The IDs an instruction uses, in the order of usesOf (read once, not through two indices).
+  std::vector<uint32_t> useIds;
+  const uint32_t* useIdsOf(const Instruction& i) const { return useIds.data() + i.firstUse; }
 
   std::string literalString(const Instruction& inst, uint32_t offset) const {
     std::string s;
@@ -162,6 +165,10 @@ ModuleCutter::ModuleCutter(const std::vector<uint32_t>& module) : parsed_(std::m
   m.words = module;
   m.instructions = std::move(ids->instructions);
   m.uses = std::move(ids->uses);
+  m.useIds.resize(m.uses.size());
+  for (const Instruction& inst : m.instructions) {
+    for (uint16_t k = 0; k < inst.useCount; ++k) m.useIds[inst.firstUse + k] = m.word(inst, m.uses[inst.firstUse + k]);
+  }
   for (uint32_t index = 0; index < m.instructions.size(); ++index) {
     switch (static_cast<spv::Op>(m.instructions[index].opcode)) {
       case spv::OpDecorateId:
@@ -220,7 +227,8 @@ std::optional<std::vector<uint32_t>> ModuleCutter::cut(const CutRequest& request
     }
   }
   // Every use of the forwarder (its calls: the only way GLSL uses a function) is the member's.
-  auto used = [&](uint32_t id) { return id == forwarder && cutting ? member : id; };
+  // (Without a cut, forwarder is 0, which no ID is.)
+  auto used = [&](uint32_t id) { return id == forwarder ? member : id; };
   auto functionInstructions = [&](size_t f) {
     const auto [first, end] = m.functions[f];
     return std::pair(m.sections[kFunctions].data() + first, m.sections[kFunctions].data() + end);
@@ -238,8 +246,8 @@ std::optional<std::vector<uint32_t>> ModuleCutter::cut(const CutRequest& request
     }
   };
   auto reachUses = [&](const Instruction& inst) {
-    const uint16_t* u = m.usesOf(inst);
-    for (uint16_t k = 0; k < inst.useCount; ++k) reach(m.word(inst, u[k]));
+    const uint32_t* ids = m.useIdsOf(inst);
+    for (uint16_t k = 0; k < inst.useCount; ++k) reach(ids[k]);
   };
   for (Section s : {kEntryPoints, kExecutionModes}) {
     for (uint32_t index : m.sections[s]) reachUses(m.instructions[index]);
@@ -293,13 +301,13 @@ std::optional<std::vector<uint32_t>> ModuleCutter::cut(const CutRequest& request
     if (id >= m.bound || placed[id] || !kept[id] || m.globalAt[id] == kNone) return;
     placed[id] = 1;
     const Instruction& g = m.instructions[m.globalAt[id]];
-    const uint16_t* u = m.usesOf(g);
-    for (uint16_t k = 0; k < g.useCount; ++k) self(self, m.word(g, u[k]));
+    const uint32_t* ids = m.useIdsOf(g);
+    for (uint16_t k = 0; k < g.useCount; ++k) self(self, ids[k]);
     globals.push_back(m.globalAt[id]);
   };
   auto placeUses = [&](const Instruction& inst) {
-    const uint16_t* u = m.usesOf(inst);
-    for (uint16_t k = 0; k < inst.useCount; ++k) place(place, m.word(inst, u[k]));
+    const uint32_t* ids = m.useIdsOf(inst);
+    for (uint16_t k = 0; k < inst.useCount; ++k) place(place, ids[k]);
   };
   std::vector<size_t> functions;  // kept, in module order
   for (size_t f = 0; f < m.functions.size(); ++f) {
@@ -321,13 +329,14 @@ std::optional<std::vector<uint32_t>> ModuleCutter::cut(const CutRequest& request
   };
   auto numberAll = [&](const Instruction& inst) {
     const uint16_t* u = m.usesOf(inst);
+    const uint32_t* ids = m.useIdsOf(inst);
     bool resultDone = inst.resultAt == 0;
     for (uint16_t k = 0; k < inst.useCount; ++k) {
       if (!resultDone && inst.resultAt < u[k]) {
         number(m.word(inst, inst.resultAt));
         resultDone = true;
       }
-      number(m.word(inst, u[k]));
+      number(ids[k]);
     }
     if (!resultDone) number(m.word(inst, inst.resultAt));
   };
@@ -407,7 +416,7 @@ std::optional<std::vector<uint32_t>> ModuleCutter::cut(const CutRequest& request
     std::copy_n(m.words.data() + inst.at, inst.count, o);
     n += inst.count;
     auto rewrite = [&](uint32_t offset) {
-      const uint32_t id = cutting ? used(o[offset]) : o[offset];
+      const uint32_t id = used(o[offset]);
       if (id >= m.bound || !renumbered[id]) missing = true;
       else o[offset] = renumbered[id];
     };
