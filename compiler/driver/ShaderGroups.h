@@ -6,7 +6,7 @@
 /// A shader's SPIR-V compile is nearly all library (the corpus's raster shaders: about 5,000
 /// instructions, of which the material's function is under a hundred), and glslang's parse
 /// and SPIRV-Tools' validation of it cost about 110 M instructions per shader. The corpus's 75
-/// materials are 70 distinct shaders but 20 libraries (glsl::MaterialShader::libraryKey). A
+/// materials are 70 distinct shaders but 18 libraries (glsl::MaterialShader::libraryKey). A
 /// group is one glslang compile and one validation (glsl/ShaderGroup.h); its members' modules
 /// are cut from the validated module (spirv/ModuleCut.h), the same bytes a compile of each
 /// alone writes (ShaderGroupTest checks every corpus material).

@@ -121,6 +121,9 @@ class Writer {
   /// The lines from here to endClosure() define the material's function: out of the library key.
   void beginClosure() { closure_.first = lineCount_; closurePieces_.first = pieces_.size(); }
   void endClosure() { closure_.second = lineCount_; closurePieces_.second = pieces_.size(); }
+  /// The lines from here to endTextures() declare the textures: out of the library key.
+  void beginTextures() { textures_.first = lineCount_; texturePieces_.first = pieces_.size(); }
+  void endTextures() { textures_.second = lineCount_; texturePieces_.second = pieces_.size(); }
   /// A library file, whole, with a marker naming it.
   void file(std::string_view path) {
     if (!expand_) {
@@ -141,6 +144,7 @@ class Writer {
   /// The key but for the material's function.
   const std::string& libraryKey() const { return libraryKey_; }
   std::pair<size_t, size_t> closure() const { return closure_; }
+  std::pair<size_t, size_t> textures() const { return textures_; }
   spirv::GlslSource finish(spirv::Stage stage, std::string name) {
     spirv::GlslSource out;
     out.stage = stage;
@@ -163,7 +167,9 @@ class Writer {
       if (!p.keyed) continue;
       key += p.text;
       key += '\n';
-      if (i < closurePieces_.first || i >= closurePieces_.second) {
+      const bool inClosure = i >= closurePieces_.first && i < closurePieces_.second;
+      const bool inTextures = i >= texturePieces_.first && i < texturePieces_.second;
+      if (!inClosure && !inTextures) {
         // Without its comment: a texture's declaration names its file in one, and materials
         // whose declarations differ only there compile as one (GLSL has no strings: `//`
         // always starts a comment).
@@ -199,6 +205,8 @@ class Writer {
   std::string libraryKey_;
   std::pair<size_t, size_t> closure_{0, 0};        ///< the lines of mxc_material_closure, [first, end)
   std::pair<size_t, size_t> closurePieces_{0, 0};  ///< the same as pieces
+  std::pair<size_t, size_t> textures_{0, 0};       ///< the texture declarations' lines, [first, end)
+  std::pair<size_t, size_t> texturePieces_{0, 0};  ///< the same as pieces
 };
 
 std::vector<UniformField> parameterLayout(const ir::Material& material, const ExprEmitter& exprs, uint32_t& bytes) {
@@ -320,10 +328,12 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
     w.line(fmt::format("  layout(offset = {}) {} {};", f.offset, parameterType(f), f.name));
   }
   w.line("} mxc_params;");
+  w.beginTextures();
   for (const TextureBinding& t : iface.textures) {
     w.line(fmt::format("MXC_DECLARE_SAMPLER2D(0, {}, {});  // {}{}", t.binding, t.name, t.path,
                        t.colorspace.empty() ? "" : " (" + t.colorspace + ")"));
   }
+  w.endTextures();
   w.line("");
   w.namingLine(fmt::format("// ---- material '{}' ----", material.name), material.origin.location);
   w.beginClosure();
@@ -360,6 +370,7 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   out.codeKey = w.key();
   out.libraryKey = w.libraryKey();
   std::tie(out.closureFirst, out.closureEnd) = w.closure();
+  std::tie(out.texturesFirst, out.texturesEnd) = w.textures();
   return out;
 }
 

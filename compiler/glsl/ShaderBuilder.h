@@ -62,12 +62,18 @@ struct MaterialShader {
   /// file by its path (its text is fixed in the executable). Two shaders with the same key
   /// compile to the same SPIR-V (ShaderCache).
   std::string codeKey;
-  /// The code key but for the body of `mxc_material_closure` and for comments: shaders with the
-  /// same library key compile as one shader in a batch (ShaderGroup.h).
+  /// The code key but for the body of `mxc_material_closure`, the texture declarations and
+  /// comments: shaders with the same library key compile as one shader in a batch
+  /// (ShaderGroup.h). A texture's declaration depends only on its index (binding
+  /// kFirstTextureBinding + i, name mxc_texture_<i>), so shaders that differ in how many textures
+  /// they read share a library: the group declares the most any member reads.
   std::string libraryKey;
   /// The lines [first, end) of glsl.text that define `mxc_material_closure`.
   size_t closureFirst = 0;
   size_t closureEnd = 0;
+  /// The lines [first, end) of glsl.text that declare the textures (empty for none).
+  size_t texturesFirst = 0;
+  size_t texturesEnd = 0;
 };
 
 struct BuildOptions {

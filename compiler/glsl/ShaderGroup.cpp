@@ -22,6 +22,9 @@ std::vector<std::string_view> splitLines(const std::string& text) {
   return lines;
 }
 
+/// A line without its comment (a texture declaration's names the member's file).
+std::string_view code(std::string_view line) { return line.substr(0, line.find("//")); }
+
 }  // namespace
 
 std::string groupMemberFunction(size_t index) { return fmt::format("{}_m{}", kClosureFunction, index); }
@@ -42,7 +45,30 @@ spirv::GlslSource groupSource(const std::vector<const MaterialShader*>& members)
     out.text += line;
     out.text += '\n';
   };
-  for (size_t i = 0; i < first.closureFirst; ++i) add(lines[i]);
+  // The texture declarations of the member that reads the most; every member's are the same
+  // lines but for their comments, as many as it reads (ShaderBuilder.h: MaterialShader::libraryKey).
+  const MaterialShader* mostTextures = &first;
+  for (const MaterialShader* m : members) {
+    if (m->texturesEnd - m->texturesFirst > mostTextures->texturesEnd - mostTextures->texturesFirst) mostTextures = m;
+  }
+  const std::vector<std::string_view> textureLines = splitLines(mostTextures->glsl.text);
+  for (const MaterialShader* m : members) {
+    const std::vector<std::string_view> own = m == mostTextures ? textureLines : splitLines(m->glsl.text);
+    if (m->texturesFirst > m->texturesEnd || m->texturesEnd > m->closureFirst) {
+      throw std::logic_error("a material shader whose texture declarations are not before its closure");
+    }
+    for (size_t i = 0; i < m->texturesEnd - m->texturesFirst; ++i) {
+      if (code(own[m->texturesFirst + i]) != code(textureLines[mostTextures->texturesFirst + i])) {
+        throw std::logic_error("a shader group whose members declare a texture differently");
+      }
+    }
+  }
+  if (first.texturesFirst > first.texturesEnd || first.texturesEnd > first.closureFirst) {
+    throw std::logic_error("a material shader whose texture declarations are not before its closure");
+  }
+  for (size_t i = 0; i < first.texturesFirst; ++i) add(lines[i]);
+  for (size_t i = mostTextures->texturesFirst; i < mostTextures->texturesEnd; ++i) add(textureLines[i]);
+  for (size_t i = first.texturesEnd; i < first.closureFirst; ++i) add(lines[i]);
   for (size_t k = 0; k < members.size(); ++k) {
     const MaterialShader& m = *members[k];
     if (m.libraryKey != first.libraryKey) throw std::logic_error("a shader group of different libraries");
