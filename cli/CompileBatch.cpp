@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <exception>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -309,6 +310,7 @@ int runCompileBatch(const CompileOptions& options) {
   std::mutex startMutex;
   std::condition_variable_any preparationStarts;
   std::function<void()> prepareSome;  // set, under startMutex, when the preparation starts
+  std::exception_ptr helperFailure;   // what escaped prepareSome on that thread (out of memory)
   std::jthread vertexStage;
   if (kindOf(options.stage) == glsl::ShaderKind::Raster && !options.output.empty()) {
     vertexStage = std::jthread([&](std::stop_token stop) {
@@ -321,7 +323,11 @@ int runCompileBatch(const CompileOptions& options) {
       // A batch that ends before its preparation (libraries that do not load) stops the wait.
       if (!preparationStarts.wait(lock, stop, [&] { return bool(prepareSome); })) return;
       lock.unlock();
-      prepareSome();
+      try {
+        prepareSome();
+      } catch (...) {
+        helperFailure = std::current_exception();  // rethrown by the batch's thread after the join
+      }
     });
   }
   // The libraries, once for every document.
@@ -382,8 +388,15 @@ int runCompileBatch(const CompileOptions& options) {
     preparationStarts.notify_all();
     preparers = std::max<size_t>(1, workers - 1);
   }
-  runOnThreads(preparers, preparers, [&](size_t) { prepareUntilDone(); });
+  try {
+    runOnThreads(preparers, preparers, [&](size_t) { prepareUntilDone(); });
+  } catch (...) {
+    // The vertex thread may be preparing documents, which end with this scope: it finishes first.
+    if (vertexStage.joinable()) vertexStage.join();
+    throw;
+  }
   if (vertexStage.joinable()) vertexStage.join();
+  if (helperFailure) std::rethrow_exception(helperFailure);
   detail("prepared {} document(s) in {:.1f} ms", items.size(), millisecondsSince(preparing));
   // The shaders of one library compile as one (driver/ShaderGroups.h), each group before the
   // documents that need it, the largest first, so that no worker waits on another's group.
