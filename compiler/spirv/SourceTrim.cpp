@@ -265,6 +265,7 @@ TrimmedSource trimForParse(std::string_view glsl) {
   std::string_view lastIdentifier, calledName;
   bool inFunction = false;
   bool directiveInUnit = false;  // a directive between the tokens of the unit being read
+  int parenGroups = 0;           // parenthesised groups at the top level of the unit being read
   size_t next = 0;
   for (size_t i = 0; i < text.size();) {
     while (next < directives.size() && directives[next] < i) ++next;
@@ -309,17 +310,23 @@ TrimmedSource trimForParse(std::string_view glsl) {
     ++i;
     if (depth == 0 && !inFunction) {
       if (c == '(') {
-        if (parens++ == 0) calledName = previous == 'a' ? lastIdentifier : std::string_view{};
+        if (parens++ == 0) {
+          calledName = previous == 'a' ? lastIdentifier : std::string_view{};
+          ++parenGroups;
+        }
       } else if (c == ')') {
         --parens;
       } else if (c == '{' && previous == ')' && parens == 0 && !calledName.empty()) {
         inFunction = true;
-        functions.push_back({calledName, unitBegin, 0, {}, directiveInUnit});
+        // A definition has one parenthesised group before its body, its parameters; more (a
+        // macro invoked without a `;` before it) and its text is not only the function's.
+        functions.push_back({calledName, unitBegin, 0, {}, directiveInUnit || parenGroups > 1});
       } else if (c == ';' && parens == 0) {
         roots.insert(roots.end(), pending.begin(), pending.end());
         pending.clear();
         unitBegin = std::string::npos;
         directiveInUnit = false;
+        parenGroups = 0;
       }
     }
     if (c == '{') ++depth;
@@ -336,6 +343,7 @@ TrimmedSource trimForParse(std::string_view glsl) {
         inFunction = false;
         unitBegin = std::string::npos;
         directiveInUnit = false;
+        parenGroups = 0;
       }
     }
     previous = c;

@@ -14,7 +14,9 @@
 ///    on macros named MXC_..., the only ones the library tests);
 ///  - every function definition that nothing left can call: a function is kept when its name
 ///    appears in `main`, in a kept function, in any declaration outside a function or in any
-///    directive (a macro's body), so overloads are kept or removed together.
+///    directive (a macro's body), so overloads are kept or removed together; a definition with
+///    a directive inside it, or text before it that is not its own (a macro invoked without a
+///    `;`), is kept.
 /// glslang would have removed those functions itself; their absence changes nothing in the
 /// SPIR-V, which ShaderGroupTest and the golden tests check byte for byte.
 ///

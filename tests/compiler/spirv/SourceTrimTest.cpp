@@ -99,12 +99,17 @@ TEST(SourceTrim, OnlyFunctionsNothingCanCallAreRemoved) {
       "float unused_root() { return unused_leaf() + callee(); }\n"
       "struct S { float v; };\n"
       "float pinned() {\n#define MXC_INSIDE 1\nreturn 4.0; }\n"
+      "#define MXC_DEFINE(NAME) float NAME() { return 5.0; }\n"
+      "MXC_DEFINE(from_macro)\n"
+      "float after_macro() { return 6.0; }\n"
       "layout(location = 0) out vec4 colour;\n"
-      "void main() { colour = vec4(caller() + overloaded(1.0) + MXC_TWICE(gValue)); }\n";
+      "void main() { colour = vec4(caller() + overloaded(1.0) + MXC_TWICE(gValue) + from_macro()); }\n";
   const auto trimmed = trimForParse(glsl);
   ASSERT_TRUE(trimmed.trimmed);
   for (const char* kept : {"float macro_only", "float overloaded", "vec2 overloaded", "float initialiser",
-                           "float callee", "float caller", "struct S", "float pinned", "void main"}) {
+                           "float callee", "float caller", "struct S", "float pinned", "void main",
+                           // a macro invoked without a `;`: its text and the function after it stay
+                           "MXC_DEFINE(from_macro)", "float after_macro"}) {
     EXPECT_NE(trimmed.text.find(kept), std::string::npos) << kept << "\n" << trimmed.text;
   }
   EXPECT_EQ(trimmed.text.find("unused_leaf"), std::string::npos) << trimmed.text;
