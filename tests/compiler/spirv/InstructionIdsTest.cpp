@@ -9,11 +9,9 @@
 #include <fmt/format.h>
 #include <spirv-tools/libspirv.h>
 
-#include "compiler/driver/Compiler.h"
-#include "compiler/glsl/ShaderBuilder.h"
 #include "compiler/spirv/InstructionIds.h"
 #include "compiler/spirv/SpirvCompiler.h"
-#include "support/TestSupport.h"
+#include "support/ShaderSupport.h"
 
 namespace mxc::test {
 namespace {
@@ -78,29 +76,7 @@ void expectSameIds(const Words& module, const std::string& name) {
 TEST(InstructionIds, EveryCorpusModuleHasTheIdsSpirvToolsFinds) {
   Context context;
   std::map<std::string, spirv::GlslSource> sources;  // one shader per distinct text
-  auto add = [&](const std::string& doc, Accuracy accuracy, glsl::ShaderKind kind) {
-    CompileRequest request;
-    request.document = sharedDir() / doc;
-    request.accuracy = accuracy;
-    request.stage = kind;
-    Compiler compiler(context, std::move(request));
-    for (const ir::Material& m : compiler.materials()) {
-      glsl::MaterialShader shader = compiler.shader(m);
-      sources.emplace(shader.glsl.text, std::move(shader.glsl));
-    }
-  };
-  for (const std::string& doc : corpusDocuments()) add(doc, Accuracy::Balanced, glsl::ShaderKind::Raster);
-  for (const char* doc : {"corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx",
-                          "corpus/materialx/examples/StandardSurface/standard_surface_brick_procedural.mtlx"}) {
-    for (Accuracy accuracy : {Accuracy::Fast, Accuracy::Reference}) {
-      for (glsl::ShaderKind kind : {glsl::ShaderKind::Raster, glsl::ShaderKind::Eval, glsl::ShaderKind::Furnace,
-                                    glsl::ShaderKind::Sample}) {
-        add(doc, accuracy, kind);
-      }
-    }
-  }
-  sources.emplace("vertex", glsl::buildVertexShader());
-  sources.emplace("tables", glsl::buildTablesShader());
+  for (KeyedShader& s : corpusShaders(context)) sources.emplace(s.glsl.text, std::move(s.glsl));
   ASSERT_GE(sources.size(), 70u) << context.diagnostics.format();
   for (const auto& [text, source] : sources) {
     Diagnostics diagnostics;

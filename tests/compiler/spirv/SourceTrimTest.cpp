@@ -8,11 +8,9 @@
 #include <algorithm>
 #include <map>
 
-#include "compiler/driver/Compiler.h"
-#include "compiler/glsl/ShaderBuilder.h"
 #include "compiler/spirv/SourceTrim.h"
 #include "compiler/spirv/SpirvCompiler.h"
-#include "support/TestSupport.h"
+#include "support/ShaderSupport.h"
 
 namespace mxc::test {
 namespace {
@@ -141,32 +139,8 @@ TEST(SourceTrim, AnErrorNamesTheLineOfTheWholeText) {
 
 TEST(SourceTrim, EveryCorpusLibraryCompilesToTheSameModuleTrimmedOrNot) {
   Context context;
-  std::map<std::string, spirv::GlslSource> libraries;  // one material's shader per library
-  auto add = [&](const std::string& doc, Accuracy accuracy, glsl::ShaderKind kind) {
-    CompileRequest request;
-    request.document = sharedDir() / doc;
-    request.accuracy = accuracy;
-    request.stage = kind;
-    Compiler compiler(context, std::move(request));
-    for (const ir::Material& m : compiler.materials()) {
-      glsl::MaterialShader shader = compiler.shader(m);
-      libraries.emplace(shader.libraryKey, std::move(shader.glsl));
-    }
-  };
-  // Every corpus document's raster shader at the default tier; every tier and stage of two (an
-  // OpenPBR material, a procedural Standard Surface one).
-  for (const std::string& doc : corpusDocuments()) add(doc, Accuracy::Balanced, glsl::ShaderKind::Raster);
-  for (const char* doc : {"corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx",
-                          "corpus/materialx/examples/StandardSurface/standard_surface_brick_procedural.mtlx"}) {
-    for (Accuracy accuracy : {Accuracy::Fast, Accuracy::Balanced, Accuracy::Reference}) {
-      for (glsl::ShaderKind kind : {glsl::ShaderKind::Raster, glsl::ShaderKind::Eval, glsl::ShaderKind::Furnace,
-                                    glsl::ShaderKind::Sample}) {
-        add(doc, accuracy, kind);
-      }
-    }
-  }
-  libraries.emplace("vertex", glsl::buildVertexShader());
-  libraries.emplace("tables", glsl::buildTablesShader());
+  std::map<std::string, spirv::GlslSource> libraries;  // one shader per library
+  for (KeyedShader& s : corpusShaders(context)) libraries.emplace(s.libraryKey, std::move(s.glsl));
   ASSERT_GE(libraries.size(), 30u) << context.diagnostics.format();
   spirv::CompileOptions whole;
   whole.trimSource = false;
