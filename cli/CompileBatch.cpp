@@ -4,13 +4,13 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
-#include <exception>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <functional>
 #include <map>
-#include <stop_token>
 #include <mutex>
+#include <stop_token>
 #include <thread>
 #include <vector>
 

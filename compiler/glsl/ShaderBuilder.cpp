@@ -170,9 +170,8 @@ class Writer {
       const bool inClosure = i >= closurePieces_.first && i < closurePieces_.second;
       const bool inTextures = i >= texturePieces_.first && i < texturePieces_.second;
       if (!inClosure && !inTextures) {
-        // Without its comment: a texture's declaration names its file in one, and materials
-        // whose declarations differ only there compile as one (GLSL has no strings: `//`
-        // always starts a comment).
+        // Without its comment, which changes no code (GLSL has no strings: `//` always starts
+        // a comment).
         libraryKey.append(p.text, 0, p.text.find("//"));
         libraryKey += '\n';
       }

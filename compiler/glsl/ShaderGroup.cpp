@@ -45,26 +45,21 @@ spirv::GlslSource groupSource(const std::vector<const MaterialShader*>& members)
     out.text += line;
     out.text += '\n';
   };
-  // The texture declarations of the member that reads the most; every member's are the same
-  // lines but for their comments, as many as it reads (ShaderBuilder.h: MaterialShader::libraryKey).
+  // Every member declares its textures before its closure, the same lines but for their
+  // comments, as many as it reads (ShaderBuilder.h: MaterialShader::libraryKey); the group's are
+  // those of the member that reads the most. The lines are compared below, member by member.
+  auto textureCount = [](const MaterialShader& m) { return m.texturesEnd - m.texturesFirst; };
   const MaterialShader* mostTextures = &first;
   for (const MaterialShader* m : members) {
-    if (m->texturesEnd - m->texturesFirst > mostTextures->texturesEnd - mostTextures->texturesFirst) mostTextures = m;
-  }
-  const std::vector<std::string_view> textureLines = splitLines(mostTextures->glsl.text);
-  for (const MaterialShader* m : members) {
-    const std::vector<std::string_view> own = m == mostTextures ? textureLines : splitLines(m->glsl.text);
     if (m->texturesFirst > m->texturesEnd || m->texturesEnd > m->closureFirst) {
       throw std::logic_error("a material shader whose texture declarations are not before its closure");
     }
-    for (size_t i = 0; i < m->texturesEnd - m->texturesFirst; ++i) {
-      if (code(own[m->texturesFirst + i]) != code(textureLines[mostTextures->texturesFirst + i])) {
-        throw std::logic_error("a shader group whose members declare a texture differently");
-      }
-    }
+    if (textureCount(*m) > textureCount(*mostTextures)) mostTextures = m;
   }
-  if (first.texturesFirst > first.texturesEnd || first.texturesEnd > first.closureFirst) {
-    throw std::logic_error("a material shader whose texture declarations are not before its closure");
+  const std::vector<std::string_view> textureLines =
+      mostTextures == &first ? lines : splitLines(mostTextures->glsl.text);
+  if (mostTextures->texturesEnd > textureLines.size()) {
+    throw std::logic_error("a material shader without its texture declarations' lines");
   }
   for (size_t i = 0; i < first.texturesFirst; ++i) add(lines[i]);
   for (size_t i = mostTextures->texturesFirst; i < mostTextures->texturesEnd; ++i) add(textureLines[i]);
@@ -75,6 +70,11 @@ spirv::GlslSource groupSource(const std::vector<const MaterialShader*>& members)
     const std::vector<std::string_view> own = splitLines(m.glsl.text);
     if (m.closureEnd > own.size() || own[m.closureFirst] != signature) {
       throw std::logic_error("a material shader without its closure function's lines");
+    }
+    for (size_t i = 0; i < textureCount(m); ++i) {
+      if (code(own[m.texturesFirst + i]) != code(textureLines[mostTextures->texturesFirst + i])) {
+        throw std::logic_error("a shader group whose members declare a texture differently");
+      }
     }
     add(fmt::format("void {}({}) {{", groupMemberFunction(k), kClosureParameters));
     for (size_t i = m.closureFirst + 1; i < m.closureEnd; ++i) add(own[i]);

@@ -33,7 +33,8 @@ uint32_t stringWords(const uint32_t* words, uint32_t at, uint32_t end) {
   return 0;
 }
 
-/// The literal string starting at `at` (for OpExtInstImport's name).
+}  // namespace
+
 std::string literalString(const uint32_t* words, uint32_t at, uint32_t end) {
   std::string s;
   for (uint32_t w = at; w < end; ++w) {
@@ -45,8 +46,6 @@ std::string literalString(const uint32_t* words, uint32_t at, uint32_t end) {
   }
   return s;
 }
-
-}  // namespace
 
 std::optional<ModuleIds> instructionIds(const std::vector<uint32_t>& module, std::string& error) {
   ModuleIds m;
@@ -60,7 +59,7 @@ std::optional<ModuleIds> instructionIds(const std::vector<uint32_t>& module, std
   m.instructions.reserve(m.bound);
   m.uses.reserve(size_t(m.bound) * 3);
   std::unordered_set<uint32_t> glslStd450;  // IDs of OpExtInstImport "GLSL.std.450"
-  uint32_t intWidthAbove32 = 0;             // an integer type wider than 32 bits was declared
+  bool intWidthAbove32 = false;             // an integer type wider than 32 bits was declared
   const uint32_t* words = module.data();
   const uint32_t size = uint32_t(module.size());
   for (uint32_t at = 5; at < size;) {
@@ -129,7 +128,7 @@ std::optional<ModuleIds> instructionIds(const std::vector<uint32_t>& module, std
         }
         break;
       case spv::OpTypeInt:
-        if (count > 2 && words[at + 2] > 32) intWidthAbove32 = 1;
+        if (count > 2 && words[at + 2] > 32) intWidthAbove32 = true;
         break;
       default: break;
     }

@@ -36,6 +36,10 @@ struct ModuleIds {
   std::vector<uint16_t> uses;  ///< word offsets within their instruction, in order
 };
 
+/// The literal string in words [at, end) (section 2.2.1: UTF-8, nul-terminated, padded to a
+/// word), up to its nul.
+std::string literalString(const uint32_t* words, uint32_t at, uint32_t end);
+
 /// The IDs of every instruction of `module`, each below the header's bound; nothing, saying why
 /// in `error`, for a module that is not well formed or that the walk refuses (see above).
 std::optional<ModuleIds> instructionIds(const std::vector<uint32_t>& module, std::string& error);

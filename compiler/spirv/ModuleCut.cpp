@@ -1,13 +1,13 @@
 #include "compiler/spirv/ModuleCut.h"
 
-#include "compiler/spirv/InstructionIds.h"
-
 #include <algorithm>
 #include <string_view>
 #include <tuple>
 
 #include <fmt/format.h>
 #include <glslang/SPIRV/spirv.hpp>
+
+#include "compiler/spirv/InstructionIds.h"
 
 // The module's layout is the SPIR-V specification's, section 2.4 (Logical Layout of a Module).
 
@@ -109,15 +109,7 @@ struct ModuleCutter::Parsed {
   const uint32_t* useIdsOf(const Instruction& i) const { return useIds.data() + i.firstUse; }
 
   std::string literalString(const Instruction& inst, uint32_t offset) const {
-    std::string s;
-    for (uint32_t w = offset; w < inst.count; ++w) {
-      for (int b = 0; b < 4; ++b) {
-        const char c = static_cast<char>((word(inst, w) >> (8 * b)) & 0xffu);
-        if (c == '\0') return s;
-        s += c;
-      }
-    }
-    return s;
+    return spirv::literalString(words.data(), inst.at + offset, inst.at + inst.count);
   }
 
   /// Each function's name as GLSL spells it: its OpName up to glslang's parameter list.

@@ -237,20 +237,21 @@ struct FunctionSpan {
   std::string_view name;
   size_t begin = 0, end = 0;  ///< characters, from its first token to its closing brace
   std::vector<std::string_view> uses;  ///< identifiers in it
-  bool pinned = false;                 ///< holds a directive: never removed
+  bool pinned = false;                 ///< never removed: holds a directive, or text not its own
 };
 
 }  // namespace
 
 TrimmedSource trimForParse(std::string_view glsl) {
   TrimmedSource result;
+  auto unchanged = [&] {
+    result.text = std::string(glsl);
+    return result;
+  };
   std::optional<std::string> code = withoutComments(glsl);
   std::vector<size_t> directives;
   std::optional<std::string> resolved = code ? withConditionalsResolved(*code, directives) : std::nullopt;
-  if (!resolved) {
-    result.text = std::string(glsl);
-    return result;
-  }
+  if (!resolved) return unchanged();
   std::string& text = *resolved;
 
   // Top-level units: declarations end at a `;` outside braces, function definitions at the `}`
@@ -266,6 +267,11 @@ TrimmedSource trimForParse(std::string_view glsl) {
   bool inFunction = false;
   bool directiveInUnit = false;  // a directive between the tokens of the unit being read
   int parenGroups = 0;           // parenthesised groups at the top level of the unit being read
+  auto endUnit = [&] {
+    unitBegin = std::string::npos;
+    directiveInUnit = false;
+    parenGroups = 0;
+  };
   size_t next = 0;
   for (size_t i = 0; i < text.size();) {
     while (next < directives.size() && directives[next] < i) ++next;
@@ -324,34 +330,24 @@ TrimmedSource trimForParse(std::string_view glsl) {
       } else if (c == ';' && parens == 0) {
         roots.insert(roots.end(), pending.begin(), pending.end());
         pending.clear();
-        unitBegin = std::string::npos;
-        directiveInUnit = false;
-        parenGroups = 0;
+        endUnit();
       }
     }
     if (c == '{') ++depth;
     if (c == '}') {
-      if (--depth < 0) {  // unbalanced: glslang will say so
-        result.text = std::string(glsl);
-        return result;
-      }
+      if (--depth < 0) return unchanged();  // unbalanced: glslang will say so
       if (depth == 0 && inFunction) {
         FunctionSpan& f = functions.back();
         f.end = i;
         f.uses = std::move(pending);
         pending.clear();
         inFunction = false;
-        unitBegin = std::string::npos;
-        directiveInUnit = false;
-        parenGroups = 0;
+        endUnit();
       }
     }
     previous = c;
   }
-  if (depth != 0 || inFunction) {
-    result.text = std::string(glsl);
-    return result;
-  }
+  if (depth != 0 || inFunction) return unchanged();
   roots.insert(roots.end(), pending.begin(), pending.end());  // a last unit without its `;`
 
   // Functions reachable from the roots, overloads together. Most identifiers name no function:

@@ -1,5 +1,4 @@
 #include "compiler/spirv/SpirvCompiler.h"
-#include "compiler/spirv/SourceTrim.h"
 
 #include <functional>
 #include <mutex>
@@ -12,6 +11,8 @@
 #include <glslang/SPIRV/GlslangToSpv.h>
 #include <spirv-tools/libspirv.hpp>
 #include <spirv-tools/optimizer.hpp>
+
+#include "compiler/spirv/SourceTrim.h"
 
 namespace mxc::spirv {
 
