@@ -405,22 +405,34 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
   res.delta = true;
   res.valid = false;
   int first = c.stacks[stack].x;
-  int n = c.stacks[stack].y;
   vec3 ns = c.lobes[first].N;  // the stack's up direction: its top interface's normal
-  // Which layers this walk sees (a layer of coverage w is there with probability w: OpenPBR
-  // "Coverage", one statistical choice per path), each interface's IOR ratio given the coat
-  // above it, and the IOR of each medium relative to outside (nAbs[k]: under interface k).
-  bool present[MXC_MAX_LOBES];
+  // Which layers this walk sees: a layer of coverage w is there with probability w (OpenPBR
+  // "Coverage": Slab over coverage w is mix(base, layer(base, slab), w), one statistical choice
+  // per path), and an absent layer is neither its interface nor its medium: the walk goes
+  // straight on to the layer under it. layer[k] is the closure's index of the k-th layer seen,
+  // top first, and n their count. Then each interface's IOR ratio given the coat above it, and
+  // the IOR of each medium relative to outside (nAbs[k]: under the k-th layer's interface).
+  int layer[MXC_MAX_LOBES];
+  bool present[MXC_MAX_LOBES];  // the layer seen has an interface (else it is a medium or an emission plane only)
   float eta[MXC_MAX_LOBES];
   float nAbs[MXC_MAX_LOBES];
+  bool seen[MXC_MAX_LOBES];
+  int n = 0;
+  for (int k = 0; k < c.stacks[stack].y; ++k) {
+    vec4 med = c.medium[first + k];
+    seen[k] = med.z >= 1.0 || mxc_walk_u() < med.z;
+    if (!seen[k]) continue;
+    layer[n] = first + k;
+    present[n] = (int(med.w) & MXC_LAYER_NO_INTERFACE) == 0;
+    vec4 io = c.ior[first + k];
+    int coat = int(io.z);  // the coat whose IOR is above this interface, by its index in the stack
+    eta[n] = coat >= 0 && coat < k && !seen[coat] ? io.y : io.x;
+    n += 1;
+  }
+  if (n == 0) return res;
   float nAbove = 1.0;
   for (int k = 0; k < n; ++k) {
-    vec4 med = c.medium[first + k];
-    present[k] = (int(med.w) & MXC_LAYER_NO_INTERFACE) == 0 && (med.z >= 1.0 || mxc_walk_u() < med.z);
-    vec4 io = c.ior[first + k];
-    int coat = int(io.z);
-    eta[k] = coat >= 0 && coat < k && !present[coat] ? io.y : io.x;
-    if (present[k] && c.lobes[first + k].kind == MXC_LOBE_DIELECTRIC) nAbove *= max(eta[k], 1e-3);
+    if (present[k] && c.lobes[layer[k]].kind == MXC_LOBE_DIELECTRIC) nAbove *= max(eta[k], 1e-3);
     nAbs[k] = nAbove;
   }
 
@@ -434,7 +446,7 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
   for (int k = 0; k < n; ++k) {
     chainW[k] = vec3(0.0);
     chainDir[k] = -ns;
-    if (present[k] && (int(c.medium[first + k].w) & MXC_LAYER_EXIT) != 0) exitLayer = k;
+    if (present[k] && (int(c.medium[layer[k]].w) & MXC_LAYER_EXIT) != 0) exitLayer = k;
   }
   float nEnd = 1.0;
   vec3 dummy = vec3(0.0);
@@ -443,9 +455,9 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
       vec3 w = -wi;
       vec3 W = vec3(1.0);
       for (int k = 0; k < n; ++k) {
-        int flags = int(c.medium[first + k].w);
+        int flags = int(c.medium[layer[k]].w);
         if (present[k]) {
-          MxcLobe l = c.lobes[first + k];
+          MxcLobe l = c.lobes[layer[k]];
           l.eta = eta[k];
           MxcCross x = mxc_walk_interface(l, w, vec3(0.0), false, dummy);
           if (!x.valid || dot(x.w, ns) >= 0.0) break;
@@ -454,20 +466,20 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
         }
         chainDir[k] = -w;
         chainW[k] = W;
-        float d = c.medium[first + k].y;
+        float d = c.medium[layer[k]].y;
         if ((flags & (MXC_LAYER_EXIT | MXC_LAYER_HALF_SPACE)) != 0 || d < 0.0) break;
-        if (d > 0.0) W *= exp(-(c.sigmaA[first + k] + c.sigmaS[first + k]) * d / max(abs(dot(w, ns)), 1e-4));
+        if (d > 0.0) W *= exp(-(c.sigmaA[layer[k]] + c.sigmaS[layer[k]]) * d / max(abs(dot(w, ns)), 1e-4));
       }
     } else if (exitLayer >= 0) {
       nEnd = nAbs[exitLayer];
       vec3 w = -wi;  // travelling up from where wi points
-      vec3 W = exp(-c.sigmaA[first + exitLayer] * MXC_BULK_PATH);
+      vec3 W = exp(-c.sigmaA[layer[exitLayer]] * MXC_BULK_PATH);
       chainDir[exitLayer] = wi;
       chainW[exitLayer] = W;
       for (int k = exitLayer; k > 0; --k) {
         // Cross interface k from below into medium k - 1 (entered at its bottom).
         if (present[k]) {
-          MxcLobe l = c.lobes[first + k];
+          MxcLobe l = c.lobes[layer[k]];
           l.eta = eta[k];
           MxcCross x = mxc_walk_interface(l, w, vec3(0.0), false, dummy);
           if (!x.valid || dot(x.w, ns) <= 0.0) break;
@@ -476,9 +488,9 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
         }
         chainDir[k - 1] = -w;
         chainW[k - 1] = W;
-        float d = c.medium[first + k - 1].y;
+        float d = c.medium[layer[k - 1]].y;
         if (d < 0.0) break;
-        if (d > 0.0) W *= exp(-(c.sigmaA[first + k - 1] + c.sigmaS[first + k - 1]) * d / max(abs(dot(w, ns)), 1e-4));
+        if (d > 0.0) W *= exp(-(c.sigmaA[layer[k - 1]] + c.sigmaS[layer[k - 1]]) * d / max(abs(dot(w, ns)), 1e-4));
       }
     }
   }
@@ -503,11 +515,10 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
     }
     bool down = dot(w, ns) < 0.0;
     if (!inMedium) {
-      int lk = first + k;
+      int lk = layer[k];
       if (down && mode == MXC_WALK_EMISSION) res.value += beta * c.emitted[lk];
       if (!present[k] && down) {
-        // No interface: straight on into the medium, if the layer is there at all.
-        if ((int(c.medium[lk].w) & MXC_LAYER_NO_INTERFACE) == 0) return res;  // an absent layer: nothing under it
+        // No interface (an index-matched medium or an emission plane): straight on into the medium.
         inMedium = true;
         z = 0.0;
         continue;
@@ -516,7 +527,7 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
         MxcLobe l = c.lobes[lk];
         l.eta = eta[k];
         if ((l.kind == MXC_LOBE_EON || l.kind == MXC_LOBE_DIFFUSE || l.kind == MXC_LOBE_BURLEY) && k > 0 && present[k - 1] &&
-            c.lobes[lk - 1].kind == MXC_LOBE_DIELECTRIC) {
+            c.lobes[layer[k - 1]].kind == MXC_LOBE_DIELECTRIC) {
           l.c0 = mxc_gloss_albedo(l.c0, eta[k - 1]);
         }
         // Where this vertex connects to: the medium above for wi above, the one below for wi below.
@@ -536,15 +547,15 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
           } else if (m >= 0 && any(greaterThan(chainW[m], vec3(0.0)))) {
             conn = chainDir[m];
             float cosd = max(abs(dot(conn, ns)), 1e-4);
-            float d = max(c.medium[first + m].y, 0.0);
-            vec3 tr = (up && d > 0.0) ? exp(-(c.sigmaA[first + m] + c.sigmaS[first + m]) * d / cosd) : vec3(1.0);
+            float d = max(c.medium[layer[m]].y, 0.0);
+            vec3 tr = (up && d > 0.0) ? exp(-(c.sigmaA[layer[m]] + c.sigmaS[layer[m]]) * d / cosd) : vec3(1.0);
             factor = chainW[m] * tr * mxc_sqr(nEnd / nAbs[m]) * (m == exitLayer ? 1.0 : cosWi / cosd);
           }
           if (!up && m != exitLayer && exitLayer >= 0 && m >= 0) {
             // Going down through a finite medium to where the chain enters it (its bottom).
-            float d = max(c.medium[first + m].y, 0.0);
+            float d = max(c.medium[layer[m]].y, 0.0);
             float cosd = max(abs(dot(conn, ns)), 1e-4);
-            if (d > 0.0) factor *= exp(-(c.sigmaA[first + m] + c.sigmaS[first + m]) * d / cosd);
+            if (d > 0.0) factor *= exp(-(c.sigmaA[layer[m]] + c.sigmaS[layer[m]]) * d / cosd);
           }
         }
         vec3 nee = vec3(0.0);
@@ -567,7 +578,7 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
         }
         k -= 1;
         inMedium = true;
-        z = max(c.medium[first + k].y, 0.0);
+        z = max(c.medium[layer[k]].y, 0.0);
         continue;
       }
       if ((int(c.medium[lk].w) & MXC_LAYER_EXIT) != 0) {
@@ -583,7 +594,7 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
       continue;
     }
     // In the medium under interface k.
-    int lk = first + k;
+    int lk = layer[k];
     float d = c.medium[lk].y;
     bool halfSpace = (int(c.medium[lk].w) & MXC_LAYER_HALF_SPACE) != 0;
     float cosw = max(abs(dot(w, ns)), 1e-4);
@@ -596,17 +607,25 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
       if (halfSpace && down) break;  // an absorbing half-space: nothing comes back
       beta *= exp(-sa * toBoundary);
     } else if (scatters) {
-      // Free flight by the extinction of a channel chosen uniformly; the weights divide by the
-      // density of the three choices together, mean_j(sigma_t_j exp(-sigma_t_j t)) (the balance
-      // heuristic over the channels, after Miller, Georgiev and Jarosz 2019), which a channel
-      // without extinction does not make infinite.
-      float pick = mxc_walk_u() * 3.0;
-      float sc = pick < 1.0 ? st.x : (pick < 2.0 ? st.y : st.z);
+      // Free flight by the extinction of one channel, chosen in proportion to the path's
+      // throughput, p_j = beta_j / sum(beta) (hero wavelength, Wilkie et al. 2014); every
+      // channel's weight divides by the density of the choices together,
+      // sum_j p_j sigma_t_j exp(-sigma_t_j t) (the one-sample balance heuristic over channels,
+      // Miller, Georgiev and Jarosz 2019, s. 5). Choosing by throughput bounds the variance: at
+      // a scattering event the new weights sum to
+      // sum(beta) sum_c beta_c sigma_s_c T_c / sum_j beta_j sigma_t_j T_j <= sum(beta), so no
+      // channel's weight can grow from event to event (a uniform choice let the least dense
+      // channel's weight grow at every event: unbounded variance over long walks, issue 39).
+      float total = beta.x + beta.y + beta.z;
+      if (!(total > 0.0)) break;  // nothing left to carry
+      vec3 pc = beta / total;      // total > 0
+      float pick = mxc_walk_u();
+      float sc = pick < pc.x ? st.x : (pick < pc.x + pc.y ? st.y : st.z);
       // A channel without extinction flies to the boundary (t infinite, its density 0 at any t).
       float t = sc > 0.0 ? -log(mxc_walk_u()) / sc : 1e30;
       if (t < toBoundary) {
         vec3 tr = exp(-st * t);
-        beta *= ss * tr / max(mxc_mean(st * tr), 1e-30);
+        beta *= ss * tr / max(dot(pc, st * tr), 1e-30);  // the mixture's density at t: > 0 for the channel chosen
         z += (down ? t : -t) * cosw;
         // A scattering vertex: connect to the chain of this medium.
         if (mode == MXC_WALK_EVAL && any(greaterThan(chainW[k], vec3(0.0))) && (up || k != exitLayer)) {
@@ -623,7 +642,7 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
         continue;
       }
       vec3 tr = exp(-st * toBoundary);
-      beta *= tr / max(mxc_mean(tr), 1e-30);
+      beta *= tr / max(dot(pc, tr), 1e-30);  // the probability that the chosen flight reaches the boundary
     }
     // At the boundary: the interface above, or the one below.
     inMedium = false;
