@@ -74,7 +74,7 @@ struct OpenPbr : ShadingModelInputs {
   }
 
   /// f_dielectric: the interface of the whole dielectric base (OpenPBR "Dielectric base").
-  Index dielectric(ExprId alpha) {
+  Index dielectric(ExprId alpha, bool thinWalled) {
     ir::Interface i;
     i.kind = ir::InterfaceKind::Dielectric;
     i.scatter = ir::ScatterMode::RT;
@@ -87,10 +87,15 @@ struct OpenPbr : ShadingModelInputs {
     // light than arrives there.
     i.slots.set(Slot::ReflectionTint, clamped("specular_color", 0.0f, 1.0f));
     // At transmission_depth 0 the transmission_color tints the refraction instead of a medium.
-    Param depth = nonNegative("transmission_depth");
-    Param tint = clamped("transmission_color", 0.0f, 1.0f);
-    tint.value = b.select(b.greater(depth.value, b.f(0.0f)), b.vec(Type::Vec3, 1.0f), tint.value);
-    i.slots.set(Slot::TransmissionTint, tint);
+    // Not in thin-walled mode, where the sheet under the interface is what absorbs it (translucent):
+    // a tint as well counted the colour once more on the way in, and again on the way out through
+    // the sheet's far side, which is the same interface (0.125 for a colour of 0.5, issue 39).
+    if (!thinWalled) {
+      Param depth = nonNegative("transmission_depth");
+      Param tint = clamped("transmission_color", 0.0f, 1.0f);
+      tint.value = b.select(b.greater(depth.value, b.f(0.0f)), b.vec(Type::Vec3, 1.0f), tint.value);
+      i.slots.set(Slot::TransmissionTint, tint);
+    }
     i.slots.set(Slot::Alpha, {alpha, roughnessOrigin("specular_roughness", "specular_roughness_anisotropy")});
     i.slots.set(Slot::Normal, p("geometry_normal"));
     i.slots.set(Slot::Tangent, p("geometry_tangent"));
@@ -204,7 +209,7 @@ struct OpenPbr : ShadingModelInputs {
   /// M_base_substrate for one thin-walled mode.
   Index baseSubstrate(bool thinWalled) {
     ExprId alpha = openPbrAlpha(b, p("specular_roughness").value, p("specular_roughness_anisotropy").value);
-    Index top = dielectric(alpha);
+    Index top = dielectric(alpha, thinWalled);
     Index gloss = c.material.slab(top, ir::kNone, diffuse(), {}, at("specular_weight"));
     Index opaque = c.material.mix(gloss, subsurface(top, thinWalled), clamped("subsurface_weight", 0.0f, 1.0f),
                                   at("subsurface_weight"));
