@@ -23,7 +23,7 @@ std::vector<float> AlbedoTables::compute(VulkanContext& context) {
   auto words = spirv::compile(glsl::buildTablesShader(), {}, diagnostics);
   if (!words) throw VulkanError("the albedo tables shader does not compile:\n" + diagnostics.format());
   const uint32_t n = glsl::kTableSize;
-  const uint32_t rows = glsl::kTableHeight;
+  const uint32_t rows = glsl::kComputedTableHeight;  // the walk's rows are measured, not computed here
   Buffer out = context.createBuffer(VkDeviceSize{n} * rows * 4 * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   std::vector<float> values(size_t{n} * rows * 4);
   {

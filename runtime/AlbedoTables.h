@@ -25,7 +25,8 @@ class AlbedoTables {
   /// The texels, kTableSize x kTableHeight RGBA, row by row (layout: stages/mxc_tables.comp).
   const std::vector<float>& values() const { return values_; }
 
-  /// The tables as the tables compute shader computes them on `context`'s device (seconds).
+  /// The computed tables (kComputedTableHeight rows) as the tables compute shader computes them
+  /// on `context`'s device (seconds).
   static std::vector<float> compute(VulkanContext& context);
 
  private:

@@ -55,11 +55,11 @@ int main(int argc, char** argv) {
   const std::filesystem::path folder = argc > 1 ? argv[1] : "generated/tables";
   try {
     mxc::rt::VulkanContext context;
-    std::fprintf(stderr, "computing %u x %u albedo tables on %s...\n", mxc::glsl::kTableSize, mxc::glsl::kTableHeight,
+    std::fprintf(stderr, "computing %u x %u albedo tables on %s...\n", mxc::glsl::kTableSize, mxc::glsl::kComputedTableHeight,
                  context.deviceName().c_str());
     mxc::glsl::AlbedoTableData tables;
     tables.width = mxc::glsl::kTableSize;
-    tables.height = mxc::glsl::kTableHeight;
+    tables.height = mxc::glsl::kComputedTableHeight;
     tables.shaderHash = mxc::glsl::tablesShaderHash();
     tables.texels = mxc::rt::AlbedoTables::compute(context);
 

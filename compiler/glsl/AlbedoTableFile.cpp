@@ -86,20 +86,34 @@ std::string_view committedTableFile(std::string_view path) {
   throw std::logic_error(fmt::format("table file {} is not embedded", path));  // a build error
 }
 
+namespace {
+
+/// A committed table file of `rows` rows of kTableSize texels; throws naming what is wrong.
+AlbedoTableData committedRows(std::string_view path, uint32_t rows, const char* generator) {
+  std::string error;
+  std::optional<AlbedoTableData> data = decodeAlbedoTables(committedTableFile(path), error);
+  if (data && (data->width != kTableSize || data->height != rows)) {
+    error = fmt::format("the tables are {} x {}, the shaders read {} x {}", data->width, data->height, kTableSize, rows);
+    data.reset();
+  }
+  if (!data) throw std::runtime_error(fmt::format("generated/{}: {}; regenerate it with {}", path, error, generator));
+  return std::move(*data);
+}
+
+}  // namespace
+
+const AlbedoTableData& committedComputedTables() {
+  static const AlbedoTableData tables = committedRows(kAlbedoTablesPath, kComputedTableHeight, "scripts/generate-tables");
+  return tables;
+}
+
 const AlbedoTableData& committedAlbedoTables() {
   static const AlbedoTableData tables = [] {
-    std::string error;
-    std::optional<AlbedoTableData> data = decodeAlbedoTables(committedTableFile(kAlbedoTablesPath), error);
-    if (data && (data->width != kTableSize || data->height != kTableHeight)) {
-      error = fmt::format("the tables are {} x {}, the shaders read {} x {}", data->width, data->height, kTableSize,
-                          kTableHeight);
-      data.reset();
-    }
-    if (!data) {
-      throw std::runtime_error(fmt::format("generated/{}: {}; regenerate it with scripts/generate-tables",
-                                           kAlbedoTablesPath, error));
-    }
-    return std::move(*data);
+    AlbedoTableData all = committedComputedTables();
+    const AlbedoTableData walk = committedRows(kWalkTablesPath, kWalkTableRows, "scripts/generate-tables --walk");
+    all.height += walk.height;
+    all.texels.insert(all.texels.end(), walk.texels.begin(), walk.texels.end());
+    return all;
   }();
   return tables;
 }

@@ -20,6 +20,8 @@ namespace mxc::glsl {
 
 inline constexpr std::string_view kAlbedoTablesPath = "tables/mxc_albedo_tables.bin";
 inline constexpr std::string_view kAlbedoFitsPath = "tables/mxc_albedo_fits.glsl";
+/// The reference walk's tables (tools/GenerateWalkFits.cpp), the image's rows under the computed ones.
+inline constexpr std::string_view kWalkTablesPath = "tables/mxc_walk_tables.bin";
 
 struct AlbedoTableData {
   uint32_t width = 0;
@@ -35,10 +37,13 @@ std::optional<AlbedoTableData> decodeAlbedoTables(std::string_view bytes, std::s
 /// The bytes of a committed table file (kAlbedoTablesPath, kAlbedoFitsPath), embedded at build.
 std::string_view committedTableFile(std::string_view path);
 
-/// The committed tables, checked against the contract's size (kTableSize x kTableHeight).
-/// Throws std::runtime_error when the file does not hold them (regenerate with
-/// scripts/generate-tables).
+/// The committed tables: the computed ones (kAlbedoTablesPath, kComputedTableHeight rows) with
+/// the walk's under them (kWalkTablesPath, kWalkTableRows rows), the whole image the shaders
+/// sample (kTableSize x kTableHeight). Throws std::runtime_error when a file does not hold them
+/// (regenerate with scripts/generate-tables).
 const AlbedoTableData& committedAlbedoTables();
+/// The computed tables alone (kTableSize x kComputedTableHeight), as the tables shader writes them.
+const AlbedoTableData& committedComputedTables();
 
 /// FNV-1a hash of the tables shader's whole GLSL (buildTablesShader): a committed file whose
 /// hash differs was computed by other code.

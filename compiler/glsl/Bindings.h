@@ -28,7 +28,26 @@ constexpr uint32_t kSeparateSamplerOffset = 512;
 constexpr uint32_t kTableSize = 32;
 /// Number of dielectric reflection tables, one per IOR step (stages/mxc_tables.comp).
 constexpr uint32_t kTableSlices = 32;
-/// The tables image: kTableSize wide, the split-sum/sheen table then the dielectric slices below.
-constexpr uint32_t kTableHeight = kTableSize * (1 + kTableSlices);
+/// The rows the tables compute shader writes: the split-sum/sheen table, then the dielectric slices.
+constexpr uint32_t kComputedTableHeight = kTableSize * (1 + kTableSlices);
+
+/// The reference walk's tables (compiler/glsl/WalkTables.h; measured by
+/// tools/GenerateWalkFits.cpp), rows of the same image under the computed ones. Their grids:
+/// the relative IOR eta = (1 + u) / (1 - u) for u = 0.5 k / (kWalkEtaSteps - 1) (F0 = u^2 up to
+/// 0.25: eta 1 to 3, densest near 1), Henyey-Greenstein g = -0.9 + 1.8 k / (kWalkAnisotropySteps - 1),
+/// specular roughness k / (kWalkRoughnessSteps - 1).
+constexpr uint32_t kWalkEtaSteps = 13;
+constexpr uint32_t kWalkAnisotropySteps = 9;
+constexpr uint32_t kWalkRoughnessSteps = 5;
+/// kWalkEtaSteps rows, one per eta: across, the roughness k / (kTableSize - 1); .x the walk's
+/// dielectric's internal diffuse reflectance r_i.
+constexpr uint32_t kWalkGlossRow = kComputedTableHeight;
+/// One row per (roughness, g, eta), eta fastest: across, the observed colour C = k /
+/// (kTableSize - 1); .x van de Hulst's s of the medium the walk needs for that colour.
+constexpr uint32_t kWalkMediumRow = kWalkGlossRow + kWalkEtaSteps;
+constexpr uint32_t kWalkTableRows = kWalkEtaSteps + kWalkEtaSteps * kWalkAnisotropySteps * kWalkRoughnessSteps;
+
+/// The tables image: kTableSize wide, the computed tables then the walk's.
+constexpr uint32_t kTableHeight = kComputedTableHeight + kWalkTableRows;
 
 }  // namespace mxc::glsl

@@ -305,6 +305,15 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   w.line(fmt::format("#define MXC_TABLE_BINDING {}", static_cast<uint32_t>(kTablesBinding)));
   w.line(fmt::format("#define MXC_TABLE_SIZE {}", kTableSize));
   w.line(fmt::format("#define MXC_TABLE_SLICES {}", kTableSlices));
+  w.line(fmt::format("#define MXC_TABLE_HEIGHT {}", kTableHeight));
+  if (options.accuracy == Accuracy::Reference) {
+    // The walk's tables (Bindings.h, WalkTables.h): their grids and first rows.
+    w.line(fmt::format("#define MXC_WALK_ETA_STEPS {}", kWalkEtaSteps));
+    w.line(fmt::format("#define MXC_WALK_ANISOTROPY_STEPS {}", kWalkAnisotropySteps));
+    w.line(fmt::format("#define MXC_WALK_ROUGHNESS_STEPS {}", kWalkRoughnessSteps));
+    w.line(fmt::format("#define MXC_WALK_GLOSS_ROW {}", kWalkGlossRow));
+    w.line(fmt::format("#define MXC_WALK_MEDIUM_ROW {}", kWalkMediumRow));
+  }
   if (kind == ShaderKind::Raster) w.line("#define MXC_STAGE_RASTER");
   if (options.subgroups) w.line("#define MXC_SUBGROUPS");
   if (options.separateSamplers) w.line("#define MXC_SEPARATE_SAMPLERS");

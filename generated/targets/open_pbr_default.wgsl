@@ -1911,7 +1911,7 @@ fn mxc_table_at_u0028_f1_u003b_f1_u003b_f1_u003b(mu_2: ptr<function, f32>, x_3: 
     let _e126 = t_3[0u];
     let _e128 = (*firstRow);
     let _e130 = t_3[1u];
-    let _e134 = textureSampleLevel(mxc_tables_texture, mxc_tables_sampler, vec2<f32>((_e126 / 32f), ((_e128 + _e130) / 1056f)), 0f);
+    let _e134 = textureSampleLevel(mxc_tables_texture, mxc_tables_sampler, vec2<f32>((_e126 / 32f), ((_e128 + _e130) / 1654f)), 0f);
     return _e134;
 }
 

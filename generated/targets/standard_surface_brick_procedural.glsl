@@ -300,7 +300,7 @@ float mxc_lobe_eta(MxcLobe l, bool above)
 vec4 mxc_table_at(float mu, float x, float firstRow)
 {
     vec2 t = (vec2(sqrt(clamp(mu, 0.0, 1.0)), clamp(x, 0.0, 1.0)) * 31.0) + vec2(0.5);
-    return textureLod(mxc_tables, vec2(t.x / 32.0, (firstRow + t.y) / 1056.0), 0.0);
+    return textureLod(mxc_tables, vec2(t.x / 32.0, (firstRow + t.y) / 1654.0), 0.0);
 }
 
 vec4 mxc_dielectric_table(float mu, float alpha, float e)

@@ -344,7 +344,7 @@ float mxc_lobe_eta(MxcLobe l, bool above)
 float4 mxc_table_at(float mu, float x, float firstRow)
 {
     float2 t = (float2(sqrt(clamp(mu, 0.0f, 1.0f)), clamp(x, 0.0f, 1.0f)) * 31.0f) + 0.5f.xx;
-    return mxc_tables.SampleLevel(_mxc_tables_sampler, float2(t.x / 32.0f, (firstRow + t.y) / 1056.0f), 0.0f);
+    return mxc_tables.SampleLevel(_mxc_tables_sampler, float2(t.x / 32.0f, (firstRow + t.y) / 1654.0f), 0.0f);
 }
 
 float4 mxc_dielectric_table(float mu, float alpha, float e)

@@ -355,7 +355,7 @@ static inline __attribute__((always_inline))
 float4 mxc_table_at(thread const float& mu, thread const float& x, thread const float& firstRow, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
     float2 t = (float2(sqrt(fast::clamp(mu, 0.0, 1.0)), fast::clamp(x, 0.0, 1.0)) * 31.0) + float2(0.5);
-    return mxc_tables.sample(mxc_tablesSmplr, float2(t.x / 32.0, (firstRow + t.y) / 1056.0), level(0.0));
+    return mxc_tables.sample(mxc_tablesSmplr, float2(t.x / 32.0, (firstRow + t.y) / 1654.0), level(0.0));
 }
 
 static inline __attribute__((always_inline))

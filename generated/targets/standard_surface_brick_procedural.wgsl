@@ -1886,7 +1886,7 @@ fn mxc_table_at_u0028_f1_u003b_f1_u003b_f1_u003b(mu_2: ptr<function, f32>, x_3: 
     let _e156 = t_3[0u];
     let _e158 = (*firstRow);
     let _e160 = t_3[1u];
-    let _e164 = textureSampleLevel(mxc_tables_texture, mxc_tables_sampler, vec2<f32>((_e156 / 32f), ((_e158 + _e160) / 1056f)), 0f);
+    let _e164 = textureSampleLevel(mxc_tables_texture, mxc_tables_sampler, vec2<f32>((_e156 / 32f), ((_e158 + _e160) / 1654f)), 0f);
     return _e164;
 }
 

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "compiler/glsl/WalkTables.h"
 #include "support/ClosedForms.h"
 #include "support/MaterialSupport.h"
 
@@ -82,23 +83,75 @@ TEST(ReferenceWalk, SmoothDielectricReflectsFresnel) {
 }
 
 // Physics notes 2.9: a Lambertian base under a smooth dielectric of IOR 1.5 (a coat, with the
-// specular interface index-matched to it) reflects the interfaced-Lambertian albedo.
+// specular interface index-matched to it) reflects the interfaced-Lambertian albedo. The base's
+// albedo rho is what base_color C asks for under the gloss on its own (eq.
+// glossy_diffuse_albedo_constraint: rho = C / (1 - r_i + C r_i), r_i = 1 - (1 - F_avg) / eta^2
+// for a smooth interface), so the coat leaves the observed colour as it is without the coat:
+// F0 + (1 - F0) C at normal incidence.
 TEST(ReferenceWalk, LambertianUnderSmoothCoatMatchesClosedForm) {
-  for (double rho : {0.5, 0.8}) {
+  const double ri = 1.0 - (1.0 - closed::fresnelAverage(1.5)) / (1.5 * 1.5);
+  for (double color : {0.5, 0.8}) {
     Context context;
-    const std::string c = fmt::format("{0}, {0}, {0}", rho);
+    const std::string c = fmt::format("{0}, {0}, {0}", color);
     ir::Material m = openPbr(context, input("coat_weight", "float", "1") + input("coat_ior", "float", "1.5") +
                                           input("coat_roughness", "float", "0") + input("specular_ior", "float", "1.5") +
                                           input("specular_roughness", "float", "0") + input("base_color", "color3", c));
     std::vector<rt::Albedo> albedo = furnace(m, {viewAt(0), viewAt(45)}, 16384, {}, kReference);
     ASSERT_EQ(albedo.size(), 2u);
+    const double rho = color / (1.0 - ri + color * ri);
     expectNear(albedo[0].total().x, closed::interfacedLambertian(1.0, rho, 1.5), albedo[0].reflectedError.x, 2e-3,
-               fmt::format("rho {} at normal incidence", rho));
+               fmt::format("base_color {} at normal incidence", color));
+    expectNear(albedo[0].total().x, 0.04 + 0.96 * color, albedo[0].reflectedError.x, 2e-3,
+               fmt::format("base_color {} observed at normal incidence", color));
     expectNear(albedo[1].total().x, closed::interfacedLambertian(std::sqrt(0.5), rho, 1.5), albedo[1].reflectedError.x,
-               2e-3, fmt::format("rho {} at 45 degrees", rho));
+               2e-3, fmt::format("base_color {} at 45 degrees", color));
   }
   // The anchor of the notes: 0.316 at rho 0.5 and normal incidence.
   EXPECT_NEAR(closed::interfacedLambertian(1.0, 0.5, 1.5), 0.316, 1e-3);
+}
+
+// OpenPBR's observed colours through a rough interface (eqs. glossy_diffuse_albedo_constraint
+// and subsurface_albedo_constraint): of what the interface lets in at normal incidence, C comes
+// back out. E_spec is the albedo with the colour 0 (nothing comes back from under the
+// interface), so (E - E_spec) / (1 - E_spec) = C, per channel, for a Lambertian base under a
+// rough gloss and for a coloured subsurface medium of either anisotropy, within the estimates'
+// noise and 0.005 for the tables' interpolation (compiler/glsl/WalkTables.h). Issue 39: the walk
+// returned about 0.65 C for subsurface (marble 0.61 where the spec asks 0.81) and sand's base
+// 0.412 against 0.396 at normal incidence.
+TEST(ReferenceWalk, ObservedColoursAreMetThroughRoughInterfaces) {
+  struct Case {
+    const char* colour;  // the input
+    std::string inputs;
+  };
+  const Case cases[] = {
+      {"base_color", input("specular_roughness", "float", "0.6") + input("specular_ior", "float", "1.45")},
+      {"subsurface_color", input("subsurface_weight", "float", "1") + input("specular_roughness", "float", "0.35") +
+                               input("subsurface_radius_scale", "color3", "1, 0.5, 0.25")},
+      {"subsurface_color", input("subsurface_weight", "float", "1") + input("specular_roughness", "float", "0.1") +
+                               input("specular_ior", "float", "1.33") + input("subsurface_scatter_anisotropy", "float", "0.6")},
+  };
+  const glm::dvec3 colour(0.9, 0.6, 0.3);
+  for (const Case& c : cases) {
+    double e[2][3], error[2][3];
+    for (int k = 0; k < 2; ++k) {
+      Context context;
+      const std::string value = k == 0 ? "0, 0, 0" : fmt::format("{}, {}, {}", colour.x, colour.y, colour.z);
+      ir::Material m = openPbr(context, c.inputs + input(c.colour, "color3", value));
+      std::vector<rt::Albedo> a = furnace(m, {viewAt(0)}, k == 0 ? 16384 : 65536, {}, kReference);
+      ASSERT_EQ(a.size(), 1u);
+      for (int ch = 0; ch < 3; ++ch) {
+        e[k][ch] = a[0].total()[ch];
+        error[k][ch] = a[0].reflectedError[ch];
+      }
+    }
+    for (int ch = 0; ch < 3; ++ch) {
+      const double observed = (e[1][ch] - e[0][ch]) / (1.0 - e[0][ch]);  // E_spec < 1
+      const double noise = (error[1][ch] + error[0][ch]) / (1.0 - e[0][ch]);
+      std::printf("%s channel %d: E_spec %.4f, E %.4f, observed %.4f (asked %.2f)\n", c.colour, ch, e[0][ch], e[1][ch],
+                  observed, colour[ch]);
+      expectNear(observed, colour[ch], noise, 0.005, fmt::format("{} channel {} ({})", c.colour, ch, c.inputs));
+    }
+  }
 }
 
 // OpenPBR "Glossy-diffuse", eq. glossy_diffuse_albedo_constraint: base_color C is what comes
@@ -124,16 +177,18 @@ std::vector<float> mediumSlot(const ir::Material& m, ir::Slot slot) {
   return p && p->present() ? m.exprs.constantComponents(p->value) : std::vector<float>{};
 }
 
-// Physics notes 2.9: a semi-infinite, isotropically scattering medium without an interface
-// (OpenPBR subsurface under an IOR of 1, which no light sees) has the albedo
-// 1 - H(mu) sqrt(1 - omega), Chandrasekhar's H computed by iterating its integral equation. The
-// medium is coloured, with densities 4x apart across the channels: each channel matches its own
-// closed form (the free flights are chosen by one channel and weighted for all three).
+// Physics notes 2.9: a semi-infinite, isotropically scattering medium without an interface (an
+// IOR of 1, which no light sees) has the albedo 1 - H(mu) sqrt(1 - omega), Chandrasekhar's H
+// computed by iterating its integral equation. The medium is OpenPBR's translucent base with a
+// scattering depth, whose coefficients are the raw ones (mu_t = -ln(colour) / depth, mu_s =
+// scatter / depth), coloured with densities 3x apart across the channels: each channel matches
+// its own closed form (the free flights are chosen by one channel and weighted for all three).
 TEST(ReferenceWalk, SemiInfiniteMediumMatchesChandrasekhar) {
   Context context;
-  ir::Material m = openPbr(context, input("subsurface_weight", "float", "1") + input("specular_ior", "float", "1") +
-                                        input("subsurface_color", "color3", "0.9, 0.5, 0.2") +
-                                        input("subsurface_radius_scale", "color3", "1, 0.5, 0.25"));
+  ir::Material m = openPbr(context, input("transmission_weight", "float", "1") + input("specular_ior", "float", "1") +
+                                        input("transmission_depth", "float", "1") +
+                                        input("transmission_color", "color3", "0.7, 0.4, 0.3") +
+                                        input("transmission_scatter", "color3", "0.34, 0.55, 0.6"));
   const std::vector<float> absorption = mediumSlot(m, ir::Slot::Absorption);
   const std::vector<float> scattering = mediumSlot(m, ir::Slot::Scattering);
   ASSERT_EQ(absorption.size(), 3u);
@@ -142,7 +197,7 @@ TEST(ReferenceWalk, SemiInfiniteMediumMatchesChandrasekhar) {
   std::vector<rt::Albedo> albedo = furnace(m, {viewAt(degrees[0]), viewAt(degrees[1])}, 16384, {}, kReference);
   ASSERT_EQ(albedo.size(), 2u);
   for (int c = 0; c < 3; ++c) {
-    const double omega = scattering[c] / double(scattering[c] + absorption[c]);  // mu_t > 0: a finite radius
+    const double omega = scattering[c] / double(scattering[c] + absorption[c]);  // mu_t > 0: a colour below 1
     for (size_t k = 0; k < 2; ++k) {
       const double mu = std::cos(degrees[k] * 3.14159265358979 / 180.0);
       expectNear(albedo[k].total()[c], closed::semiInfiniteAlbedo(omega, mu), albedo[k].reflectedError[c], 3e-3,
@@ -180,10 +235,11 @@ TEST(ReferenceWalk, AbsorbingCoatFollowsBeerLambertAlongTheRefractedPath) {
 }
 
 // Convergence: the reference is an unbiased Monte Carlo estimate, so its error falls as
-// N^-1/2. The root-mean-square error of the furnace over 48 seeds at N = 64 to 4096 samples,
-// against the exact value (the interfaced Lambertian above, the limit of any longer run),
-// fitted on log-log axes, has slope -0.5 within 0.05. The seeds are fixed: the test is
-// deterministic on a device.
+// N^-1/2. The root-mean-square error of the furnace over 96 seeds at N = 64 to 16384 samples,
+// against the exact value (the interfaced Lambertian above, of the albedo the walk's table gives
+// base_color: the limit of any longer run), fitted on log-log axes, has slope -0.5 within 0.05.
+// (With 48 seeds and N up to 4096 the RMS errors are uncertain by 10% each, and the slope by
+// about 0.04.) The seeds are fixed: the test is deterministic on a device.
 TEST(ReferenceWalk, ErrorFallsAsOneOverSqrtN) {
   Context context;
   ir::Material m = openPbr(context, input("coat_weight", "float", "1") + input("coat_ior", "float", "1.5") +
@@ -192,9 +248,10 @@ TEST(ReferenceWalk, ErrorFallsAsOneOverSqrtN) {
   Prepared p = prepare(m, glsl::ShaderKind::Furnace, {}, kReference);
   ASSERT_TRUE(p.ok());
   rt::FurnaceEstimator estimator(Device::get().context, Device::get().tables, *p.resources, p.shader.interface, p.words);
-  const double exact = closed::interfacedLambertian(1.0, 0.5, 1.5);
-  const uint32_t counts[] = {64, 256, 1024, 4096};
-  constexpr int kSeeds = 48;
+  const double exact = closed::interfacedLambertian(1.0, glsl::walkGlossAlbedo(0.5, 1.5, 0.0), 1.5);
+  EXPECT_NEAR(exact, 0.04 + 0.96 * 0.5, 2e-3);  // the table meets the constraint at the smooth interface
+  const uint32_t counts[] = {64, 256, 1024, 4096, 16384};
+  constexpr int kSeeds = 96;
   std::vector<double> x, y;
   for (uint32_t n : counts) {
     double squares = 0.0;
@@ -207,17 +264,17 @@ TEST(ReferenceWalk, ErrorFallsAsOneOverSqrtN) {
     y.push_back(0.5 * std::log(squares / kSeeds));
   }
   // Least-squares slope of y over x.
-  const double mx = (x[0] + x[1] + x[2] + x[3]) / 4.0, my = (y[0] + y[1] + y[2] + y[3]) / 4.0;
+  double mx = 0.0, my = 0.0;
+  for (size_t k = 0; k < x.size(); ++k) mx += x[k] / double(x.size()), my += y[k] / double(x.size());
   double sxy = 0.0, sxx = 0.0;
   for (size_t k = 0; k < x.size(); ++k) {
     sxy += (x[k] - mx) * (y[k] - my);
     sxx += (x[k] - mx) * (x[k] - mx);
   }
-  const double slope = sxy / sxx;  // sxx > 0: four distinct counts
-  std::printf("convergence: RMS error %.5f %.5f %.5f %.5f at N = 64, 256, 1024, 4096; slope %.3f\n", std::exp(y[0]),
-              std::exp(y[1]), std::exp(y[2]), std::exp(y[3]), slope);
-  EXPECT_NEAR(slope, -0.5, 0.05) << "RMS errors " << std::exp(y[0]) << ", " << std::exp(y[1]) << ", " << std::exp(y[2])
-                                 << ", " << std::exp(y[3]);
+  const double slope = sxy / sxx;  // sxx > 0: five distinct counts
+  std::printf("convergence: RMS error %.5f %.5f %.5f %.5f %.5f at N = 64 to 16384 (x4); slope %.3f\n", std::exp(y[0]),
+              std::exp(y[1]), std::exp(y[2]), std::exp(y[3]), std::exp(y[4]), slope);
+  EXPECT_NEAR(slope, -0.5, 0.05);
 }
 
 // An emission layer emits; it neither absorbs nor reflects (OpenPBR "Emission": the emission
@@ -373,6 +430,24 @@ TEST(ReferenceWalk, ColouredSubsurfaceConvergesPerChannel) {
     std::printf("channel %d: RMS error %.5f %.5f %.5f at N = 256, 1024, 4096; slope %.3f\n", c, std::exp(y[0][c]),
                 std::exp(y[1][c]), std::exp(y[2][c]), slope);
     EXPECT_NEAR(slope, -0.5, 0.1) << "channel " << c;
+  }
+}
+
+// OpenPBR "Thin-walled mode": a thin wall transmits transmission_color once (its sheet absorbs
+// it at normal incidence). Without Fresnel (IOR 1) and smooth, light at normal incidence passes
+// with transmission_color on every tier; the interface's own tint counted it again on the way in
+// (balanced and fast: 0.25 for 0.5) and, in the walk, on the way out (0.125).
+TEST(ReferenceWalk, ThinWallTransmitsItsColourOnce) {
+  for (Accuracy tier : {Accuracy::Fast, Accuracy::Balanced, Accuracy::Reference}) {
+    Context context;
+    ir::Material m = openPbr(context, input("geometry_thin_walled", "boolean", "true") +
+                                          input("transmission_weight", "float", "1") + input("specular_ior", "float", "1") +
+                                          input("specular_roughness", "float", "0") +
+                                          input("transmission_color", "color3", "0.5, 0.5, 0.5"));
+    std::vector<rt::Albedo> a = furnace(m, {viewAt(0)}, 4096, {}, tier);
+    ASSERT_EQ(a.size(), 1u);
+    EXPECT_NEAR(a[0].transmitted.x, 0.5, 4.0 * a[0].transmittedError.x + 1e-3) << accuracyName(tier);
+    EXPECT_NEAR(a[0].reflected.x, 0.0, 1e-3) << accuracyName(tier);
   }
 }
 

@@ -41,7 +41,7 @@ struct MxcLobeSample {
 MXC_DECLARE_SAMPLER2D(0, MXC_TABLE_BINDING, mxc_tables);
 vec4 mxc_table_at(float mu, float x, float firstRow) {
   const float n = float(MXC_TABLE_SIZE);
-  const float rows = float(MXC_TABLE_SIZE * (1 + MXC_TABLE_SLICES));
+  const float rows = float(MXC_TABLE_HEIGHT);
   // Texel centres: sample i of a table is at (i + 0.5) / n across, so x = 0 and 1 hit the
   // first and last samples and linear filtering never reaches a neighbouring table. The view
   // axis holds sqrt(mu) (stages/mxc_tables.comp), dense near grazing.

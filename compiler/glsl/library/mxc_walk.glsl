@@ -343,18 +343,59 @@ MxcCross mxc_walk_interface(MxcLobe l, vec3 w, vec3 conn, bool tinted, inout vec
   return x;
 }
 
-// OpenPBR "Glossy-diffuse", eq. glossy_diffuse_albedo_constraint: base_color C is defined so
-// that of what the gloss lets in, the fraction C comes back out, for a Lambertian base. Under a
-// smooth interface of IOR ratio eta a Lambertian of albedo rho returns
-// rho (1 - r_i) / (1 - rho r_i) of it, with r_i = 1 - (1 - E_F(eta)) / eta^2 the internal diffuse
-// reflectance (physics notes 2.3 and 2.9), so rho = C / (1 - r_i + C r_i). The walk's gloss is
-// rough and the base may be Oren-Nayar: the smooth Lambertian remap is the spec's definition
-// taken literally, and what is left is the physics of the walk.
-vec3 mxc_gloss_albedo(vec3 C, float eta) {
-  float e = max(eta, 1.0);  // a gloss less dense than above traps nothing by total internal reflection
-  float ri = 1.0 - (1.0 - mxc_fresnel_average(e)) / (e * e);  // e >= 1; ri < 1 for a finite e
+// ---- The walk's observed-albedo tables (compiler/glsl/WalkTables.h) ----
+// Rows of the albedo tables image under the computed ones, measured from this walk by
+// tools/GenerateWalkFits.cpp: they turn the colours OpenPBR defines by what is observed into
+// the parameters the walk needs. The host reads them the same way (WalkTables.cpp).
+
+// .x of the tables image at fractional texel coordinates, bilinear between texel centres.
+float mxc_walk_texel(float column, float row) {
+  vec2 t = vec2(column + 0.5, row + 0.5) / vec2(float(MXC_TABLE_SIZE), float(MXC_TABLE_HEIGHT));
+  return textureLod(MXC_SAMPLER2D(mxc_tables), t, 0.0).x;
+}
+// The fractional index of a relative IOR on the tables' grid, u = (eta - 1) / (eta + 1) over
+// [0, 0.5] (eta 1 to 3; a ratio below 1 traps nothing by total internal reflection: as 1).
+float mxc_walk_eta_index(float eta) {
+  float e = max(eta, 1.0);
+  return clamp(2.0 * (e - 1.0) / (e + 1.0), 0.0, 1.0) * float(MXC_WALK_ETA_STEPS - 1);  // e + 1 >= 2
+}
+// A microfacet interface's roughness as the tables' axis: sqrt of its alpha (the geometric mean
+// of an anisotropic pair).
+float mxc_walk_roughness(vec2 alpha) { return sqrt(sqrt(max(alpha.x * alpha.y, 0.0))); }
+
+// OpenPBR "Glossy-diffuse", eq. glossy_diffuse_albedo_constraint: base_color C is what comes
+// back of the light the gloss lets in. Under a lossless interface a Lambertian of albedo rho
+// returns exactly rho (1 - r_i) / (1 - rho r_i) of it, r_i the interface's reflectance from
+// inside under cosine-distributed light (the tables' gloss rows, for the walk's rough
+// interface), so rho = C / (1 - r_i + C r_i). `eta`: the interface's own ratio to outside (the
+// slab on its own, as the spec defines it), `roughness`: its mxc_walk_roughness.
+vec3 mxc_walk_gloss_albedo(vec3 C, float eta, float roughness) {
+  float ri = mxc_walk_texel(clamp(roughness, 0.0, 1.0) * float(MXC_TABLE_SIZE - 1), float(MXC_WALK_GLOSS_ROW) + mxc_walk_eta_index(eta));
   vec3 c = clamp(C, 0.0, 1.0);
-  return c / (1.0 - ri + c * ri);  // >= 1 - ri > 0
+  return c / (1.0 - ri + c * ri);  // >= 1 - r_i > 0: r_i < 1 for eta <= 3
+}
+
+// OpenPBR "Subsurface", eq. subsurface_albedo_constraint: the single-scattering albedo omega of
+// the semi-infinite medium (HG anisotropy g) under the interface that returns subsurface_color
+// C of what the interface lets in at normal incidence. The tables' medium rows hold van de
+// Hulst's s = sqrt((1 - omega) / (1 - omega g)) for a grid of C, per (roughness, g, eta).
+vec3 mxc_walk_subsurface_albedo(vec3 C, float eta, float g, float roughness) {
+  float e = mxc_walk_eta_index(eta);
+  float fg = clamp((g + 0.9) / 1.8, 0.0, 1.0) * float(MXC_WALK_ANISOTROPY_STEPS - 1);
+  float fr = clamp(roughness, 0.0, 1.0) * float(MXC_WALK_ROUGHNESS_STEPS - 1);
+  float g0 = min(floor(fg), float(MXC_WALK_ANISOTROPY_STEPS - 2));
+  float r0 = min(floor(fr), float(MXC_WALK_ROUGHNESS_STEPS - 2));
+  vec3 column = clamp(C, 0.0, 1.0) * float(MXC_TABLE_SIZE - 1);
+  vec3 s = vec3(0.0);
+  for (int corner = 0; corner < 4; ++corner) {
+    float dg = float(corner & 1), dr = float(corner >> 1);
+    float w = (dg > 0.0 ? fg - g0 : 1.0 - (fg - g0)) * (dr > 0.0 ? fr - r0 : 1.0 - (fr - r0));
+    float row = float(MXC_WALK_MEDIUM_ROW) + ((r0 + dr) * float(MXC_WALK_ANISOTROPY_STEPS) + g0 + dg) * float(MXC_WALK_ETA_STEPS) + e;
+    s += w * vec3(mxc_walk_texel(column.x, row), mxc_walk_texel(column.y, row), mxc_walk_texel(column.z, row));
+  }
+  s = clamp(s, 0.0, 1.0);
+  float gc = clamp(g, -0.99, 0.99);
+  return (1.0 - s * s) / (1.0 - gc * s * s);  // 1 - g s^2 >= 0.01
 }
 
 // ---- Media ----
@@ -526,10 +567,6 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
       if (present[k]) {
         MxcLobe l = c.lobes[lk];
         l.eta = eta[k];
-        if ((l.kind == MXC_LOBE_EON || l.kind == MXC_LOBE_DIFFUSE || l.kind == MXC_LOBE_BURLEY) && k > 0 && present[k - 1] &&
-            c.lobes[layer[k - 1]].kind == MXC_LOBE_DIELECTRIC) {
-          l.c0 = mxc_gloss_albedo(l.c0, eta[k - 1]);
-        }
         // Where this vertex connects to: the medium above for wi above, the one below for wi below.
         vec3 conn = vec3(0.0);
         vec3 factor = vec3(0.0);

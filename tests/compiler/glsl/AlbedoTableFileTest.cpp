@@ -48,7 +48,8 @@ TEST(AlbedoTableFile, CommittedTablesAreCurrent) {
   const AlbedoTableData& tables = committedAlbedoTables();
   EXPECT_EQ(tables.width, kTableSize);
   EXPECT_EQ(tables.height, kTableHeight);
-  EXPECT_EQ(tables.shaderHash, tablesShaderHash())
+  EXPECT_EQ(committedComputedTables().height, kComputedTableHeight);
+  EXPECT_EQ(committedComputedTables().shaderHash, tablesShaderHash())
       << "the tables shader changed since generated/tables was written: run scripts/generate-tables";
   // The fits the fast tier includes are there, with every array it reads.
   const std::string_view fits = committedTableFile(kAlbedoFitsPath);

@@ -14,6 +14,7 @@
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -78,6 +79,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -142,6 +144,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -206,6 +209,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -289,6 +293,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -353,6 +358,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -417,6 +423,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -481,6 +488,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -564,6 +572,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 

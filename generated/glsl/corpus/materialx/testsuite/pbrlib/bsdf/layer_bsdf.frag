@@ -16,6 +16,7 @@
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -139,6 +140,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 

@@ -14,6 +14,7 @@
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -77,6 +78,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -140,6 +142,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -203,6 +206,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -266,6 +270,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 

@@ -15,6 +15,7 @@
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -81,6 +82,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -166,6 +168,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -250,6 +253,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -334,6 +338,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -417,6 +422,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -483,6 +489,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
@@ -548,6 +555,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #define MXC_TABLE_BINDING 0
 #define MXC_TABLE_SIZE 32
 #define MXC_TABLE_SLICES 32
+#define MXC_TABLE_HEIGHT 1654
 #define MXC_STAGE_RASTER
 #define MXC_SUBGROUPS
 
