@@ -75,18 +75,18 @@ struct MxcLobeSample
 #define SPIRV_CROSS_CONSTANT_ID_0 -1
 #endif
 static const int MXC_ENVIRONMENT = SPIRV_CROSS_CONSTANT_ID_0;
-static const bool _209 = (MXC_ENVIRONMENT != (-1));
+static const bool _210 = (MXC_ENVIRONMENT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_1
 #define SPIRV_CROSS_CONSTANT_ID_1 -1
 #endif
 static const int MXC_LIGHT_COUNT = SPIRV_CROSS_CONSTANT_ID_1;
-static const bool _211 = (MXC_LIGHT_COUNT != (-1));
+static const bool _212 = (MXC_LIGHT_COUNT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_2
 #define SPIRV_CROSS_CONSTANT_ID_2 -1
 #endif
 static const int MXC_LIGHT_KINDS = SPIRV_CROSS_CONSTANT_ID_2;
-static const bool _213 = (MXC_LIGHT_KINDS != (-1));
-static const int _214 = _213 ? MXC_LIGHT_KINDS : 7;
+static const bool _214 = (MXC_LIGHT_KINDS != (-1));
+static const int _215 = _214 ? MXC_LIGHT_KINDS : 7;
 
 cbuffer MxcView : register(b1, space0)
 {
@@ -103,7 +103,7 @@ cbuffer MxcView : register(b1, space0)
 };
 
 ByteAddressBuffer mxc_params : register(t2, space0);
-ByteAddressBuffer _192 : register(t1, space1);
+ByteAddressBuffer _193 : register(t1, space1);
 Texture2D<float4> mxc_tables : register(t0, space0);
 SamplerState _mxc_tables_sampler : register(s0, space0);
 Texture2D<float4> mxc_env_radiance : register(t0, space1);
@@ -141,16 +141,16 @@ struct SPIRV_Cross_Output
 float3 mxc_safe_normalize(float3 v, float3 fallback)
 {
     float l2 = dot(v, v);
-    float3 _928;
+    float3 _944;
     if (l2 > 9.9999996826552253889678874634872e-21f)
     {
-        _928 = v * rsqrt(l2);
+        _944 = v * rsqrt(l2);
     }
     else
     {
-        _928 = fallback;
+        _944 = fallback;
     }
-    return _928;
+    return _944;
 }
 
 float3x3 mxc_frame(float3 N, float3 T)
@@ -199,16 +199,16 @@ bool mxc_index_matched(MxcLobe l)
 
 float mxc_lobe_eta(MxcLobe l, bool above)
 {
-    float _1609;
+    float _1625;
     if (above)
     {
-        _1609 = l.eta;
+        _1625 = l.eta;
     }
     else
     {
-        _1609 = 1.0f / l.eta;
+        _1625 = 1.0f / l.eta;
     }
-    return _1609;
+    return _1625;
 }
 
 float4 mxc_table_at(float mu, float x, float firstRow)
@@ -296,68 +296,68 @@ float3 mxc_lobe_fresnel(MxcLobe l, float _cosh, bool above)
 
 float3 mxc_lobe_ms_scale(MxcLobe l, float3 wo)
 {
-    bool _1922 = l.kind == 1;
-    bool _1929;
-    if (!_1922)
-    {
-        _1929 = l.kind == 2;
-    }
-    else
-    {
-        _1929 = _1922;
-    }
-    bool _1936;
-    if (!_1929)
-    {
-        _1936 = l.kind == 3;
-    }
-    else
-    {
-        _1936 = _1929;
-    }
-    bool microfacet = _1936;
-    bool _1938 = !microfacet;
+    bool _1938 = l.kind == 1;
     bool _1945;
     if (!_1938)
     {
-        float2 param = l.alpha;
-        _1945 = mxc_is_delta(param);
+        _1945 = l.kind == 2;
     }
     else
     {
         _1945 = _1938;
     }
-    if (_1945)
+    bool _1952;
+    if (!_1945)
     {
-        return 1.0f.xxx;
-    }
-    float alpha = sqrt(l.alpha.x * l.alpha.y);
-    bool _1956 = l.kind == 1;
-    bool _1961;
-    if (_1956)
-    {
-        MxcLobe param_1 = l;
-        _1961 = mxc_index_matched(param_1);
+        _1952 = l.kind == 3;
     }
     else
     {
-        _1961 = _1956;
+        _1952 = _1945;
+    }
+    bool microfacet = _1952;
+    bool _1954 = !microfacet;
+    bool _1961;
+    if (!_1954)
+    {
+        float2 param = l.alpha;
+        _1961 = mxc_is_delta(param);
+    }
+    else
+    {
+        _1961 = _1954;
     }
     if (_1961)
     {
         return 1.0f.xxx;
     }
-    bool _1966 = l.kind == 1;
-    bool _1973;
-    if (_1966)
+    float alpha = sqrt(l.alpha.x * l.alpha.y);
+    bool _1972 = l.kind == 1;
+    bool _1977;
+    if (_1972)
     {
-        _1973 = (l.mode & 4) == 0;
+        MxcLobe param_1 = l;
+        _1977 = mxc_index_matched(param_1);
     }
     else
     {
-        _1973 = _1966;
+        _1977 = _1972;
     }
-    if (_1973)
+    if (_1977)
+    {
+        return 1.0f.xxx;
+    }
+    bool _1982 = l.kind == 1;
+    bool _1989;
+    if (_1982)
+    {
+        _1989 = (l.mode & 4) == 0;
+    }
+    else
+    {
+        _1989 = _1982;
+    }
+    if (_1989)
     {
         MxcLobe param_2 = l;
         bool param_3 = wo.z >= 0.0f;
@@ -380,16 +380,16 @@ float3 mxc_lobe_ms_scale(MxcLobe l, float3 wo)
 
 float mxc_dielectric_albedo(float mu, float alpha, float eta)
 {
-    float _1559;
+    float _1575;
     if (eta >= 1.0f)
     {
-        _1559 = eta;
+        _1575 = eta;
     }
     else
     {
-        _1559 = 1.0f / max(eta, 0.001000000047497451305389404296875f);
+        _1575 = 1.0f / max(eta, 0.001000000047497451305389404296875f);
     }
-    float e = _1559;
+    float e = _1575;
     float param = mu;
     float param_1 = alpha;
     float param_2 = e;
@@ -399,40 +399,40 @@ float mxc_dielectric_albedo(float mu, float alpha, float eta)
 float3 mxc_lobe_albedo_scaled(MxcLobe l, float3 wo, float3 ms)
 {
     float mu = clamp(wo.z, 0.0f, 1.0f);
-    bool _2046 = l.kind == 1;
-    bool _2053;
-    if (!_2046)
+    bool _2062 = l.kind == 1;
+    bool _2069;
+    if (!_2062)
     {
-        _2053 = l.kind == 2;
+        _2069 = l.kind == 2;
     }
     else
     {
-        _2053 = _2046;
+        _2069 = _2062;
     }
-    bool _2060;
-    if (!_2053)
+    bool _2076;
+    if (!_2069)
     {
-        _2060 = l.kind == 3;
+        _2076 = l.kind == 3;
     }
     else
     {
-        _2060 = _2053;
+        _2076 = _2069;
     }
-    if (_2060)
+    if (_2076)
     {
         float alpha = sqrt(l.alpha.x * l.alpha.y);
-        bool _2071 = l.kind == 1;
-        bool _2078;
-        if (_2071)
+        bool _2087 = l.kind == 1;
+        bool _2094;
+        if (_2087)
         {
             float2 param = l.alpha;
-            _2078 = !mxc_is_delta(param);
+            _2094 = !mxc_is_delta(param);
         }
         else
         {
-            _2078 = _2071;
+            _2094 = _2087;
         }
-        if (_2078)
+        if (_2094)
         {
             float param_1 = mu;
             float param_2 = alpha;
@@ -451,16 +451,16 @@ float3 mxc_lobe_albedo_scaled(MxcLobe l, float3 wo, float3 ms)
         float param_10 = 0.0f;
         bool param_11 = true;
         float3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
-        float3 _2036;
+        float3 _2052;
         if (l.kind == 1)
         {
-            _2036 = l.c0;
+            _2052 = l.c0;
         }
         else
         {
-            _2036 = 1.0f.xxx;
+            _2052 = 1.0f.xxx;
         }
-        float3 tint = _2036;
+        float3 tint = _2052;
         float2 param_12 = l.alpha;
         if (mxc_is_delta(param_12))
         {
@@ -490,17 +490,17 @@ float3 mxc_lobe_albedo(MxcLobe l, float3 wo)
 
 float3 mxc_lobe_layer_albedo(MxcLobe l, float3 wo)
 {
-    bool _2173 = l.kind == 9;
-    bool _2180;
-    if (!_2173)
+    bool _2189 = l.kind == 9;
+    bool _2196;
+    if (!_2189)
     {
-        _2180 = l.kind == 10;
+        _2196 = l.kind == 10;
     }
     else
     {
-        _2180 = _2173;
+        _2196 = _2189;
     }
-    if (_2180)
+    if (_2196)
     {
         MxcLobe white = l;
         white.c0 = 1.0f.xxx;
@@ -616,35 +616,35 @@ void mxc_material_closure(MxcGeometry g, float3 wo, inout MxcClosure c)
 
 int mxc_light_count()
 {
-    int _3406;
-    if (_211)
+    int _3422;
+    if (_212)
     {
-        _3406 = MXC_LIGHT_COUNT;
+        _3422 = MXC_LIGHT_COUNT;
     }
     else
     {
-        _3406 = mxc_view_counts.x;
+        _3422 = mxc_view_counts.x;
     }
-    return min(_3406, 8);
+    return min(_3422, 8);
 }
 
 int mxc_light_kinds()
 {
-    return _214;
+    return _215;
 }
 
 int mxc_environment_code()
 {
-    int _3398;
-    if (_209)
+    int _3414;
+    if (_210)
     {
-        _3398 = MXC_ENVIRONMENT;
+        _3414 = MXC_ENVIRONMENT;
     }
     else
     {
-        _3398 = mxc_view_counts.y;
+        _3414 = mxc_view_counts.y;
     }
-    return _3398;
+    return _3414;
 }
 
 float mxc_uniform(inout uint seed)
@@ -726,36 +726,36 @@ float mxc_ggx_g2(float3 wo, float3 wi, float2 alpha)
 {
     float3 param = wo;
     float2 param_1 = alpha;
-    float _1232 = mxc_ggx_lambda(param, param_1);
+    float _1248 = mxc_ggx_lambda(param, param_1);
     float3 param_2 = wi;
     float2 param_3 = alpha;
-    float _1236 = mxc_ggx_lambda(param_2, param_3);
-    return 1.0f / ((1.0f + _1232) + _1236);
+    float _1252 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0f / ((1.0f + _1248) + _1252);
 }
 
 float3 mxc_microfacet_reflect(MxcLobe l, float3 wo, float3 wi)
 {
-    bool _1668 = wo.z <= 0.0f;
-    bool _1675;
-    if (!_1668)
+    bool _1684 = wo.z <= 0.0f;
+    bool _1691;
+    if (!_1684)
     {
-        _1675 = wi.z <= 0.0f;
+        _1691 = wi.z <= 0.0f;
     }
     else
     {
-        _1675 = _1668;
+        _1691 = _1684;
     }
-    bool _1682;
-    if (!_1675)
+    bool _1698;
+    if (!_1691)
     {
         float2 param = l.alpha;
-        _1682 = mxc_is_delta(param);
+        _1698 = mxc_is_delta(param);
     }
     else
     {
-        _1682 = _1675;
+        _1698 = _1691;
     }
-    if (_1682)
+    if (_1698)
     {
         return 0.0f.xxx;
     }
@@ -770,27 +770,27 @@ float3 mxc_microfacet_reflect(MxcLobe l, float3 wo, float3 wi)
     }
     float3 param_4 = h;
     float2 param_5 = l.alpha;
-    float _1708 = mxc_ggx_d(param_4, param_5);
+    float _1724 = mxc_ggx_d(param_4, param_5);
     float3 param_6 = wo;
     float3 param_7 = wi;
     float2 param_8 = l.alpha;
-    return ((f * _1708) * mxc_ggx_g2(param_6, param_7, param_8)) / (4.0f * wo.z).xxx;
+    return ((f * _1724) * mxc_ggx_g2(param_6, param_7, param_8)) / (4.0f * wo.z).xxx;
 }
 
 float mxc_fon(float sigma, float3 wo, float3 wi)
 {
     float a = 1.0f / (1.0f + (0.2877933979034423828125f * sigma));
     float s = dot(wi, wo) - (wi.z * wo.z);
-    float _1729;
+    float _1745;
     if (s > 0.0f)
     {
-        _1729 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07f);
+        _1745 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07f);
     }
     else
     {
-        _1729 = 1.0f;
+        _1745 = 1.0f;
     }
-    float t = _1729;
+    float t = _1745;
     return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375f;
 }
 
@@ -801,16 +801,16 @@ float mxc_fon_albedo(float sigma, float mu)
     float param = 1.0f - (c * c);
     float s = mxc_safe_sqrt(param);
     float theta = acos(c);
-    float _1775;
+    float _1791;
     if (c > 9.9999997473787516355514526367188e-05f)
     {
-        _1775 = (1.0f - ((s * s) * s)) / c;
+        _1791 = (1.0f - ((s * s) * s)) / c;
     }
     else
     {
-        _1775 = 1.5f * c;
+        _1791 = 1.5f * c;
     }
-    float tail = _1775;
+    float tail = _1791;
     float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875f * s) * tail)) - (0.666666686534881591796875f * s);
     return a + (((sigma * a) * g) * 0.3183098733425140380859375f);
 }
@@ -867,17 +867,17 @@ float3 mxc_lobe_eval(MxcLobe l, float3 wo, float3 wi)
         case 2:
         case 3:
         {
-            bool _2255 = l.kind == 3;
-            bool _2262;
-            if (_2255)
+            bool _2271 = l.kind == 3;
+            bool _2278;
+            if (_2271)
             {
-                _2262 = (l.mode & 1) == 0;
+                _2278 = (l.mode & 1) == 0;
             }
             else
             {
-                _2262 = _2255;
+                _2278 = _2271;
             }
-            if (_2262)
+            if (_2278)
             {
                 return 0.0f.xxx;
             }
@@ -888,30 +888,30 @@ float3 mxc_lobe_eval(MxcLobe l, float3 wo, float3 wi)
         }
         case 5:
         {
-            bool _2271 = wo.z > 0.0f;
-            bool _2277;
-            if (_2271)
+            bool _2287 = wo.z > 0.0f;
+            bool _2293;
+            if (_2287)
             {
-                _2277 = wi.z > 0.0f;
+                _2293 = wi.z > 0.0f;
             }
             else
             {
-                _2277 = _2271;
+                _2293 = _2287;
             }
-            float3 _2206;
-            if (_2277)
+            float3 _2222;
+            if (_2293)
             {
                 float3 param_9 = l.c0;
                 float param_10 = l.p0;
                 float3 param_11 = wo;
                 float3 param_12 = wi;
-                _2206 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
+                _2222 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
             }
             else
             {
-                _2206 = 0.0f.xxx;
+                _2222 = 0.0f.xxx;
             }
-            return _2206;
+            return _2222;
         }
         default:
         {
@@ -924,8 +924,8 @@ float mxc_ggx_g1(float3 v, float2 alpha)
 {
     float3 param = v;
     float2 param_1 = alpha;
-    float _1218 = mxc_ggx_lambda(param, param_1);
-    return 1.0f / (1.0f + _1218);
+    float _1234 = mxc_ggx_lambda(param, param_1);
+    return 1.0f / (1.0f + _1234);
 }
 
 float mxc_ggx_pdf_vndf(float3 wo, float3 m, float2 alpha)
@@ -938,8 +938,8 @@ float mxc_ggx_pdf_vndf(float3 wo, float3 m, float2 alpha)
     float2 param_1 = alpha;
     float3 param_2 = m;
     float2 param_3 = alpha;
-    float _1391 = mxc_ggx_d(param_2, param_3);
-    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0f)) * _1391) / wo.z;
+    float _1407 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0f)) * _1407) / wo.z;
 }
 
 float mxc_mean(float3 c)
@@ -966,26 +966,26 @@ float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
                 return 0.0f;
             }
             bool above = wo.z > 0.0f;
-            float3 _2300;
+            float3 _2316;
             if (above)
             {
-                _2300 = wo;
+                _2316 = wo;
             }
             else
             {
-                _2300 = -wo;
+                _2316 = -wo;
             }
-            float3 o = _2300;
-            float3 _2302;
+            float3 o = _2316;
+            float3 _2318;
             if (above)
             {
-                _2302 = wi;
+                _2318 = wi;
             }
             else
             {
-                _2302 = -wi;
+                _2318 = -wi;
             }
-            float3 i = _2302;
+            float3 i = _2318;
             if (i.z > 0.0f)
             {
                 float3 h = normalize(o + i);
@@ -1007,42 +1007,42 @@ float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
                 float3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
                 float fr = mxc_mean(param_7);
                 MxcLobe param_8 = l;
-                bool _2402 = mxc_lobe_transmits(param_8);
-                bool _2409;
-                if (_2402)
+                bool _2418 = mxc_lobe_transmits(param_8);
+                bool _2425;
+                if (_2418)
                 {
-                    _2409 = (l.mode & 1) != 0;
+                    _2425 = (l.mode & 1) != 0;
                 }
                 else
                 {
-                    _2409 = _2402;
+                    _2425 = _2418;
                 }
-                return p * (_2409 ? fr : 1.0f);
+                return p * (_2425 ? fr : 1.0f);
             }
             return 0.0f;
         }
         default:
         {
-            bool _2322 = wo.z > 0.0f;
-            bool _2328;
-            if (_2322)
+            bool _2338 = wo.z > 0.0f;
+            bool _2344;
+            if (_2338)
             {
-                _2328 = wi.z > 0.0f;
+                _2344 = wi.z > 0.0f;
             }
             else
             {
-                _2328 = _2322;
+                _2344 = _2338;
             }
-            float _2314;
-            if (_2328)
+            float _2330;
+            if (_2344)
             {
-                _2314 = wi.z * 0.3183098733425140380859375f;
+                _2330 = wi.z * 0.3183098733425140380859375f;
             }
             else
             {
-                _2314 = 0.0f;
+                _2330 = 0.0f;
             }
-            return _2314;
+            return _2330;
         }
     }
 }
@@ -1053,16 +1053,16 @@ float3 mxc_ggx_sample_vndf(float3 wo, inout float2 alpha, float2 u)
     alpha = mxc_rough_alpha(param);
     float3 vh = normalize(float3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lensq = (vh.x * vh.x) + (vh.y * vh.y);
-    float3 _1248;
+    float3 _1264;
     if (lensq > 0.0f)
     {
-        _1248 = float3(-vh.y, vh.x, 0.0f) * rsqrt(lensq);
+        _1264 = float3(-vh.y, vh.x, 0.0f) * rsqrt(lensq);
     }
     else
     {
-        _1248 = float3(1.0f, 0.0f, 0.0f);
+        _1264 = float3(1.0f, 0.0f, 0.0f);
     }
-    float3 t1 = _1248;
+    float3 t1 = _1264;
     float3 t2 = cross(vh, t1);
     float r = sqrt(u.x);
     float phi = 6.283185482025146484375f * u.y;
@@ -1091,94 +1091,94 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, float3 wo, float3 u)
         case 3:
         {
             bool above = wo.z > 0.0f;
-            float3 _2421;
+            float3 _2437;
             if (above)
             {
-                _2421 = wo;
+                _2437 = wo;
             }
             else
             {
-                _2421 = -wo;
+                _2437 = -wo;
             }
-            float3 o = _2421;
+            float3 o = _2437;
             if (o.z <= 0.0f)
             {
                 return s;
             }
             float2 param = l.alpha;
             bool delta = mxc_is_delta(param);
-            float3 _2425;
+            float3 _2441;
             if (delta)
             {
-                _2425 = float3(0.0f, 0.0f, 1.0f);
+                _2441 = float3(0.0f, 0.0f, 1.0f);
             }
             else
             {
                 float3 param_1 = o;
                 float2 param_2 = l.alpha;
                 float2 param_3 = u.xy;
-                float3 _2526 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
-                _2425 = _2526;
+                float3 _2542 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2441 = _2542;
             }
-            float3 m = _2425;
+            float3 m = _2441;
             float hm = dot(o, m);
-            bool _2533 = l.kind == 1;
-            bool _2540;
-            if (!_2533)
+            bool _2549 = l.kind == 1;
+            bool _2556;
+            if (!_2549)
             {
-                _2540 = l.kind == 3;
+                _2556 = l.kind == 3;
             }
             else
             {
-                _2540 = _2533;
+                _2556 = _2549;
             }
-            bool _2545;
-            if (_2540)
+            bool _2561;
+            if (_2556)
             {
                 MxcLobe param_4 = l;
-                _2545 = mxc_lobe_transmits(param_4);
+                _2561 = mxc_lobe_transmits(param_4);
             }
             else
             {
-                _2545 = _2540;
+                _2561 = _2556;
             }
-            bool transmits = _2545;
-            bool _2548 = l.kind == 2;
-            bool _2556;
-            if (!_2548)
+            bool transmits = _2561;
+            bool _2564 = l.kind == 2;
+            bool _2572;
+            if (!_2564)
             {
-                _2556 = (l.mode & 1) != 0;
+                _2572 = (l.mode & 1) != 0;
             }
             else
             {
-                _2556 = _2548;
+                _2572 = _2564;
             }
-            bool reflects = _2556;
+            bool reflects = _2572;
             MxcLobe param_5 = l;
             float param_6 = max(hm, 0.0f);
             bool param_7 = above;
             float3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
-            float _2438;
+            float _2454;
             if (transmits)
             {
                 float3 param_8 = f;
-                _2438 = mxc_mean(param_8);
+                _2454 = mxc_mean(param_8);
             }
             else
             {
-                _2438 = 1.0f;
+                _2454 = 1.0f;
             }
-            float fr = _2438;
-            float _2441;
+            float fr = _2454;
+            float _2457;
             if (transmits)
             {
-                _2441 = reflects ? fr : 0.0f;
+                _2457 = reflects ? fr : 0.0f;
             }
             else
             {
-                _2441 = 1.0f;
+                _2457 = 1.0f;
             }
-            float pReflect = _2441;
+            float pReflect = _2457;
             if (u.z < pReflect)
             {
                 float3 i = reflect(-o, m);
@@ -1186,38 +1186,38 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, float3 wo, float3 u)
                 {
                     return s;
                 }
-                float3 _2443;
+                float3 _2459;
                 if (above)
                 {
-                    _2443 = i;
+                    _2459 = i;
                 }
                 else
                 {
-                    _2443 = -i;
+                    _2459 = -i;
                 }
-                s.wi = _2443;
+                s.wi = _2459;
                 s.delta = delta;
                 if (delta)
                 {
-                    float3 _2445;
+                    float3 _2461;
                     if (l.kind == 1)
                     {
-                        float3 _2446;
+                        float3 _2462;
                         if (above)
                         {
-                            _2446 = l.c0;
+                            _2462 = l.c0;
                         }
                         else
                         {
-                            _2446 = 1.0f.xxx;
+                            _2462 = 1.0f.xxx;
                         }
-                        _2445 = _2446;
+                        _2461 = _2462;
                     }
                     else
                     {
-                        _2445 = 1.0f.xxx;
+                        _2461 = 1.0f.xxx;
                     }
-                    float3 tint = _2445;
+                    float3 tint = _2461;
                     s.value = f * tint;
                     s.pdf = pReflect;
                 }
@@ -1385,16 +1385,16 @@ float3 mxc_env_to_map(float3 w, float angle)
 
 float2 mxc_env_uv(float3 d)
 {
-    float _3108;
+    float _3124;
     if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13f)
     {
-        _3108 = 0.5f + (atan2(d.x, -d.z) * 0.15915493667125701904296875f);
+        _3124 = 0.5f + (atan2(d.x, -d.z) * 0.15915493667125701904296875f);
     }
     else
     {
-        _3108 = 0.5f;
+        _3124 = 0.5f;
     }
-    float u = _3108;
+    float u = _3124;
     float v = atan2(length(d.xz), d.y) * 0.3183098733425140380859375f;
     return float2(u, v);
 }
@@ -1431,7 +1431,7 @@ uint mxc_env_cell(float3 d)
 {
     float3 param = d;
     float2 uv = mxc_env_uv(param);
-    uint2 size = max(_192.Load4(0).xy, uint2(1u, 1u));
+    uint2 size = max(_193.Load4(0).xy, uint2(1u, 1u));
     uint i = min(uint(max(uv.x, 0.0f) * float(size.x)), (size.x - 1u));
     uint j = min(uint(max(uv.y, 0.0f) * float(size.y)), (size.y - 1u));
     return (j * size.x) + i;
@@ -1440,36 +1440,36 @@ uint mxc_env_cell(float3 d)
 float mxc_env_pdf(float3 d)
 {
     float3 param = d;
-    return asfloat(_192.Load(mxc_env_cell(param) * 16 + 24));
+    return asfloat(_193.Load(mxc_env_cell(param) * 16 + 24));
 }
 
 float mxc_power_heuristic(float a, float b)
 {
     float a2 = a * a;
     float b2 = b * b;
-    float _3498;
+    float _3514;
     if ((a2 + b2) > 0.0f)
     {
-        _3498 = a2 / (a2 + b2);
+        _3514 = a2 / (a2 + b2);
     }
     else
     {
-        _3498 = 0.0f;
+        _3514 = 0.0f;
     }
-    return _3498;
+    return _3514;
 }
 
 float3 mxc_env_sample(float4 u, out float pdf)
 {
-    uint2 size = max(_192.Load4(0).xy, uint2(1u, 1u));
+    uint2 size = max(_193.Load4(0).xy, uint2(1u, 1u));
     uint n = size.x * size.y;
     uint k = min(uint(u.x * float(n)), (n - 1u));
-    float4 cell = asfloat(_192.Load4(k * 16 + 16));
+    float4 cell = asfloat(_193.Load4(k * 16 + 16));
     if (u.y >= cell.x)
     {
         k = min(asuint(cell.y), (n - 1u));
     }
-    pdf = asfloat(_192.Load(k * 16 + 24));
+    pdf = asfloat(_193.Load(k * 16 + 24));
     uint i = k % size.x;
     uint j = k / size.x;
     float phi = 6.283185482025146484375f * (((float(i) + u.z) / float(size.x)) - 0.5f);
@@ -1522,16 +1522,16 @@ float3 mxc_closure_eval_pdf(MxcClosure c, float3 wo, float3 wi, bool wantPdf, in
             p += (c.choice[k] * mxc_lobe_pdf(param_11, param_12, param_13));
         }
     }
-    float _2772;
+    float _2788;
     if (c.choiceTotal > 0.0f)
     {
-        _2772 = p / c.choiceTotal;
+        _2788 = p / c.choiceTotal;
     }
     else
     {
-        _2772 = 0.0f;
+        _2788 = 0.0f;
     }
-    pdf = _2772;
+    pdf = _2788;
     return f;
 }
 
@@ -1547,19 +1547,27 @@ void frag_main()
     {
         N = -N;
     }
+    float3 param_2 = mxc_view_eye.xyz - vPosition;
+    float3 param_3 = N;
+    float3 wo = mxc_safe_normalize(param_2, param_3);
+    float facing = dot(wo, N);
+    if (facing < 0.00999999977648258209228515625f)
+    {
+        N = normalize(N + (wo * (0.00999999977648258209228515625f - facing)));
+    }
     float handedness = (vTangent.w < 0.0f) ? (-1.0f) : 1.0f;
-    float3 param_2 = N;
-    float3 param_3 = vTangent.xyz;
-    float3x3 frame = mxc_frame(param_2, param_3);
+    float3 param_4 = N;
+    float3 param_5 = vTangent.xyz;
+    float3x3 frame = mxc_frame(param_4, param_5);
     g.N = N;
     g.T = frame[0];
     g.B = frame[1] * handedness;
-    float3 param_4 = vObjectNormal;
-    float3 param_5 = float3(0.0f, 0.0f, 1.0f);
-    g.Nobj = mxc_safe_normalize(param_4, param_5);
-    float3 param_6 = g.Nobj;
-    float3 param_7 = vObjectTangent;
-    float3x3 objectFrame = mxc_frame(param_6, param_7);
+    float3 param_6 = vObjectNormal;
+    float3 param_7 = float3(0.0f, 0.0f, 1.0f);
+    g.Nobj = mxc_safe_normalize(param_6, param_7);
+    float3 param_8 = g.Nobj;
+    float3 param_9 = vObjectTangent;
+    float3x3 objectFrame = mxc_frame(param_8, param_9);
     g.Tobj = objectFrame[0];
     g.Bobj = objectFrame[1] * handedness;
     g.uv = vUv;
@@ -1567,9 +1575,6 @@ void frag_main()
     g.objectToWorld = mxc_view_objectToWorld;
     g.frame = asfloat(mxc_params.Load(4));
     g.time = asfloat(mxc_params.Load(8));
-    float3 param_8 = mxc_view_eye.xyz - vPosition;
-    float3 param_9 = N;
-    float3 wo = mxc_safe_normalize(param_8, param_9);
     uint param_10 = uint(mxc_view_counts.z) + 7u;
     uint param_11 = uint(gl_FragCoord.y) + mxc_pcg(param_10);
     uint param_12 = uint(gl_FragCoord.x) ^ mxc_pcg(param_11);
@@ -1584,16 +1589,16 @@ void frag_main()
     int lights = mxc_light_count();
     int kinds = mxc_light_kinds();
     bool image = mxc_environment_code() == 3;
-    int _247;
+    int _249;
     if (mxc_environment_code() != 0)
     {
-        _247 = max(mxc_view_counts.w, 1);
+        _249 = max(mxc_view_counts.w, 1);
     }
     else
     {
-        _247 = 0;
+        _249 = 0;
     }
-    int n = _247;
+    int n = _249;
     uint param_17 = uint(mxc_view_counts.z);
     uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
     uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
@@ -1602,54 +1607,54 @@ void frag_main()
     uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
     uint pixel = mxc_pcg(param_21);
     uint param_22 = pixel;
-    float _474 = mxc_uniform(param_22);
+    float _490 = mxc_uniform(param_22);
     pixel = param_22;
     uint param_23 = pixel;
-    float _478 = mxc_uniform(param_23);
+    float _494 = mxc_uniform(param_23);
     pixel = param_23;
     uint param_24 = pixel;
-    float _481 = mxc_uniform(param_24);
+    float _497 = mxc_uniform(param_24);
     pixel = param_24;
     uint param_25 = pixel;
-    float _484 = mxc_uniform(param_25);
+    float _500 = mxc_uniform(param_25);
     pixel = param_25;
-    float4 shift = float4(_474, _478, _481, _484);
+    float4 shift = float4(_490, _494, _497, _500);
     float3 sum = 0.0f.xxx;
-    int _264;
+    int _266;
     MxcSample smp;
-    float3 _281;
-    float3 _282;
-    float _287;
+    float3 _283;
+    float3 _284;
+    float _289;
     float param_49;
-    int _311;
+    int _313;
     float param_59;
-    float _327;
+    float _329;
     for (int b = 0; b < max(n, int(lights > 0)); b++)
     {
         int batchLights = (b == 0) ? lights : 0;
         if (b < n)
         {
-            _264 = 1 + int(image);
+            _266 = 1 + int(image);
         }
         else
         {
-            _264 = 0;
+            _266 = 0;
         }
-        int batchSamples = _264;
+        int batchSamples = _266;
         uint index = (uint(mxc_view_counts.z) * uint(max(n, 1))) + uint(b);
         uint param_26 = index;
         uint param_27 = 2u;
-        float _524 = mxc_radical_inverse(param_26, param_27);
+        float _540 = mxc_radical_inverse(param_26, param_27);
         uint param_28 = index;
         uint param_29 = 3u;
-        float _527 = mxc_radical_inverse(param_28, param_29);
+        float _543 = mxc_radical_inverse(param_28, param_29);
         uint param_30 = index;
         uint param_31 = 5u;
-        float _529 = mxc_radical_inverse(param_30, param_31);
+        float _545 = mxc_radical_inverse(param_30, param_31);
         uint param_32 = index;
         uint param_33 = 7u;
-        float _531 = mxc_radical_inverse(param_32, param_33);
-        float4 choice = frac(float4(_524, _527, _529, _531) + shift);
+        float _547 = mxc_radical_inverse(param_32, param_33);
+        float4 choice = frac(float4(_540, _543, _545, _547) + shift);
         smp.valid = false;
         smp.evaluate = false;
         smp.delta = false;
@@ -1668,58 +1673,58 @@ void frag_main()
         {
             if (above)
             {
-                _282 = smp.wi;
+                _284 = smp.wi;
             }
             else
             {
                 float3 param_37 = -wo;
                 float3 param_38 = smp.wi;
-                _282 = mxc_exit_direction(param_37, param_38);
+                _284 = mxc_exit_direction(param_37, param_38);
             }
-            float3 param_39 = _282;
-            _281 = mxc_environment(param_39);
+            float3 param_39 = _284;
+            _283 = mxc_environment(param_39);
         }
         else
         {
-            _281 = 0.0f.xxx;
+            _283 = 0.0f.xxx;
         }
-        float3 seen = _281;
-        bool _589 = (b < n) && smp.valid;
-        bool _595;
-        if (_589)
+        float3 seen = _283;
+        bool _605 = (b < n) && smp.valid;
+        bool _611;
+        if (_605)
         {
-            _595 = !smp.evaluate;
+            _611 = !smp.evaluate;
         }
         else
         {
-            _595 = _589;
+            _611 = _605;
         }
-        if (_595)
+        if (_611)
         {
-            bool _600 = image && above;
-            bool _606;
-            if (_600)
+            bool _616 = image && above;
+            bool _622;
+            if (_616)
             {
-                _606 = !smp.delta;
+                _622 = !smp.delta;
             }
             else
             {
-                _606 = _600;
+                _622 = _616;
             }
-            if (_606)
+            if (_622)
             {
                 float3 param_40 = smp.wi;
                 float param_41 = mxc_view_environment.z;
                 float3 param_42 = mxc_env_to_map(param_40, param_41);
                 float param_43 = smp.pdf;
                 float param_44 = mxc_env_pdf(param_42);
-                _287 = mxc_power_heuristic(param_43, param_44);
+                _289 = mxc_power_heuristic(param_43, param_44);
             }
             else
             {
-                _287 = 1.0f;
+                _289 = 1.0f;
             }
-            float w = _287;
+            float w = _289;
             sum += ((smp.weight * w) * seen);
         }
         float3 m = 0.0f.xxx;
@@ -1729,33 +1734,33 @@ void frag_main()
         if (image && (b < n))
         {
             uint param_45 = seed;
-            float _642 = mxc_uniform(param_45);
+            float _658 = mxc_uniform(param_45);
             seed = param_45;
             uint param_46 = seed;
-            float _645 = mxc_uniform(param_46);
+            float _661 = mxc_uniform(param_46);
             seed = param_46;
             uint param_47 = seed;
-            float _648 = mxc_uniform(param_47);
+            float _664 = mxc_uniform(param_47);
             seed = param_47;
-            float4 v = float4(choice.y, _642, _645, _648);
+            float4 v = float4(choice.y, _658, _661, _664);
             float4 param_48 = v;
-            float3 _652 = mxc_env_sample(param_48, param_49);
+            float3 _668 = mxc_env_sample(param_48, param_49);
             lightPdf = param_49;
-            m = _652;
+            m = _668;
             float3 param_50 = m;
             float param_51 = mxc_view_environment.z;
             imageWi = mxc_env_to_world(param_50, param_51);
-            bool _661 = lightPdf > 0.0f;
-            bool _668;
-            if (_661)
+            bool _677 = lightPdf > 0.0f;
+            bool _684;
+            if (_677)
             {
-                _668 = dot(imageWi, N) > 0.0f;
+                _684 = dot(imageWi, N) > 0.0f;
             }
             else
             {
-                _668 = _661;
+                _684 = _677;
             }
-            if (_668)
+            if (_684)
             {
                 float3 param_52 = imageWi;
                 imageSeen = mxc_environment(param_52);
@@ -1768,38 +1773,38 @@ void frag_main()
             bool use = true;
             if ((n == 0) || (j < batchLights))
             {
-                _311 = 0;
+                _313 = 0;
             }
             else
             {
-                _311 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+                _313 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
             }
-            int strategy = _311;
+            int strategy = _313;
             if (strategy == 0)
             {
                 float4 light = mxc_view_lightVector[j];
                 incoming = mxc_view_lightRadiance[j].xyz;
-                bool _713 = kinds == 1;
-                bool _726;
-                if (!_713)
+                bool _729 = kinds == 1;
+                bool _742;
+                if (!_729)
                 {
-                    bool _719 = (kinds & 1) != 0;
-                    bool _725;
-                    if (_719)
+                    bool _735 = (kinds & 1) != 0;
+                    bool _741;
+                    if (_735)
                     {
-                        _725 = light.w == 0.0f;
+                        _741 = light.w == 0.0f;
                     }
                     else
                     {
-                        _725 = _719;
+                        _741 = _735;
                     }
-                    _726 = _725;
+                    _742 = _741;
                 }
                 else
                 {
-                    _726 = _713;
+                    _742 = _729;
                 }
-                bool directional = _726;
+                bool directional = _742;
                 if (directional)
                 {
                     float3 param_53 = light.xyz;
@@ -1812,17 +1817,17 @@ void frag_main()
                     float d2 = max(dot(d, d), 9.9999999392252902907785028219223e-09f);
                     wi = d * rsqrt(d2);
                     incoming /= d2.xxx;
-                    bool _753 = (kinds & 4) != 0;
-                    bool _759;
-                    if (_753)
+                    bool _769 = (kinds & 4) != 0;
+                    bool _775;
+                    if (_769)
                     {
-                        _759 = light.w == 2.0f;
+                        _775 = light.w == 2.0f;
                     }
                     else
                     {
-                        _759 = _753;
+                        _775 = _769;
                     }
-                    if (_759)
+                    if (_775)
                     {
                         float4 spot = mxc_view_lightSpot[j];
                         incoming *= smoothstep(spot.w, mxc_view_lightRadiance[j].w, dot(-wi, spot.xyz));
@@ -1841,26 +1846,26 @@ void frag_main()
                 {
                     wi = imageWi;
                     incoming = imageSeen;
-                    bool _794 = lightPdf > 0.0f;
-                    bool _801;
-                    if (_794)
+                    bool _810 = lightPdf > 0.0f;
+                    bool _817;
+                    if (_810)
                     {
-                        _801 = dot(imageWi, N) > 0.0f;
+                        _817 = dot(imageWi, N) > 0.0f;
                     }
                     else
                     {
-                        _801 = _794;
+                        _817 = _810;
                     }
-                    use = _801;
+                    use = _817;
                 }
             }
             MxcClosure param_55 = c;
             float3 param_56 = wo;
             float3 param_57 = wi;
             bool param_58 = strategy != 0;
-            float3 _807 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            float3 _823 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
             float pdf = param_59;
-            float3 f = _807;
+            float3 f = _823;
             if (strategy == 0)
             {
                 radiance += (f * incoming);
@@ -1878,13 +1883,13 @@ void frag_main()
                             float3 param_62 = mxc_env_to_map(param_60, param_61);
                             float param_63 = pdf;
                             float param_64 = mxc_env_pdf(param_62);
-                            _327 = mxc_power_heuristic(param_63, param_64);
+                            _329 = mxc_power_heuristic(param_63, param_64);
                         }
                         else
                         {
-                            _327 = 1.0f;
+                            _329 = 1.0f;
                         }
-                        float w_1 = _327;
+                        float w_1 = _329;
                         sum += (((f * w_1) / pdf.xxx) * incoming);
                     }
                 }

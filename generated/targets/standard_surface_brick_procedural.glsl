@@ -83,18 +83,18 @@ struct MxcLobeSample
 #define SPIRV_CROSS_CONSTANT_ID_0 -1
 #endif
 const int MXC_ENVIRONMENT = SPIRV_CROSS_CONSTANT_ID_0;
-const bool _238 = (MXC_ENVIRONMENT != (-1));
+const bool _239 = (MXC_ENVIRONMENT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_1
 #define SPIRV_CROSS_CONSTANT_ID_1 -1
 #endif
 const int MXC_LIGHT_COUNT = SPIRV_CROSS_CONSTANT_ID_1;
-const bool _240 = (MXC_LIGHT_COUNT != (-1));
+const bool _241 = (MXC_LIGHT_COUNT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_2
 #define SPIRV_CROSS_CONSTANT_ID_2 -1
 #endif
 const int MXC_LIGHT_KINDS = SPIRV_CROSS_CONSTANT_ID_2;
-const bool _242 = (MXC_LIGHT_KINDS != (-1));
-const int _243 = _242 ? MXC_LIGHT_KINDS : 7;
+const bool _243 = (MXC_LIGHT_KINDS != (-1));
+const int _244 = _243 ? MXC_LIGHT_KINDS : 7;
 
 layout(binding = 0, std140) uniform MxcView
 {
@@ -121,7 +121,7 @@ layout(binding = 1, std430) readonly buffer MxcEnvDistribution
 {
     uvec4 mxc_env_size;
     vec4 mxc_env_cells[];
-} _221;
+} _222;
 
 layout(binding = 0) uniform sampler2D mxc_tables;
 layout(binding = 1) uniform sampler2D mxc_texture_0;
@@ -145,16 +145,16 @@ float mxc_texture_footprint;
 vec3 mxc_safe_normalize(vec3 v, vec3 fallback)
 {
     float l2 = dot(v, v);
-    vec3 _964;
+    vec3 _980;
     if (l2 > 9.9999996826552253889678874634872e-21)
     {
-        _964 = v * inversesqrt(l2);
+        _980 = v * inversesqrt(l2);
     }
     else
     {
-        _964 = fallback;
+        _980 = fallback;
     }
-    return _964;
+    return _980;
 }
 
 mat3 mxc_frame(vec3 N, vec3 T)
@@ -221,23 +221,23 @@ vec4 mxc_sample_image(sampler2D image, vec2 uv, vec4 fallback, int uaddress, int
     }
     float param = st.x;
     int param_1 = uaddress;
-    bool _1626 = mxc_address(param, param_1);
+    bool _1642 = mxc_address(param, param_1);
     st.x = param;
-    bool _1629 = !_1626;
-    bool _1640;
-    if (!_1629)
+    bool _1645 = !_1642;
+    bool _1656;
+    if (!_1645)
     {
         float param_2 = st.y;
         int param_3 = vaddress;
-        bool _1636 = mxc_address(param_2, param_3);
+        bool _1652 = mxc_address(param_2, param_3);
         st.y = param_2;
-        _1640 = !_1636;
+        _1656 = !_1652;
     }
     else
     {
-        _1640 = _1629;
+        _1656 = _1645;
     }
-    if (_1640)
+    if (_1656)
     {
         return fallback;
     }
@@ -259,10 +259,10 @@ vec3 mxc_hsv_to_rgb(vec3 hsv)
 vec3 mxc_normalmap(vec3 sampleValue, vec2 scale, vec3 N, vec3 T, vec3 B)
 {
     vec3 v = (sampleValue * 2.0) - vec3(1.0);
-    vec3 _1532 = v;
-    vec2 _1534 = _1532.xy * scale;
-    v.x = _1534.x;
-    v.y = _1534.y;
+    vec3 _1548 = v;
+    vec2 _1550 = _1548.xy * scale;
+    v.x = _1550.x;
+    v.y = _1550.y;
     vec3 param = ((T * v.x) + (B * v.y)) + (N * v.z);
     vec3 param_1 = N;
     return mxc_safe_normalize(param, param_1);
@@ -285,16 +285,16 @@ bool mxc_index_matched(MxcLobe l)
 
 float mxc_lobe_eta(MxcLobe l, bool above)
 {
-    float _1829;
+    float _1845;
     if (above)
     {
-        _1829 = l.eta;
+        _1845 = l.eta;
     }
     else
     {
-        _1829 = 1.0 / l.eta;
+        _1845 = 1.0 / l.eta;
     }
-    return _1829;
+    return _1845;
 }
 
 vec4 mxc_table_at(float mu, float x, float firstRow)
@@ -382,68 +382,68 @@ vec3 mxc_lobe_fresnel(MxcLobe l, float _cosh, bool above)
 
 vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo)
 {
-    bool _2073 = l.kind == 1;
-    bool _2080;
-    if (!_2073)
-    {
-        _2080 = l.kind == 2;
-    }
-    else
-    {
-        _2080 = _2073;
-    }
-    bool _2087;
-    if (!_2080)
-    {
-        _2087 = l.kind == 3;
-    }
-    else
-    {
-        _2087 = _2080;
-    }
-    bool microfacet = _2087;
-    bool _2089 = !microfacet;
+    bool _2089 = l.kind == 1;
     bool _2096;
     if (!_2089)
     {
-        vec2 param = l.alpha;
-        _2096 = mxc_is_delta(param);
+        _2096 = l.kind == 2;
     }
     else
     {
         _2096 = _2089;
     }
-    if (_2096)
+    bool _2103;
+    if (!_2096)
     {
-        return vec3(1.0);
-    }
-    float alpha = sqrt(l.alpha.x * l.alpha.y);
-    bool _2107 = l.kind == 1;
-    bool _2112;
-    if (_2107)
-    {
-        MxcLobe param_1 = l;
-        _2112 = mxc_index_matched(param_1);
+        _2103 = l.kind == 3;
     }
     else
     {
-        _2112 = _2107;
+        _2103 = _2096;
+    }
+    bool microfacet = _2103;
+    bool _2105 = !microfacet;
+    bool _2112;
+    if (!_2105)
+    {
+        vec2 param = l.alpha;
+        _2112 = mxc_is_delta(param);
+    }
+    else
+    {
+        _2112 = _2105;
     }
     if (_2112)
     {
         return vec3(1.0);
     }
-    bool _2117 = l.kind == 1;
-    bool _2124;
-    if (_2117)
+    float alpha = sqrt(l.alpha.x * l.alpha.y);
+    bool _2123 = l.kind == 1;
+    bool _2128;
+    if (_2123)
     {
-        _2124 = (l.mode & 4) == 0;
+        MxcLobe param_1 = l;
+        _2128 = mxc_index_matched(param_1);
     }
     else
     {
-        _2124 = _2117;
+        _2128 = _2123;
     }
-    if (_2124)
+    if (_2128)
+    {
+        return vec3(1.0);
+    }
+    bool _2133 = l.kind == 1;
+    bool _2140;
+    if (_2133)
+    {
+        _2140 = (l.mode & 4) == 0;
+    }
+    else
+    {
+        _2140 = _2133;
+    }
+    if (_2140)
     {
         MxcLobe param_2 = l;
         bool param_3 = wo.z >= 0.0;
@@ -466,16 +466,16 @@ vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo)
 
 float mxc_dielectric_albedo(float mu, float alpha, float eta)
 {
-    float _1779;
+    float _1795;
     if (eta >= 1.0)
     {
-        _1779 = eta;
+        _1795 = eta;
     }
     else
     {
-        _1779 = 1.0 / max(eta, 0.001000000047497451305389404296875);
+        _1795 = 1.0 / max(eta, 0.001000000047497451305389404296875);
     }
-    float e = _1779;
+    float e = _1795;
     float param = mu;
     float param_1 = alpha;
     float param_2 = e;
@@ -494,16 +494,16 @@ float mxc_fon_albedo(float sigma, float mu)
     float param = 1.0 - (c * c);
     float s = mxc_safe_sqrt(param);
     float theta = acos(c);
-    float _1995;
+    float _2011;
     if (c > 9.9999997473787516355514526367188e-05)
     {
-        _1995 = (1.0 - ((s * s) * s)) / c;
+        _2011 = (1.0 - ((s * s) * s)) / c;
     }
     else
     {
-        _1995 = 1.5 * c;
+        _2011 = 1.5 * c;
     }
-    float tail = _1995;
+    float tail = _2011;
     float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875 * s) * tail)) - (0.666666686534881591796875 * s);
     return a + (((sigma * a) * g) * 0.3183098733425140380859375);
 }
@@ -511,40 +511,40 @@ float mxc_fon_albedo(float sigma, float mu)
 vec3 mxc_lobe_albedo_scaled(MxcLobe l, vec3 wo, vec3 ms)
 {
     float mu = clamp(wo.z, 0.0, 1.0);
-    bool _2199 = l.kind == 1;
-    bool _2206;
-    if (!_2199)
+    bool _2215 = l.kind == 1;
+    bool _2222;
+    if (!_2215)
     {
-        _2206 = l.kind == 2;
+        _2222 = l.kind == 2;
     }
     else
     {
-        _2206 = _2199;
+        _2222 = _2215;
     }
-    bool _2213;
-    if (!_2206)
+    bool _2229;
+    if (!_2222)
     {
-        _2213 = l.kind == 3;
+        _2229 = l.kind == 3;
     }
     else
     {
-        _2213 = _2206;
+        _2229 = _2222;
     }
-    if (_2213)
+    if (_2229)
     {
         float alpha = sqrt(l.alpha.x * l.alpha.y);
-        bool _2224 = l.kind == 1;
-        bool _2231;
-        if (_2224)
+        bool _2240 = l.kind == 1;
+        bool _2247;
+        if (_2240)
         {
             vec2 param = l.alpha;
-            _2231 = !mxc_is_delta(param);
+            _2247 = !mxc_is_delta(param);
         }
         else
         {
-            _2231 = _2224;
+            _2247 = _2240;
         }
-        if (_2231)
+        if (_2247)
         {
             float param_1 = mu;
             float param_2 = alpha;
@@ -563,16 +563,16 @@ vec3 mxc_lobe_albedo_scaled(MxcLobe l, vec3 wo, vec3 ms)
         float param_10 = 0.0;
         bool param_11 = true;
         vec3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
-        vec3 _2187;
+        vec3 _2203;
         if (l.kind == 1)
         {
-            _2187 = l.c0;
+            _2203 = l.c0;
         }
         else
         {
-            _2187 = vec3(1.0);
+            _2203 = vec3(1.0);
         }
-        vec3 tint = _2187;
+        vec3 tint = _2203;
         vec2 param_12 = l.alpha;
         if (mxc_is_delta(param_12))
         {
@@ -608,17 +608,17 @@ vec3 mxc_lobe_albedo(MxcLobe l, vec3 wo)
 
 vec3 mxc_lobe_layer_albedo(MxcLobe l, vec3 wo)
 {
-    bool _2338 = l.kind == 9;
-    bool _2345;
-    if (!_2338)
+    bool _2354 = l.kind == 9;
+    bool _2361;
+    if (!_2354)
     {
-        _2345 = l.kind == 10;
+        _2361 = l.kind == 10;
     }
     else
     {
-        _2345 = _2338;
+        _2361 = _2354;
     }
-    if (_2345)
+    if (_2361)
     {
         MxcLobe white = l;
         white.c0 = vec3(1.0);
@@ -812,35 +812,35 @@ void mxc_material_closure(MxcGeometry g, vec3 wo, inout MxcClosure c)
 
 int mxc_light_count()
 {
-    int _3766;
-    if (_240)
+    int _3782;
+    if (_241)
     {
-        _3766 = MXC_LIGHT_COUNT;
+        _3782 = MXC_LIGHT_COUNT;
     }
     else
     {
-        _3766 = mxc_view.counts.x;
+        _3782 = mxc_view.counts.x;
     }
-    return min(_3766, 8);
+    return min(_3782, 8);
 }
 
 int mxc_light_kinds()
 {
-    return _243;
+    return _244;
 }
 
 int mxc_environment_code()
 {
-    int _3758;
-    if (_238)
+    int _3774;
+    if (_239)
     {
-        _3758 = MXC_ENVIRONMENT;
+        _3774 = MXC_ENVIRONMENT;
     }
     else
     {
-        _3758 = mxc_view.counts.y;
+        _3774 = mxc_view.counts.y;
     }
-    return _3758;
+    return _3774;
 }
 
 float mxc_uniform(inout uint seed)
@@ -917,36 +917,36 @@ float mxc_ggx_g2(vec3 wo, vec3 wi, vec2 alpha)
 {
     vec3 param = wo;
     vec2 param_1 = alpha;
-    float _1268 = mxc_ggx_lambda(param, param_1);
+    float _1284 = mxc_ggx_lambda(param, param_1);
     vec3 param_2 = wi;
     vec2 param_3 = alpha;
-    float _1272 = mxc_ggx_lambda(param_2, param_3);
-    return 1.0 / ((1.0 + _1268) + _1272);
+    float _1288 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0 / ((1.0 + _1284) + _1288);
 }
 
 vec3 mxc_microfacet_reflect(MxcLobe l, vec3 wo, vec3 wi)
 {
-    bool _1888 = wo.z <= 0.0;
-    bool _1895;
-    if (!_1888)
+    bool _1904 = wo.z <= 0.0;
+    bool _1911;
+    if (!_1904)
     {
-        _1895 = wi.z <= 0.0;
+        _1911 = wi.z <= 0.0;
     }
     else
     {
-        _1895 = _1888;
+        _1911 = _1904;
     }
-    bool _1902;
-    if (!_1895)
+    bool _1918;
+    if (!_1911)
     {
         vec2 param = l.alpha;
-        _1902 = mxc_is_delta(param);
+        _1918 = mxc_is_delta(param);
     }
     else
     {
-        _1902 = _1895;
+        _1918 = _1911;
     }
-    if (_1902)
+    if (_1918)
     {
         return vec3(0.0);
     }
@@ -961,27 +961,27 @@ vec3 mxc_microfacet_reflect(MxcLobe l, vec3 wo, vec3 wi)
     }
     vec3 param_4 = h;
     vec2 param_5 = l.alpha;
-    float _1928 = mxc_ggx_d(param_4, param_5);
+    float _1944 = mxc_ggx_d(param_4, param_5);
     vec3 param_6 = wo;
     vec3 param_7 = wi;
     vec2 param_8 = l.alpha;
-    return ((f * _1928) * mxc_ggx_g2(param_6, param_7, param_8)) / vec3(4.0 * wo.z);
+    return ((f * _1944) * mxc_ggx_g2(param_6, param_7, param_8)) / vec3(4.0 * wo.z);
 }
 
 float mxc_fon(float sigma, vec3 wo, vec3 wi)
 {
     float a = 1.0 / (1.0 + (0.2877933979034423828125 * sigma));
     float s = dot(wi, wo) - (wi.z * wo.z);
-    float _1949;
+    float _1965;
     if (s > 0.0)
     {
-        _1949 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
+        _1965 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
     }
     else
     {
-        _1949 = 1.0;
+        _1965 = 1.0;
     }
-    float t = _1949;
+    float t = _1965;
     return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375;
 }
 
@@ -1017,17 +1017,17 @@ vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi)
         case 2:
         case 3:
         {
-            bool _2419 = l.kind == 3;
-            bool _2426;
-            if (_2419)
+            bool _2435 = l.kind == 3;
+            bool _2442;
+            if (_2435)
             {
-                _2426 = (l.mode & 1) == 0;
+                _2442 = (l.mode & 1) == 0;
             }
             else
             {
-                _2426 = _2419;
+                _2442 = _2435;
             }
-            if (_2426)
+            if (_2442)
             {
                 return vec3(0.0);
             }
@@ -1038,29 +1038,29 @@ vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi)
         }
         case 4:
         {
-            bool _2435 = wo.z > 0.0;
-            bool _2441;
-            if (_2435)
+            bool _2451 = wo.z > 0.0;
+            bool _2457;
+            if (_2451)
             {
-                _2441 = wi.z > 0.0;
+                _2457 = wi.z > 0.0;
             }
             else
             {
-                _2441 = _2435;
+                _2457 = _2451;
             }
-            vec3 _2371;
-            if (_2441)
+            vec3 _2387;
+            if (_2457)
             {
                 float param_9 = l.p0;
                 vec3 param_10 = wo;
                 vec3 param_11 = wi;
-                _2371 = (l.c0 * mxc_fon(param_9, param_10, param_11)) * wi.z;
+                _2387 = (l.c0 * mxc_fon(param_9, param_10, param_11)) * wi.z;
             }
             else
             {
-                _2371 = vec3(0.0);
+                _2387 = vec3(0.0);
             }
-            return _2371;
+            return _2387;
         }
         default:
         {
@@ -1073,8 +1073,8 @@ float mxc_ggx_g1(vec3 v, vec2 alpha)
 {
     vec3 param = v;
     vec2 param_1 = alpha;
-    float _1254 = mxc_ggx_lambda(param, param_1);
-    return 1.0 / (1.0 + _1254);
+    float _1270 = mxc_ggx_lambda(param, param_1);
+    return 1.0 / (1.0 + _1270);
 }
 
 float mxc_ggx_pdf_vndf(vec3 wo, vec3 m, vec2 alpha)
@@ -1087,8 +1087,8 @@ float mxc_ggx_pdf_vndf(vec3 wo, vec3 m, vec2 alpha)
     vec2 param_1 = alpha;
     vec3 param_2 = m;
     vec2 param_3 = alpha;
-    float _1427 = mxc_ggx_d(param_2, param_3);
-    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0)) * _1427) / wo.z;
+    float _1443 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0)) * _1443) / wo.z;
 }
 
 float mxc_mean(vec3 c)
@@ -1115,26 +1115,26 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi)
                 return 0.0;
             }
             bool above = wo.z > 0.0;
-            vec3 _2465;
+            vec3 _2481;
             if (above)
             {
-                _2465 = wo;
+                _2481 = wo;
             }
             else
             {
-                _2465 = -wo;
+                _2481 = -wo;
             }
-            vec3 o = _2465;
-            vec3 _2467;
+            vec3 o = _2481;
+            vec3 _2483;
             if (above)
             {
-                _2467 = wi;
+                _2483 = wi;
             }
             else
             {
-                _2467 = -wi;
+                _2483 = -wi;
             }
-            vec3 i = _2467;
+            vec3 i = _2483;
             if (i.z > 0.0)
             {
                 vec3 h = normalize(o + i);
@@ -1156,42 +1156,42 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi)
                 vec3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
                 float fr = mxc_mean(param_7);
                 MxcLobe param_8 = l;
-                bool _2567 = mxc_lobe_transmits(param_8);
-                bool _2574;
-                if (_2567)
+                bool _2583 = mxc_lobe_transmits(param_8);
+                bool _2590;
+                if (_2583)
                 {
-                    _2574 = (l.mode & 1) != 0;
+                    _2590 = (l.mode & 1) != 0;
                 }
                 else
                 {
-                    _2574 = _2567;
+                    _2590 = _2583;
                 }
-                return p * (_2574 ? fr : 1.0);
+                return p * (_2590 ? fr : 1.0);
             }
             return 0.0;
         }
         default:
         {
-            bool _2487 = wo.z > 0.0;
-            bool _2493;
-            if (_2487)
+            bool _2503 = wo.z > 0.0;
+            bool _2509;
+            if (_2503)
             {
-                _2493 = wi.z > 0.0;
+                _2509 = wi.z > 0.0;
             }
             else
             {
-                _2493 = _2487;
+                _2509 = _2503;
             }
-            float _2479;
-            if (_2493)
+            float _2495;
+            if (_2509)
             {
-                _2479 = wi.z * 0.3183098733425140380859375;
+                _2495 = wi.z * 0.3183098733425140380859375;
             }
             else
             {
-                _2479 = 0.0;
+                _2495 = 0.0;
             }
-            return _2479;
+            return _2495;
         }
     }
 }
@@ -1202,16 +1202,16 @@ vec3 mxc_ggx_sample_vndf(vec3 wo, inout vec2 alpha, vec2 u)
     alpha = mxc_rough_alpha(param);
     vec3 vh = normalize(vec3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lensq = (vh.x * vh.x) + (vh.y * vh.y);
-    vec3 _1284;
+    vec3 _1300;
     if (lensq > 0.0)
     {
-        _1284 = vec3(-vh.y, vh.x, 0.0) * inversesqrt(lensq);
+        _1300 = vec3(-vh.y, vh.x, 0.0) * inversesqrt(lensq);
     }
     else
     {
-        _1284 = vec3(1.0, 0.0, 0.0);
+        _1300 = vec3(1.0, 0.0, 0.0);
     }
-    vec3 t1 = _1284;
+    vec3 t1 = _1300;
     vec3 t2 = cross(vh, t1);
     float r = sqrt(u.x);
     float phi = 6.283185482025146484375 * u.y;
@@ -1240,94 +1240,94 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u)
         case 3:
         {
             bool above = wo.z > 0.0;
-            vec3 _2586;
+            vec3 _2602;
             if (above)
             {
-                _2586 = wo;
+                _2602 = wo;
             }
             else
             {
-                _2586 = -wo;
+                _2602 = -wo;
             }
-            vec3 o = _2586;
+            vec3 o = _2602;
             if (o.z <= 0.0)
             {
                 return s;
             }
             vec2 param = l.alpha;
             bool delta = mxc_is_delta(param);
-            vec3 _2590;
+            vec3 _2606;
             if (delta)
             {
-                _2590 = vec3(0.0, 0.0, 1.0);
+                _2606 = vec3(0.0, 0.0, 1.0);
             }
             else
             {
                 vec3 param_1 = o;
                 vec2 param_2 = l.alpha;
                 vec2 param_3 = u.xy;
-                vec3 _2691 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
-                _2590 = _2691;
+                vec3 _2707 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2606 = _2707;
             }
-            vec3 m = _2590;
+            vec3 m = _2606;
             float hm = dot(o, m);
-            bool _2698 = l.kind == 1;
-            bool _2705;
-            if (!_2698)
+            bool _2714 = l.kind == 1;
+            bool _2721;
+            if (!_2714)
             {
-                _2705 = l.kind == 3;
+                _2721 = l.kind == 3;
             }
             else
             {
-                _2705 = _2698;
+                _2721 = _2714;
             }
-            bool _2710;
-            if (_2705)
+            bool _2726;
+            if (_2721)
             {
                 MxcLobe param_4 = l;
-                _2710 = mxc_lobe_transmits(param_4);
+                _2726 = mxc_lobe_transmits(param_4);
             }
             else
             {
-                _2710 = _2705;
+                _2726 = _2721;
             }
-            bool transmits = _2710;
-            bool _2713 = l.kind == 2;
-            bool _2721;
-            if (!_2713)
+            bool transmits = _2726;
+            bool _2729 = l.kind == 2;
+            bool _2737;
+            if (!_2729)
             {
-                _2721 = (l.mode & 1) != 0;
+                _2737 = (l.mode & 1) != 0;
             }
             else
             {
-                _2721 = _2713;
+                _2737 = _2729;
             }
-            bool reflects = _2721;
+            bool reflects = _2737;
             MxcLobe param_5 = l;
             float param_6 = max(hm, 0.0);
             bool param_7 = above;
             vec3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
-            float _2603;
+            float _2619;
             if (transmits)
             {
                 vec3 param_8 = f;
-                _2603 = mxc_mean(param_8);
+                _2619 = mxc_mean(param_8);
             }
             else
             {
-                _2603 = 1.0;
+                _2619 = 1.0;
             }
-            float fr = _2603;
-            float _2606;
+            float fr = _2619;
+            float _2622;
             if (transmits)
             {
-                _2606 = reflects ? fr : 0.0;
+                _2622 = reflects ? fr : 0.0;
             }
             else
             {
-                _2606 = 1.0;
+                _2622 = 1.0;
             }
-            float pReflect = _2606;
+            float pReflect = _2622;
             if (u.z < pReflect)
             {
                 vec3 i = reflect(-o, m);
@@ -1335,38 +1335,38 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u)
                 {
                     return s;
                 }
-                vec3 _2608;
+                vec3 _2624;
                 if (above)
                 {
-                    _2608 = i;
+                    _2624 = i;
                 }
                 else
                 {
-                    _2608 = -i;
+                    _2624 = -i;
                 }
-                s.wi = _2608;
+                s.wi = _2624;
                 s.delta = delta;
                 if (delta)
                 {
-                    vec3 _2610;
+                    vec3 _2626;
                     if (l.kind == 1)
                     {
-                        vec3 _2611;
+                        vec3 _2627;
                         if (above)
                         {
-                            _2611 = l.c0;
+                            _2627 = l.c0;
                         }
                         else
                         {
-                            _2611 = vec3(1.0);
+                            _2627 = vec3(1.0);
                         }
-                        _2610 = _2611;
+                        _2626 = _2627;
                     }
                     else
                     {
-                        _2610 = vec3(1.0);
+                        _2626 = vec3(1.0);
                     }
-                    vec3 tint = _2610;
+                    vec3 tint = _2626;
                     s.value = f * tint;
                     s.pdf = pReflect;
                 }
@@ -1534,16 +1534,16 @@ vec3 mxc_env_to_map(vec3 w, float angle)
 
 vec2 mxc_env_uv(vec3 d)
 {
-    float _3468;
+    float _3484;
     if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13)
     {
-        _3468 = 0.5 + (atan(d.x, -d.z) * 0.15915493667125701904296875);
+        _3484 = 0.5 + (atan(d.x, -d.z) * 0.15915493667125701904296875);
     }
     else
     {
-        _3468 = 0.5;
+        _3484 = 0.5;
     }
-    float u = _3468;
+    float u = _3484;
     float v = atan(length(d.xz), d.y) * 0.3183098733425140380859375;
     return vec2(u, v);
 }
@@ -1580,7 +1580,7 @@ uint mxc_env_cell(vec3 d)
 {
     vec3 param = d;
     vec2 uv = mxc_env_uv(param);
-    uvec2 size = max(_221.mxc_env_size.xy, uvec2(1u));
+    uvec2 size = max(_222.mxc_env_size.xy, uvec2(1u));
     uint i = min(uint(max(uv.x, 0.0) * float(size.x)), (size.x - 1u));
     uint j = min(uint(max(uv.y, 0.0) * float(size.y)), (size.y - 1u));
     return (j * size.x) + i;
@@ -1589,36 +1589,36 @@ uint mxc_env_cell(vec3 d)
 float mxc_env_pdf(vec3 d)
 {
     vec3 param = d;
-    return _221.mxc_env_cells[mxc_env_cell(param)].z;
+    return _222.mxc_env_cells[mxc_env_cell(param)].z;
 }
 
 float mxc_power_heuristic(float a, float b)
 {
     float a2 = a * a;
     float b2 = b * b;
-    float _3858;
+    float _3874;
     if ((a2 + b2) > 0.0)
     {
-        _3858 = a2 / (a2 + b2);
+        _3874 = a2 / (a2 + b2);
     }
     else
     {
-        _3858 = 0.0;
+        _3874 = 0.0;
     }
-    return _3858;
+    return _3874;
 }
 
 vec3 mxc_env_sample(vec4 u, out float pdf)
 {
-    uvec2 size = max(_221.mxc_env_size.xy, uvec2(1u));
+    uvec2 size = max(_222.mxc_env_size.xy, uvec2(1u));
     uint n = size.x * size.y;
     uint k = min(uint(u.x * float(n)), (n - 1u));
-    vec4 cell = _221.mxc_env_cells[k];
+    vec4 cell = _222.mxc_env_cells[k];
     if (u.y >= cell.x)
     {
         k = min(floatBitsToUint(cell.y), (n - 1u));
     }
-    pdf = _221.mxc_env_cells[k].z;
+    pdf = _222.mxc_env_cells[k].z;
     uint i = k % size.x;
     uint j = k / size.x;
     float phi = 6.283185482025146484375 * (((float(i) + u.z) / float(size.x)) - 0.5);
@@ -1671,16 +1671,16 @@ vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, inout fl
             p += (c.choice[k] * mxc_lobe_pdf(param_11, param_12, param_13));
         }
     }
-    float _2937;
+    float _2953;
     if (c.choiceTotal > 0.0)
     {
-        _2937 = p / c.choiceTotal;
+        _2953 = p / c.choiceTotal;
     }
     else
     {
-        _2937 = 0.0;
+        _2953 = 0.0;
     }
-    pdf = _2937;
+    pdf = _2953;
     return f;
 }
 
@@ -1697,19 +1697,27 @@ void main()
     {
         N = -N;
     }
+    vec3 param_2 = mxc_view.eye.xyz - vPosition;
+    vec3 param_3 = N;
+    vec3 wo = mxc_safe_normalize(param_2, param_3);
+    float facing = dot(wo, N);
+    if (facing < 0.00999999977648258209228515625)
+    {
+        N = normalize(N + (wo * (0.00999999977648258209228515625 - facing)));
+    }
     float handedness = (vTangent.w < 0.0) ? (-1.0) : 1.0;
-    vec3 param_2 = N;
-    vec3 param_3 = vTangent.xyz;
-    mat3 frame = mxc_frame(param_2, param_3);
+    vec3 param_4 = N;
+    vec3 param_5 = vTangent.xyz;
+    mat3 frame = mxc_frame(param_4, param_5);
     g.N = N;
     g.T = frame[0];
     g.B = frame[1] * handedness;
-    vec3 param_4 = vObjectNormal;
-    vec3 param_5 = vec3(0.0, 0.0, 1.0);
-    g.Nobj = mxc_safe_normalize(param_4, param_5);
-    vec3 param_6 = g.Nobj;
-    vec3 param_7 = vObjectTangent;
-    mat3 objectFrame = mxc_frame(param_6, param_7);
+    vec3 param_6 = vObjectNormal;
+    vec3 param_7 = vec3(0.0, 0.0, 1.0);
+    g.Nobj = mxc_safe_normalize(param_6, param_7);
+    vec3 param_8 = g.Nobj;
+    vec3 param_9 = vObjectTangent;
+    mat3 objectFrame = mxc_frame(param_8, param_9);
     g.Tobj = objectFrame[0];
     g.Bobj = objectFrame[1] * handedness;
     g.uv = vUv;
@@ -1717,9 +1725,6 @@ void main()
     g.objectToWorld = mxc_view.objectToWorld;
     g.frame = mxc_params.frame;
     g.time = mxc_params.time;
-    vec3 param_8 = mxc_view.eye.xyz - vPosition;
-    vec3 param_9 = N;
-    vec3 wo = mxc_safe_normalize(param_8, param_9);
     mxc_texture_footprint = mxc_view.jitter.z;
     if (!(mxc_texture_footprint > 0.0))
     {
@@ -1739,16 +1744,16 @@ void main()
     int lights = mxc_light_count();
     int kinds = mxc_light_kinds();
     bool image = mxc_environment_code() == 3;
-    int _276;
+    int _278;
     if (mxc_environment_code() != 0)
     {
-        _276 = max(mxc_view.counts.w, 1);
+        _278 = max(mxc_view.counts.w, 1);
     }
     else
     {
-        _276 = 0;
+        _278 = 0;
     }
-    int n = _276;
+    int n = _278;
     uint param_17 = uint(mxc_view.counts.z);
     uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
     uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
@@ -1757,54 +1762,54 @@ void main()
     uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
     uint pixel = mxc_pcg(param_21);
     uint param_22 = pixel;
-    float _510 = mxc_uniform(param_22);
+    float _526 = mxc_uniform(param_22);
     pixel = param_22;
     uint param_23 = pixel;
-    float _514 = mxc_uniform(param_23);
+    float _530 = mxc_uniform(param_23);
     pixel = param_23;
     uint param_24 = pixel;
-    float _517 = mxc_uniform(param_24);
+    float _533 = mxc_uniform(param_24);
     pixel = param_24;
     uint param_25 = pixel;
-    float _520 = mxc_uniform(param_25);
+    float _536 = mxc_uniform(param_25);
     pixel = param_25;
-    vec4 shift = vec4(_510, _514, _517, _520);
+    vec4 shift = vec4(_526, _530, _533, _536);
     vec3 sum = vec3(0.0);
-    int _293;
+    int _295;
     MxcSample smp;
-    vec3 _310;
-    vec3 _311;
-    float _316;
+    vec3 _312;
+    vec3 _313;
+    float _318;
     float param_49;
-    int _340;
+    int _342;
     float param_59;
-    float _356;
+    float _358;
     for (int b = 0; b < max(n, int(lights > 0)); b++)
     {
         int batchLights = (b == 0) ? lights : 0;
         if (b < n)
         {
-            _293 = 1 + int(image);
+            _295 = 1 + int(image);
         }
         else
         {
-            _293 = 0;
+            _295 = 0;
         }
-        int batchSamples = _293;
+        int batchSamples = _295;
         uint index = (uint(mxc_view.counts.z) * uint(max(n, 1))) + uint(b);
         uint param_26 = index;
         uint param_27 = 2u;
-        float _560 = mxc_radical_inverse(param_26, param_27);
+        float _576 = mxc_radical_inverse(param_26, param_27);
         uint param_28 = index;
         uint param_29 = 3u;
-        float _563 = mxc_radical_inverse(param_28, param_29);
+        float _579 = mxc_radical_inverse(param_28, param_29);
         uint param_30 = index;
         uint param_31 = 5u;
-        float _565 = mxc_radical_inverse(param_30, param_31);
+        float _581 = mxc_radical_inverse(param_30, param_31);
         uint param_32 = index;
         uint param_33 = 7u;
-        float _567 = mxc_radical_inverse(param_32, param_33);
-        vec4 choice = fract(vec4(_560, _563, _565, _567) + shift);
+        float _583 = mxc_radical_inverse(param_32, param_33);
+        vec4 choice = fract(vec4(_576, _579, _581, _583) + shift);
         smp.valid = false;
         smp.evaluate = false;
         smp.delta = false;
@@ -1823,58 +1828,58 @@ void main()
         {
             if (above)
             {
-                _311 = smp.wi;
+                _313 = smp.wi;
             }
             else
             {
                 vec3 param_37 = -wo;
                 vec3 param_38 = smp.wi;
-                _311 = mxc_exit_direction(param_37, param_38);
+                _313 = mxc_exit_direction(param_37, param_38);
             }
-            vec3 param_39 = _311;
-            _310 = mxc_environment(param_39);
+            vec3 param_39 = _313;
+            _312 = mxc_environment(param_39);
         }
         else
         {
-            _310 = vec3(0.0);
+            _312 = vec3(0.0);
         }
-        vec3 seen = _310;
-        bool _625 = (b < n) && smp.valid;
-        bool _631;
-        if (_625)
+        vec3 seen = _312;
+        bool _641 = (b < n) && smp.valid;
+        bool _647;
+        if (_641)
         {
-            _631 = !smp.evaluate;
+            _647 = !smp.evaluate;
         }
         else
         {
-            _631 = _625;
+            _647 = _641;
         }
-        if (_631)
+        if (_647)
         {
-            bool _636 = image && above;
-            bool _642;
-            if (_636)
+            bool _652 = image && above;
+            bool _658;
+            if (_652)
             {
-                _642 = !smp.delta;
+                _658 = !smp.delta;
             }
             else
             {
-                _642 = _636;
+                _658 = _652;
             }
-            if (_642)
+            if (_658)
             {
                 vec3 param_40 = smp.wi;
                 float param_41 = mxc_view.environment.z;
                 vec3 param_42 = mxc_env_to_map(param_40, param_41);
                 float param_43 = smp.pdf;
                 float param_44 = mxc_env_pdf(param_42);
-                _316 = mxc_power_heuristic(param_43, param_44);
+                _318 = mxc_power_heuristic(param_43, param_44);
             }
             else
             {
-                _316 = 1.0;
+                _318 = 1.0;
             }
-            float w = _316;
+            float w = _318;
             sum += ((smp.weight * w) * seen);
         }
         vec3 m = vec3(0.0);
@@ -1884,33 +1889,33 @@ void main()
         if (image && (b < n))
         {
             uint param_45 = seed;
-            float _678 = mxc_uniform(param_45);
+            float _694 = mxc_uniform(param_45);
             seed = param_45;
             uint param_46 = seed;
-            float _681 = mxc_uniform(param_46);
+            float _697 = mxc_uniform(param_46);
             seed = param_46;
             uint param_47 = seed;
-            float _684 = mxc_uniform(param_47);
+            float _700 = mxc_uniform(param_47);
             seed = param_47;
-            vec4 v = vec4(choice.y, _678, _681, _684);
+            vec4 v = vec4(choice.y, _694, _697, _700);
             vec4 param_48 = v;
-            vec3 _688 = mxc_env_sample(param_48, param_49);
+            vec3 _704 = mxc_env_sample(param_48, param_49);
             lightPdf = param_49;
-            m = _688;
+            m = _704;
             vec3 param_50 = m;
             float param_51 = mxc_view.environment.z;
             imageWi = mxc_env_to_world(param_50, param_51);
-            bool _697 = lightPdf > 0.0;
-            bool _704;
-            if (_697)
+            bool _713 = lightPdf > 0.0;
+            bool _720;
+            if (_713)
             {
-                _704 = dot(imageWi, N) > 0.0;
+                _720 = dot(imageWi, N) > 0.0;
             }
             else
             {
-                _704 = _697;
+                _720 = _713;
             }
-            if (_704)
+            if (_720)
             {
                 vec3 param_52 = imageWi;
                 imageSeen = mxc_environment(param_52);
@@ -1923,38 +1928,38 @@ void main()
             bool use = true;
             if ((n == 0) || (j < batchLights))
             {
-                _340 = 0;
+                _342 = 0;
             }
             else
             {
-                _340 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+                _342 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
             }
-            int strategy = _340;
+            int strategy = _342;
             if (strategy == 0)
             {
                 vec4 light = mxc_view.lightVector[j];
                 incoming = mxc_view.lightRadiance[j].xyz;
-                bool _749 = kinds == 1;
-                bool _762;
-                if (!_749)
+                bool _765 = kinds == 1;
+                bool _778;
+                if (!_765)
                 {
-                    bool _755 = (kinds & 1) != 0;
-                    bool _761;
-                    if (_755)
+                    bool _771 = (kinds & 1) != 0;
+                    bool _777;
+                    if (_771)
                     {
-                        _761 = light.w == 0.0;
+                        _777 = light.w == 0.0;
                     }
                     else
                     {
-                        _761 = _755;
+                        _777 = _771;
                     }
-                    _762 = _761;
+                    _778 = _777;
                 }
                 else
                 {
-                    _762 = _749;
+                    _778 = _765;
                 }
-                bool directional = _762;
+                bool directional = _778;
                 if (directional)
                 {
                     vec3 param_53 = light.xyz;
@@ -1967,17 +1972,17 @@ void main()
                     float d2 = max(dot(d, d), 9.9999999392252902907785028219223e-09);
                     wi = d * inversesqrt(d2);
                     incoming /= vec3(d2);
-                    bool _789 = (kinds & 4) != 0;
-                    bool _795;
-                    if (_789)
+                    bool _805 = (kinds & 4) != 0;
+                    bool _811;
+                    if (_805)
                     {
-                        _795 = light.w == 2.0;
+                        _811 = light.w == 2.0;
                     }
                     else
                     {
-                        _795 = _789;
+                        _811 = _805;
                     }
-                    if (_795)
+                    if (_811)
                     {
                         vec4 spot = mxc_view.lightSpot[j];
                         incoming *= smoothstep(spot.w, mxc_view.lightRadiance[j].w, dot(-wi, spot.xyz));
@@ -1996,26 +2001,26 @@ void main()
                 {
                     wi = imageWi;
                     incoming = imageSeen;
-                    bool _830 = lightPdf > 0.0;
-                    bool _837;
-                    if (_830)
+                    bool _846 = lightPdf > 0.0;
+                    bool _853;
+                    if (_846)
                     {
-                        _837 = dot(imageWi, N) > 0.0;
+                        _853 = dot(imageWi, N) > 0.0;
                     }
                     else
                     {
-                        _837 = _830;
+                        _853 = _846;
                     }
-                    use = _837;
+                    use = _853;
                 }
             }
             MxcClosure param_55 = c;
             vec3 param_56 = wo;
             vec3 param_57 = wi;
             bool param_58 = strategy != 0;
-            vec3 _843 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            vec3 _859 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
             float pdf = param_59;
-            vec3 f = _843;
+            vec3 f = _859;
             if (strategy == 0)
             {
                 radiance += (f * incoming);
@@ -2033,13 +2038,13 @@ void main()
                             vec3 param_62 = mxc_env_to_map(param_60, param_61);
                             float param_63 = pdf;
                             float param_64 = mxc_env_pdf(param_62);
-                            _356 = mxc_power_heuristic(param_63, param_64);
+                            _358 = mxc_power_heuristic(param_63, param_64);
                         }
                         else
                         {
-                            _356 = 1.0;
+                            _358 = 1.0;
                         }
-                        float w_1 = _356;
+                        float w_1 = _358;
                         sum += (((f * w_1) / vec3(pdf)) * incoming);
                     }
                 }

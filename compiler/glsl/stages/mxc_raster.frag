@@ -90,6 +90,16 @@ void main() {
   g.Pobj = vObjectPosition;
   vec3 N = mxc_safe_normalize(vNormal, vec3(0.0, 0.0, 1.0));
   if (!gl_FrontFacing) N = -N;  // a two-sided surface is shaded on the side the camera sees
+  vec3 wo = mxc_safe_normalize(mxc_view.eye.xyz - vPosition, N);
+  // The interpolated normal of a facet the camera sees can still face away from the camera
+  // near a silhouette (the vertex normals lean past the view there). A closure seen from below
+  // its horizon samples by densities that vanish there (the visible normals of a view below the
+  // horizon): a direction drawn with a pdf of 1e-6 weighs f / pdf = 1e12, the fireflies of car
+  // paint's silhouette (issue 39). The shading normal is bent towards the eye just enough that
+  // the eye is above its horizon by MXC_VIEW_HORIZON: N + t wo with dot(wo, N + t wo) = 0.01.
+  const float MXC_VIEW_HORIZON = 0.01;
+  float facing = dot(wo, N);
+  if (facing < MXC_VIEW_HORIZON) N = normalize(N + (MXC_VIEW_HORIZON - facing) * wo);  // |N| >= ~0.01: not zero
   float handedness = vTangent.w < 0.0 ? -1.0 : 1.0;
   mat3 frame = mxc_frame(N, vTangent.xyz);
   g.N = N;
@@ -104,7 +114,6 @@ void main() {
   g.objectToWorld = mxc_view.objectToWorld;
   g.frame = MXC_PARAMETER(mxc_params.frame);  // as every parameter (ExprEmitter, Op::Parameter)
   g.time = MXC_PARAMETER(mxc_params.time);
-  vec3 wo = mxc_safe_normalize(mxc_view.eye.xyz - vPosition, N);
 #ifdef MXC_HAS_TEXTURE_FOOTPRINT
   mxc_texture_footprint = mxc_view.jitter.z;  // set by the renderer; 0 from a host that leaves it: guarded below
   if (!(mxc_texture_footprint > 0.0)) mxc_texture_footprint = 1.0;
