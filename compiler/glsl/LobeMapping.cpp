@@ -25,13 +25,6 @@ void LobeFields::set(std::string_view member, std::string value) {
   throw std::logic_error(fmt::format("MxcLobe has no member '{}'", member));  // the contract and the back end disagree
 }
 
-const std::string& LobeFields::get(std::string_view member) const {
-  for (const auto& [name, v] : values_) {
-    if (name == member) return v;
-  }
-  throw std::logic_error(fmt::format("MxcLobe has no member '{}'", member));
-}
-
 std::string unitNormal(const ClosureValues& values, const ir::Material& m, const ir::Param* normal) {
   if (!normal || !normal->present()) return "g.N";
   const std::string value = values.glsl(normal->value);

@@ -21,8 +21,6 @@ class LobeFields {
  public:
   LobeFields();
   void set(std::string_view member, std::string value);
-  /// A member's GLSL (throws std::logic_error for a member MxcLobe does not have).
-  const std::string& get(std::string_view member) const;
   const std::vector<std::pair<std::string_view, std::string>>& values() const { return values_; }
 
  private:

@@ -1,7 +1,5 @@
 #include "compiler/glsl/SlabWalk.h"
 
-#include <optional>
-
 #include <fmt/format.h>
 
 #include "compiler/glsl/ClosureValues.h"
@@ -23,6 +21,7 @@ using ir::Type;
 constexpr int kNoInterface = 1;
 constexpr int kExit = 2;
 constexpr int kHalfSpace = 4;
+constexpr int kObserved = 8;
 
 /// One layer of a stack, as GLSL values: the interface and the medium under it.
 struct Layer {
@@ -40,8 +39,6 @@ struct Layer {
   std::string etaBare = "1.0";     // and without it
   int coat = -1;                   // index in the stack of the coat whose IOR is above (-1: none or always there)
   std::string emitted = "vec3(0.0)";
-  /// The interface's kind (none for a layer without an interface).
-  std::optional<InterfaceKind> kind;
 };
 
 /// The coat above a layer: the nearest dielectric slab whose IOR is that of the medium under it.
@@ -78,27 +75,15 @@ class Walk {
   }
 
   /// A medium defined by the colour it is observed to have (OpenPBR "Subsurface", eq.
-  /// subsurface_albedo_constraint): its extinction as the IR gives it, its single-scattering
-  /// albedo the one with which this walk returns that colour through the interface over it
+  /// subsurface_albedo_constraint): the layer carries its extinction (sigmaA) and the colour
+  /// (sigmaS) with kObserved, and the walk gives it the single-scattering albedo with which it
+  /// returns that colour through the interface over it as that walk sees it
   /// (mxc_walk_subsurface_albedo; the IR's is van de Hulst's for an index-matched boundary).
-  /// The interface is the slab's own, or for a slab without one (Standard Surface's subsurface)
-  /// the dielectric right above it; its ratio to outside (the slab on its own, as the spec
-  /// defines the colour).
-  void observedMedium(Layer& layer, const Layer* above, const ir::Medium& medium, const ir::Param& colour) {
-    const Id extinction = v_.add(v_.asVec3(v_.slot(medium.slots, Slot::Absorption, v_.vec3(0.0f))),
-                                 v_.asVec3(v_.slot(medium.slots, Slot::Scattering, v_.vec3(0.0f))));
-    const Layer* interface = layer.kind ? &layer : above;
-    const bool dielectric = interface && interface->kind == InterfaceKind::Dielectric;
-    const std::string eta = dielectric ? interface->etaBare : "1.0";
-    const std::string roughness = dielectric ? fmt::format("mxc_walk_roughness({})", interface->lobe.get("alpha")) : "0.0";
-    const Id albedo = keep("a",
-                           v_.local(fmt::format("mxc_walk_subsurface_albedo({}, {}, {}, {})", v_.glsl(v_.asVec3(colour.value)),
-                                                eta, layer.g, roughness),
-                                    Type::Vec3),
-                           colour.origin.location);
-    const Id mu = keep("t", extinction, colour.origin.location);
-    layer.sigmaS = v_.glsl(v_.mul(mu, albedo));
-    layer.sigmaA = v_.glsl(v_.mul(mu, v_.oneMinus(albedo)));
+  void observedMedium(Layer& layer, const ir::Medium& medium, const ir::Param& colour) {
+    layer.sigmaA = v_.glsl(v_.add(v_.asVec3(v_.slot(medium.slots, Slot::Absorption, v_.vec3(0.0f))),
+                                  v_.asVec3(v_.slot(medium.slots, Slot::Scattering, v_.vec3(0.0f)))));
+    layer.sigmaS = fmt::format("clamp({}, 0.0, 1.0)", v_.glsl(v_.asVec3(colour.value)));
+    layer.flags |= kObserved;
   }
 
   Layer interfaceLayer(Index iface, const Coat& coat, const std::string& coverage) {
@@ -114,7 +99,6 @@ class Walk {
       if (f.scatter != ir::ScatterMode::R) mode |= kModeTransmit;
     }
     Layer layer;
-    layer.kind = f.kind;
     layer.lobe = mapInterface(v_, m_, f, above, mode, v_.vec3(1.0f));
     layer.at = f.origin.location;
     if (f.thinFilm.present()) layer.filmAt = f.thinFilm.thickness.origin.location;
@@ -156,7 +140,7 @@ class Walk {
       layer.sigmaA = slot(Slot::Absorption, "vec3(0.0)");
       layer.sigmaS = slot(Slot::Scattering, "vec3(0.0)");
       if (const ir::Param* g = medium->slots.find(Slot::Anisotropy); g && g->present()) layer.g = v_.glsl(g->value);
-      if (const ir::Param* c = medium->slots.find(Slot::ObservedAlbedo); c && c->present()) observedMedium(layer, stack.empty() ? nullptr : &stack.back(), *medium, *c);
+      if (const ir::Param* c = medium->slots.find(Slot::ObservedAlbedo); c && c->present()) observedMedium(layer, *medium, *c);
       const bool scattering = medium->slots.find(Slot::Scattering) != nullptr;
       switch (medium->extent) {
         case ir::Medium::Extent::Bulk:
@@ -257,16 +241,7 @@ class Walk {
     for (size_t k = 0; k < stack.size(); ++k) {
       const Layer& l = stack[k];
       const int i = out_.lobes++;
-      LobeFields lobe = l.lobe;
-      const bool diffuse = l.kind == InterfaceKind::Diffuse || l.kind == InterfaceKind::Burley;
-      if (diffuse && k > 0 && stack[k - 1].kind == InterfaceKind::Dielectric) {
-        // OpenPBR "Glossy-diffuse": the base's colour is what is observed through the gloss
-        // (mxc_walk_gloss_albedo), the gloss on its own: its ratio to outside.
-        const Layer& gloss = stack[k - 1];
-        lobe.set("c0", fmt::format("mxc_walk_gloss_albedo({}, {}, mxc_walk_roughness({}))", lobe.get("c0"), gloss.etaBare,
-                                   gloss.lobe.get("alpha")));
-      }
-      writeLobe(out_.lines, fmt::format("lobe{}", counter_++), i, lobe, l.at, l.filmAt);
+      writeLobe(out_.lines, fmt::format("lobe{}", counter_++), i, l.lobe, l.at, l.filmAt);
       out_.lines.add(fmt::format("  c.sigmaA[{}] = {};", i, l.sigmaA), l.at);
       out_.lines.add(fmt::format("  c.sigmaS[{}] = {};", i, l.sigmaS), l.at);
       out_.lines.add(fmt::format("  c.medium[{}] = vec4({}, {}, clamp({}, 0.0, 1.0), {}.0);", i, l.g, l.thickness,

@@ -21,8 +21,9 @@
 ///   for conductors) or OpenPBR eq. F82 (Kutz et al. 2021); a smooth one (alpha < 1e-4) its
 ///   specular reflection and refraction. Tints: specular_color on the reflection from above,
 ///   the transmission tint on the crossing downwards (the IR's ReflectionTint, TransmissionTint);
-/// - a Lambertian base; under a dielectric, its albedo from base_color by the glossy-diffuse
-///   constraint (WalkTables.h);
+/// - a Lambertian base; right under a dielectric, its albedo from base_color by the glossy-diffuse
+///   constraint for that interface as the walk sees it (WalkTables.h); a subsurface medium's
+///   likewise from subsurface_color;
 /// - fuzz (OpenPBR "Fuzz", Zeltner, Burley and Chiang 2022): reflects E(mu) with colour
 ///   fuzz_color into the LTC lobe, and transmits 1 - E untinted, straight on ("the transmittance
 ///   is gray so the base is not tinted"), from either side;
@@ -134,6 +135,9 @@ struct Interface {
   double cn = 1.0, ck = 0.0;           ///< Conductor: complex IOR
   double f0 = 1.0, f90 = 1.0, exponent = 5.0, tint = 1.0;  ///< F82
   double albedo = 1.0;                 ///< Lambert: rho; Fuzz: colour
+  /// Lambert: `albedo` is the colour observed through a dielectric right above (an IR diffuse
+  /// lobe, as OpenPBR's base_color), turned into rho by each walk; else rho itself.
+  bool observed = false;
   double roughness = 0.5;              ///< Fuzz
   bool delta() const { return std::max(ax, ay) < 1e-4; }
 };
@@ -143,6 +147,10 @@ struct Layer {
   enum class Under { Nothing, Finite, HalfSpace, ClearBulk } under = Under::Nothing;
   double sigmaA = 0.0, sigmaS = 0.0, g = 0.0, thickness = 0.0;
   double coverage = 1.0;
+  /// A medium given by its observed colour (subsurface): its extinction and the colour, turned
+  /// into sigma_a and sigma_s by each walk for the interface over it as that walk sees it.
+  bool observed = false;
+  double extinction = 0.0, colour = 0.0;
 };
 
 struct Stack {
@@ -232,6 +240,7 @@ class Builder {
         if (slot(m_, f.slots, Slot::Roughness, 0, 0.0) != 0.0) throw std::runtime_error("SlabReference: rough diffuse");
         i.kind = Interface::Kind::Lambert;
         i.albedo = slot(m_, f.slots, Slot::Color, c_, 1.0);
+        i.observed = true;
         break;
       case InterfaceKind::Sheen:
         if (f.sheenModel != ir::SheenModel::Zeltner) throw std::runtime_error("SlabReference: sheen other than fuzz");
@@ -268,16 +277,9 @@ class Builder {
           break;
       }
       if (const ir::Param* observed = v.slots.find(ir::Slot::ObservedAlbedo); observed && observed->present()) {
-        // A colour defined by what is observed through the slab's own interface (WalkTables.h).
-        // The slab's own interface, or for one without (Standard Surface) the one right above.
-        const double colour = param(m_, *observed, c_, 0.8);
-        const Interface& f = top || stack.empty() ? layer.top : stack.back().top;
-        const bool dielectric = f.kind == Interface::Kind::Dielectric;
-        const double omega = glsl::walkSubsurfaceAlbedo(colour, dielectric ? f.n : 1.0, layer.g,
-                                                        dielectric ? std::sqrt(std::sqrt(f.ax * f.ay)) : 0.0);
-        const double extinction = layer.sigmaA + layer.sigmaS;
-        layer.sigmaS = extinction * omega;
-        layer.sigmaA = extinction * (1.0 - omega);
+        layer.observed = true;
+        layer.colour = std::clamp(param(m_, *observed, c_, 0.8), 0.0, 1.0);
+        layer.extinction = layer.sigmaA + layer.sigmaS;
       }
       if (thinWall) {
         // OpenPBR "Thin-walled mode": the sheet, then the same interface seen from inside, under
@@ -327,14 +329,6 @@ class Builder {
 
   void emit(std::vector<Layer> stack, double weight) {
     if (weight == 0.0 || stack.empty()) return;
-    // OpenPBR "Glossy-diffuse": a Lambertian right under a dielectric has the albedo that the
-    // observed base_color asks for through that interface on its own (WalkTables.h).
-    for (size_t k = 1; k < stack.size(); ++k) {
-      const Interface& above = stack[k - 1].top;
-      if (stack[k].top.kind == Interface::Kind::Lambert && above.kind == Interface::Kind::Dielectric) {
-        stack[k].top.albedo = glsl::walkGlossAlbedo(stack[k].top.albedo, above.n, std::sqrt(std::sqrt(above.ax * above.ay)));
-      }
-    }
     out_.stacks.push_back({std::move(stack), weight});
   }
 
@@ -524,20 +518,42 @@ inline Albedo albedo(const Stack& stack, Vec wo, int walks, uint64_t seed) {
   for (int walk = 0; walk < walks; ++walk) {
     // The layers this walk sees, and each dielectric's IOR ratio below them: over the nearest
     // dielectric above (OpenPBR "Coat": the coat's IOR is the medium over the base).
-    std::vector<const Layer*> seen;
+    std::vector<Layer> seen;
     for (const Layer& l : stack.layers) {
-      if (l.coverage >= 1.0 || u() < l.coverage) seen.push_back(&l);
+      if (l.coverage >= 1.0 || u() < l.coverage) seen.push_back(l);
     }
     const int n = static_cast<int>(seen.size());
     std::vector<double> eta(n, 1.0);
     double above = 1.0;  // the absolute IOR of the medium above the current layer
     for (int k = 0; k < n; ++k) {
-      const Interface& f = seen[k]->top;
+      const Interface& f = seen[k].top;
       if (f.kind != Interface::Kind::Dielectric) continue;
       eta[k] = f.relative ? f.n : f.n / above;
       above = f.relative ? above * f.n : f.n;
     }
     if (n == 0) continue;
+    // The colours defined by what is observed through the dielectric over them, as this walk
+    // sees it (its ratio under whatever coat is there: an index-matched coat takes the
+    // dielectric's place, and its internal reflections darken what is under it, OpenPBR
+    // "Darkening"): a Lambertian right under a dielectric (eq. glossy_diffuse_albedo_constraint)
+    // and a medium under its own interface or, without one, under the dielectric right above
+    // (eq. subsurface_albedo_constraint). WalkTables.h.
+    auto roughness = [](const Interface& f) { return std::sqrt(std::sqrt(f.ax * f.ay)); };
+    for (int k = 0; k < n; ++k) {
+      Layer& l = seen[k];
+      const bool under = k > 0 && seen[k - 1].top.kind == Interface::Kind::Dielectric;
+      if (l.top.kind == Interface::Kind::Lambert && l.top.observed && under) {
+        l.top.albedo = glsl::walkGlossAlbedo(l.top.albedo, eta[k - 1], roughness(seen[k - 1].top));
+      }
+      if (l.observed) {
+        const int over = l.top.kind != Interface::Kind::None ? k : (under ? k - 1 : -1);
+        const bool dielectric = over >= 0 && seen[over].top.kind == Interface::Kind::Dielectric;
+        const double omega = glsl::walkSubsurfaceAlbedo(l.colour, dielectric ? eta[over] : 1.0, l.g,
+                                                        dielectric ? roughness(seen[over].top) : 0.0);
+        l.sigmaS = l.extinction * omega;
+        l.sigmaA = l.extinction - l.sigmaS;
+      }
+    }
     Vec w = -wo;
     int k = 0;
     bool inMedium = false;
@@ -548,7 +564,7 @@ inline Albedo albedo(const Stack& stack, Vec wo, int walks, uint64_t seed) {
         cut += 1.0;
         break;
       }
-      const Layer& layer = *seen[k];
+      const Layer& layer = seen[k];
       if (!inMedium) {
         // At interface k, arriving from above (w.z < 0) or from below.
         Outcome o = scatter(layer.top, eta[k], w, u);
@@ -561,7 +577,7 @@ inline Albedo albedo(const Stack& stack, Vec wo, int walks, uint64_t seed) {
           }
           k -= 1;  // up into the medium above, at its bottom
           inMedium = true;
-          z = seen[k]->under == Layer::Under::Finite ? seen[k]->thickness : 0.0;
+          z = seen[k].under == Layer::Under::Finite ? seen[k].thickness : 0.0;
           continue;
         }
         if (layer.under == Layer::Under::ClearBulk) {

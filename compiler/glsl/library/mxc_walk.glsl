@@ -49,11 +49,12 @@ int mxc_walk_budget = MXC_WALK_BUDGET;
 const int MXC_LAYER_NO_INTERFACE = 1;  // a plane without an interface (it carries emission only)
 const int MXC_LAYER_EXIT = 2;          // under the interface is a clear bulk: light entering it is transmitted
 const int MXC_LAYER_HALF_SPACE = 4;    // under the interface is a scattering bulk without a bottom
+const int MXC_LAYER_OBSERVED = 8;      // the medium is given by its extinction (sigmaA) and observed colour (sigmaS)
 
 struct MxcClosure {
   MxcLobe lobes[MXC_MAX_LOBES];  // each layer's interface; stacks are runs of layers, top first
-  vec3 sigmaA[MXC_MAX_LOBES];    // the medium under the interface: absorption (1/length)
-  vec3 sigmaS[MXC_MAX_LOBES];    // scattering (1/length)
+  vec3 sigmaA[MXC_MAX_LOBES];    // the medium under the interface: absorption (1/length); MXC_LAYER_OBSERVED: extinction
+  vec3 sigmaS[MXC_MAX_LOBES];    // scattering (1/length); MXC_LAYER_OBSERVED: the observed colour
   vec4 medium[MXC_MAX_LOBES];    // x: Henyey-Greenstein g, y: thickness (0: none), z: coverage, w: flags
   vec4 ior[MXC_MAX_LOBES];       // x: eta with the coat layer z present, y: eta without it (z < 0: x always)
   vec3 emitted[MXC_MAX_LOBES];   // radiance emitted upwards at the top of the layer
@@ -367,8 +368,8 @@ float mxc_walk_roughness(vec2 alpha) { return sqrt(sqrt(max(alpha.x * alpha.y, 0
 // back of the light the gloss lets in. Under a lossless interface a Lambertian of albedo rho
 // returns exactly rho (1 - r_i) / (1 - rho r_i) of it, r_i the interface's reflectance from
 // inside under cosine-distributed light (the tables' gloss rows, for the walk's rough
-// interface), so rho = C / (1 - r_i + C r_i). `eta`: the interface's own ratio to outside (the
-// slab on its own, as the spec defines it), `roughness`: its mxc_walk_roughness.
+// interface), so rho = C / (1 - r_i + C r_i). `eta`: the interface's IOR ratio, `roughness`:
+// its mxc_walk_roughness.
 vec3 mxc_walk_gloss_albedo(vec3 C, float eta, float roughness) {
   float ri = mxc_walk_texel(clamp(roughness, 0.0, 1.0) * float(MXC_TABLE_SIZE - 1), float(MXC_WALK_GLOSS_ROW) + mxc_walk_eta_index(eta));
   vec3 c = clamp(C, 0.0, 1.0);
@@ -476,6 +477,24 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
     if (present[k] && c.lobes[layer[k]].kind == MXC_LOBE_DIELECTRIC) nAbove *= max(eta[k], 1e-3);
     nAbs[k] = nAbove;
   }
+  // A medium given by its observed colour (MXC_LAYER_OBSERVED: subsurface) gets the albedo that
+  // returns that colour through the dielectric over it as this walk sees it: its own interface,
+  // or for a layer without one the one right above (OpenPBR "Subsurface"; with a coat of the
+  // same IOR over it that interface vanishes, and the coat darkens it as OpenPBR "Darkening"
+  // says). Computed once per walk: one such layer per stack.
+  int observed = -1;
+  vec3 observedA = vec3(0.0), observedS = vec3(0.0);
+  for (int k = 0; k < n; ++k) {
+    if (observed >= 0 || (int(c.medium[layer[k]].w) & MXC_LAYER_OBSERVED) == 0) continue;
+    observed = k;
+    int above = present[k] ? k : k - 1;
+    bool dielectric = above >= 0 && present[above] && c.lobes[layer[above]].kind == MXC_LOBE_DIELECTRIC;
+    vec3 albedo = mxc_walk_subsurface_albedo(c.sigmaS[layer[k]], dielectric ? eta[above] : 1.0, c.medium[layer[k]].x,
+                                             dielectric ? mxc_walk_roughness(c.lobes[layer[above]].alpha) : 0.0);
+    vec3 extinction = c.sigmaA[layer[k]];
+    observedS = extinction * albedo;
+    observedA = extinction - observedS;
+  }
 
   // The chain from wi (eval): for each medium m, the direction chainDir[m] light leaves it in
   // towards wi (the reverse of the chain's) and the chain's weight chainW[m] where the chain
@@ -567,6 +586,13 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
       if (present[k]) {
         MxcLobe l = c.lobes[lk];
         l.eta = eta[k];
+        if ((l.kind == MXC_LOBE_EON || l.kind == MXC_LOBE_DIFFUSE || l.kind == MXC_LOBE_BURLEY) && k > 0 && present[k - 1] &&
+            c.lobes[layer[k - 1]].kind == MXC_LOBE_DIELECTRIC) {
+          // OpenPBR "Glossy-diffuse": base_color is observed through the gloss right above, as
+          // this walk sees it (under a coat of its IOR, the gloss vanishes and the coat darkens
+          // the base, as OpenPBR "Darkening" says).
+          l.c0 = mxc_walk_gloss_albedo(l.c0, eta[k - 1], mxc_walk_roughness(c.lobes[layer[k - 1]].alpha));
+        }
         // Where this vertex connects to: the medium above for wi above, the one below for wi below.
         vec3 conn = vec3(0.0);
         vec3 factor = vec3(0.0);
@@ -636,8 +662,8 @@ MxcWalk mxc_walk(MxcClosure c, int stack, vec3 wo, vec3 wi, int mode) {
     bool halfSpace = (int(c.medium[lk].w) & MXC_LAYER_HALF_SPACE) != 0;
     float cosw = max(abs(dot(w, ns)), 1e-4);
     float toBoundary = down ? (halfSpace ? 1e30 : (max(d, 0.0) - z) / cosw) : z / cosw;
-    vec3 sa = c.sigmaA[lk];
-    vec3 ss = c.sigmaS[lk];
+    vec3 sa = k == observed ? observedA : c.sigmaA[lk];
+    vec3 ss = k == observed ? observedS : c.sigmaS[lk];
     vec3 st = sa + ss;
     bool scatters = d != 0.0 && max(ss.x, max(ss.y, ss.z)) > 0.0;
     if (d != 0.0 && !scatters) {
