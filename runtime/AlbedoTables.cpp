@@ -1,6 +1,7 @@
 #include "runtime/AlbedoTables.h"
 
 #include <cstring>
+#include <stdexcept>
 
 #include "compiler/glsl/AlbedoTableFile.h"
 #include "compiler/glsl/Contract.h"
@@ -11,6 +12,15 @@ namespace mxc::rt {
 
 AlbedoTables::AlbedoTables(VulkanContext& context) : context_(context) {
   values_ = glsl::committedAlbedoTables().texels;  // throws when the committed file is unusable
+  image_ = context.createImage(glsl::kTableSize, glsl::kTableHeight, VK_FORMAT_R32G32B32A32_SFLOAT,
+                               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+  context.upload(image_, values_.data());
+}
+
+AlbedoTables::AlbedoTables(VulkanContext& context, std::vector<float> texels) : context_(context), values_(std::move(texels)) {
+  if (values_.size() != size_t{glsl::kTableSize} * glsl::kTableHeight * 4) {
+    throw std::invalid_argument("the albedo tables are not kTableSize x kTableHeight RGBA");
+  }
   image_ = context.createImage(glsl::kTableSize, glsl::kTableHeight, VK_FORMAT_R32G32B32A32_SFLOAT,
                                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
   context.upload(image_, values_.data());

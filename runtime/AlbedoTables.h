@@ -17,6 +17,10 @@ class AlbedoTables {
   /// The committed tables, uploaded. Throws when the embedded file does not hold tables of the
   /// contract's size (a build from a tree whose tables were not regenerated).
   explicit AlbedoTables(VulkanContext& context);
+  /// Given tables (kTableSize x kTableHeight RGBA; throws std::invalid_argument otherwise): for
+  /// the generator of the walk's tables, which measures with the computed tables and no walk
+  /// rows (tools/GenerateWalkFits.cpp), so that a change of their layout needs no committed file.
+  AlbedoTables(VulkanContext& context, std::vector<float> texels);
   ~AlbedoTables();
   AlbedoTables(const AlbedoTables&) = delete;
   AlbedoTables& operator=(const AlbedoTables&) = delete;

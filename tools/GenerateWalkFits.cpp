@@ -8,6 +8,9 @@
 //   cosines, integrated to the cosine-weighted R_out; energy balance in diffuse light (a
 //   lossless reciprocal interface passes as much flux in as out) gives the reflectance from
 //   inside, r_i = 1 - (1 - R_out) / eta^2;
+// - the same reflectance, all orders of scattering, on the albedo tables' grid of view cosine
+//   and roughness, which the balanced tier's multiple-scattering compensation divides between
+//   reflection and transmission by;
 // - a semi-infinite medium of single-scattering albedo omega and Henyey-Greenstein g under that
 //   interface, at normal incidence: the albedo E, and E_spec with omega = 0 (nothing comes back
 //   out of the medium), so that C = (E - E_spec) / (1 - E_spec); over van de Hulst's
@@ -19,8 +22,10 @@
 // that nothing of the tables being made enters the measurement; the inputs are uniforms of one
 // shader per kind, set between estimates.
 //
-//   mxc-generate-walk-fits measure [FOLDER]   measure (about 20 minutes on lavapipe) and tabulate
-//   mxc-generate-walk-fits fit [FOLDER]       tabulate again from FOLDER/mxc_walk_measurements.csv
+//   mxc-generate-walk-fits measure [FOLDER]        measure (about 40 minutes on lavapipe) and tabulate
+//   mxc-generate-walk-fits measure-KIND [FOLDER]   measure one kind again (interface, reflectance,
+//                                                  medium), keep the others from the CSV, tabulate
+//   mxc-generate-walk-fits fit [FOLDER]            tabulate again from FOLDER/mxc_walk_measurements.csv
 //
 // FOLDER defaults to generated/tables. Run by scripts/generate-tables --walk; outputs are committed.
 
@@ -40,13 +45,13 @@
 
 #include "compiler/common/OutputFile.h"
 #include "compiler/driver/Compiler.h"
+#include "compiler/glsl/AlbedoTableFile.h"
+#include "compiler/glsl/Bindings.h"
+#include "compiler/glsl/WalkTables.h"
 #include "runtime/AlbedoTables.h"
 #include "runtime/Evaluator.h"
 #include "runtime/MaterialResources.h"
 #include "runtime/VulkanContext.h"
-#include "compiler/glsl/AlbedoTableFile.h"
-#include "compiler/glsl/Bindings.h"
-#include "compiler/glsl/WalkTables.h"
 #include "tools/WalkFits.h"
 
 namespace {
@@ -127,6 +132,40 @@ std::vector<WalkMeasurement> measureInterfaces(mxc::rt::VulkanContext& context, 
   return out;
 }
 
+/// The walk's rough dielectric seen from outside, on the tables' grid: per IOR ratio and
+/// roughness x = j / (n - 1) (alpha = x^2), its reflectance, all orders, at the view cosines
+/// mu = (i / (n - 1))^2 (10^-4 for i = 0), the albedo tables' axes.
+std::vector<WalkMeasurement> measureReflectance(mxc::rt::VulkanContext& context, const mxc::rt::AlbedoTables& tables) {
+  WalkFurnace furnace(context, tables,
+                      input("transmission_weight", "float", "1") + input("specular_ior", "float", "1.5") +
+                          input("specular_roughness", "float", "0.5"),
+                      {"specular_ior", "specular_roughness"});
+  const uint32_t n = mxc::glsl::kTableSize;
+  std::vector<double> mus;
+  std::vector<glm::vec3> views;
+  for (uint32_t i = 0; i < n; ++i) {
+    const double mu = std::max(std::pow(double(i) / (n - 1.0), 2.0), 1e-4);
+    mus.push_back(mu);
+    views.push_back(glm::vec3(float(std::sqrt(1.0 - mu * mu)), 0.0f, float(mu)));
+  }
+  std::vector<WalkMeasurement> out;
+  uint32_t seed = 40000;  // apart from the interface measurements' seeds
+  for (uint32_t e = 0; e < mxc::glsl::kWalkEtaSteps; ++e) {
+    const double eta = mxc::glsl::walkTableEta(int(e));
+    for (uint32_t j = 0; j < n; ++j) {
+      const double roughness = double(j) / (n - 1.0);
+      furnace.set("specular_ior", {float(eta)});
+      furnace.set("specular_roughness", {float(roughness)});
+      std::vector<mxc::rt::Albedo> a = furnace.estimate(views, mxc::tools::kReflectanceSamples, seed++);
+      for (size_t k = 0; k < views.size(); ++k) {
+        out.push_back({"reflectance", eta, 0.0, roughness, mus[k], a[k].reflected.x, a[k].reflectedError.x});
+      }
+    }
+    std::fprintf(stderr, "  reflectance eta %.3f measured\n", eta);
+  }
+  return out;
+}
+
 /// The walk's semi-infinite medium under the dielectric at normal incidence, three values of s
 /// per estimate (one per colour channel: the flights are the same, mu_t = 1 on every channel).
 std::vector<WalkMeasurement> measureMedia(mxc::rt::VulkanContext& context, const mxc::rt::AlbedoTables& tables) {
@@ -179,27 +218,22 @@ std::vector<WalkMeasurement> measureMedia(mxc::rt::VulkanContext& context, const
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
   const std::filesystem::path folder = argc > 2 ? argv[2] : "generated/tables";
-  if (mode != "measure" && mode != "fit") {
-    std::fprintf(stderr, "usage: mxc-generate-walk-fits measure|fit [FOLDER]\n");
+  // measure: every kind; measure-KIND: that kind again, the others kept from the CSV.
+  const std::vector<std::string> kinds = {"interface", "reflectance", "medium"};
+  std::vector<std::string> measure;
+  if (mode == "measure") {
+    measure = kinds;
+  } else if (mode.rfind("measure-", 0) == 0 &&
+             std::find(kinds.begin(), kinds.end(), mode.substr(8)) != kinds.end()) {
+    measure = {mode.substr(8)};
+  } else if (mode != "fit") {
+    std::fprintf(stderr, "usage: mxc-generate-walk-fits measure|measure-interface|measure-reflectance|measure-medium|fit [FOLDER]\n");
     return 2;
   }
   try {
     const std::filesystem::path csv = folder / "mxc_walk_measurements.csv";
     std::vector<WalkMeasurement> measurements;
-    if (mode == "measure") {
-      mxc::rt::VulkanContext context;
-      mxc::rt::AlbedoTables tables(context);
-      std::fprintf(stderr, "measuring the reference walk on %s...\n", context.deviceName().c_str());
-      measurements = measureInterfaces(context, tables);
-      std::vector<WalkMeasurement> media = measureMedia(context, tables);
-      measurements.insert(measurements.end(), media.begin(), media.end());
-      std::filesystem::create_directories(folder);
-      if (std::optional<std::string> error = mxc::writeOutputFile(csv, mxc::tools::writeMeasurements(measurements))) {
-        std::fprintf(stderr, "error: %s\n", error->c_str());
-        return 3;
-      }
-      std::fprintf(stderr, "wrote %s\n", csv.c_str());
-    } else {
+    if (measure.size() != kinds.size()) {
       std::ifstream in(csv, std::ios::binary);
       if (!in) {
         std::fprintf(stderr, "error: cannot read %s\n", csv.c_str());
@@ -207,7 +241,30 @@ int main(int argc, char** argv) {
       }
       std::stringstream text;
       text << in.rdbuf();
-      measurements = mxc::tools::readMeasurements(text.str());
+      for (WalkMeasurement& m : mxc::tools::readMeasurements(text.str())) {
+        if (std::find(measure.begin(), measure.end(), m.kind) == measure.end()) measurements.push_back(std::move(m));
+      }
+    }
+    if (!measure.empty()) {
+      mxc::rt::VulkanContext context;
+      // The computed tables and no walk rows: the measurements' shaders read none (a translucent
+      // base: no observed colour), and the committed walk rows may be of another layout.
+      std::vector<float> texels = mxc::glsl::committedComputedTables().texels;
+      texels.resize(size_t{mxc::glsl::kTableSize} * mxc::glsl::kTableHeight * 4, 0.0f);
+      mxc::rt::AlbedoTables tables(context, std::move(texels));
+      std::fprintf(stderr, "measuring the reference walk on %s...\n", context.deviceName().c_str());
+      for (const std::string& kind : measure) {
+        std::vector<WalkMeasurement> more = kind == "interface"     ? measureInterfaces(context, tables)
+                                            : kind == "reflectance" ? measureReflectance(context, tables)
+                                                                    : measureMedia(context, tables);
+        measurements.insert(measurements.end(), more.begin(), more.end());
+      }
+      std::filesystem::create_directories(folder);
+      if (std::optional<std::string> error = mxc::writeOutputFile(csv, mxc::tools::writeMeasurements(measurements))) {
+        std::fprintf(stderr, "error: %s\n", error->c_str());
+        return 3;
+      }
+      std::fprintf(stderr, "wrote %s\n", csv.c_str());
     }
     mxc::glsl::AlbedoTableData tables;
     tables.width = mxc::glsl::kTableSize;

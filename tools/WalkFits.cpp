@@ -183,6 +183,39 @@ std::vector<float> walkTableRows(const std::vector<WalkMeasurement>& measurement
     }
   }
 
+  // The reflectance rows, as measured; and, as a check of both, the cosine-weighted integral of
+  // each row (trapezoids in sqrt(mu), the grid's own axis) against the Gauss-Legendre one.
+  double worstIntegral = 0.0;
+  for (uint32_t e = 0; e < glsl::kWalkEtaSteps; ++e) {
+    const double eta = glsl::walkTableEta(int(e));
+    for (uint32_t j = 0; j < n; ++j) {
+      const double roughness = double(j) / (n - 1.0);
+      const uint32_t row = glsl::kWalkReflectanceRow - glsl::kWalkGlossRow + e * n + j;
+      uint32_t found = 0;
+      for (const WalkMeasurement& m : measurements) {
+        if (m.kind != "reflectance" || !near(m.eta, eta) || !near(m.roughness, roughness)) continue;
+        for (uint32_t i = 0; i < n; ++i) {
+          if (near(m.x, std::max(std::pow(double(i) / (n - 1.0), 2.0), 1e-4))) {
+            texel(row, i)[0] = float(m.value);
+            ++found;
+          }
+        }
+      }
+      if (found != n) {
+        throw std::runtime_error(fmt::format("reflectance eta {} roughness {}: {} of {} views measured", eta, roughness,
+                                             found, n));
+      }
+      // R_out = integral_0^1 R 2 mu dmu = integral_0^1 R(u^2) 4 u^3 du.
+      double integral = 0.0;
+      for (uint32_t i = 0; i + 1 < n; ++i) {
+        const double u0 = double(i) / (n - 1.0), u1 = double(i + 1) / (n - 1.0);
+        integral += 0.5 * (u1 - u0) * (texel(row, i)[0] * 4.0 * u0 * u0 * u0 + texel(row, i + 1)[0] * 4.0 * u1 * u1 * u1);
+      }
+      worstIntegral = std::max(worstIntegral, std::abs(integral - texel(e, j)[1]));
+    }
+  }
+  std::fprintf(stderr, "  reflectance rows: their integral is the Gauss-Legendre one within %.5f\n", worstIntegral);
+
   // The medium rows: per (roughness, g, eta), the curve C(s) fitted, then s at C = i / (n - 1).
   double worstChi2 = 0.0, sumChi2 = 0.0;
   int curves = 0;

@@ -15,11 +15,12 @@ namespace mxc::tools {
 /// kMediumSteps, and walks per estimate.
 inline constexpr int kInterfaceViews = 16;
 inline constexpr unsigned kInterfaceSamples = 8192;
+inline constexpr unsigned kReflectanceSamples = 8192;
 inline constexpr int kMediumSteps = 15;
 inline constexpr unsigned kMediumSamples = 32768;
 
-/// One estimate: `kind` "interface" (x: the view cosine, value: the reflectance) or "medium"
-/// (x: van de Hulst's s, value: the albedo at normal incidence).
+/// One estimate: `kind` "interface" or "reflectance" (x: the view cosine, value: the
+/// reflectance) or "medium" (x: van de Hulst's s, value: the albedo at normal incidence).
 struct WalkMeasurement {
   std::string kind;
   double eta = 1.0;

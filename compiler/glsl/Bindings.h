@@ -45,7 +45,11 @@ constexpr uint32_t kWalkGlossRow = kComputedTableHeight;
 /// One row per (roughness, g, eta), eta fastest: across, the observed colour C = k /
 /// (kTableSize - 1); .x van de Hulst's s of the medium the walk needs for that colour.
 constexpr uint32_t kWalkMediumRow = kWalkGlossRow + kWalkEtaSteps;
-constexpr uint32_t kWalkTableRows = kWalkEtaSteps + kWalkEtaSteps * kWalkAnisotropySteps * kWalkRoughnessSteps;
+/// kTableSize rows per eta (eta slowest): down, the roughness x = k / (kTableSize - 1) (alpha =
+/// x^2); across, the view cosine mu = (k / (kTableSize - 1))^2, as the albedo tables; .x the
+/// walk's dielectric's reflectance from outside, every order of scattering.
+constexpr uint32_t kWalkReflectanceRow = kWalkMediumRow + kWalkEtaSteps * kWalkAnisotropySteps * kWalkRoughnessSteps;
+constexpr uint32_t kWalkTableRows = kWalkReflectanceRow + kWalkEtaSteps * kTableSize - kWalkGlossRow;
 
 /// The tables image: kTableSize wide, the computed tables then the walk's.
 constexpr uint32_t kTableHeight = kComputedTableHeight + kWalkTableRows;

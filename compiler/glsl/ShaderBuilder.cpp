@@ -306,13 +306,14 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   w.line(fmt::format("#define MXC_TABLE_SIZE {}", kTableSize));
   w.line(fmt::format("#define MXC_TABLE_SLICES {}", kTableSlices));
   w.line(fmt::format("#define MXC_TABLE_HEIGHT {}", kTableHeight));
-  if (options.accuracy == Accuracy::Reference) {
+  if (options.accuracy != Accuracy::Fast) {
     // The walk's tables (Bindings.h, WalkTables.h): their grids and first rows.
     w.line(fmt::format("#define MXC_WALK_ETA_STEPS {}", kWalkEtaSteps));
     w.line(fmt::format("#define MXC_WALK_ANISOTROPY_STEPS {}", kWalkAnisotropySteps));
     w.line(fmt::format("#define MXC_WALK_ROUGHNESS_STEPS {}", kWalkRoughnessSteps));
     w.line(fmt::format("#define MXC_WALK_GLOSS_ROW {}", kWalkGlossRow));
     w.line(fmt::format("#define MXC_WALK_MEDIUM_ROW {}", kWalkMediumRow));
+    w.line(fmt::format("#define MXC_WALK_REFLECTANCE_ROW {}", kWalkReflectanceRow));
   }
   if (kind == ShaderKind::Raster) w.line("#define MXC_STAGE_RASTER");
   if (options.subgroups) w.line("#define MXC_SUBGROUPS");

@@ -94,6 +94,7 @@ struct MxcClosure
     spvUnsafeArray<float, 2> choice;
     float choiceTotal;
     spvUnsafeArray<float3, 2> ms;
+    spvUnsafeArray<float, 2> msT;
     float3 emission;
     float3 transparency;
 };
@@ -146,14 +147,14 @@ struct MxcEnvDistribution
 
 constant int MXC_ENVIRONMENT_tmp [[function_constant(0)]];
 constant int MXC_ENVIRONMENT = is_function_constant_defined(MXC_ENVIRONMENT_tmp) ? MXC_ENVIRONMENT_tmp : -1;
-constant bool _210 = (MXC_ENVIRONMENT != (-1));
+constant bool _216 = (MXC_ENVIRONMENT != (-1));
 constant int MXC_LIGHT_COUNT_tmp [[function_constant(1)]];
 constant int MXC_LIGHT_COUNT = is_function_constant_defined(MXC_LIGHT_COUNT_tmp) ? MXC_LIGHT_COUNT_tmp : -1;
-constant bool _212 = (MXC_LIGHT_COUNT != (-1));
+constant bool _218 = (MXC_LIGHT_COUNT != (-1));
 constant int MXC_LIGHT_KINDS_tmp [[function_constant(2)]];
 constant int MXC_LIGHT_KINDS = is_function_constant_defined(MXC_LIGHT_KINDS_tmp) ? MXC_LIGHT_KINDS_tmp : -1;
-constant bool _214 = (MXC_LIGHT_KINDS != (-1));
-constant int _215 = _214 ? MXC_LIGHT_KINDS : 7;
+constant bool _220 = (MXC_LIGHT_KINDS != (-1));
+constant int _221 = _220 ? MXC_LIGHT_KINDS : 7;
 
 struct main0_out
 {
@@ -175,16 +176,16 @@ static inline __attribute__((always_inline))
 float3 mxc_safe_normalize(thread const float3& v, thread const float3& fallback)
 {
     float l2 = dot(v, v);
-    float3 _944;
+    float3 _950;
     if (l2 > 9.9999996826552253889678874634872e-21)
     {
-        _944 = v * rsqrt(l2);
+        _950 = v * rsqrt(l2);
     }
     else
     {
-        _944 = fallback;
+        _950 = fallback;
     }
-    return _944;
+    return _950;
 }
 
 static inline __attribute__((always_inline))
@@ -238,25 +239,30 @@ bool mxc_index_matched(thread const MxcLobe& l)
 }
 
 static inline __attribute__((always_inline))
-float mxc_lobe_eta(thread const MxcLobe& l, thread const bool& above)
+bool mxc_dielectric_walk_split(thread const MxcLobe& l, thread const float3& wo)
 {
-    float _1625;
-    if (above)
+    bool _2004 = wo.z <= 0.0;
+    bool _2011;
+    if (!_2004)
     {
-        _1625 = l.eta;
+        _2011 = l.eta < 1.0;
     }
     else
     {
-        _1625 = 1.0 / l.eta;
+        _2011 = _2004;
     }
-    return _1625;
+    if (_2011)
+    {
+        return false;
+    }
+    return true;
 }
 
 static inline __attribute__((always_inline))
 float4 mxc_table_at(thread const float& mu, thread const float& x, thread const float& firstRow, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
     float2 t = (float2(sqrt(fast::clamp(mu, 0.0, 1.0)), fast::clamp(x, 0.0, 1.0)) * 31.0) + float2(0.5);
-    return mxc_tables.sample(mxc_tablesSmplr, float2(t.x / 32.0, (firstRow + t.y) / 1654.0), level(0.0));
+    return mxc_tables.sample(mxc_tablesSmplr, float2(t.x / 32.0, (firstRow + t.y) / 2070.0), level(0.0));
 }
 
 static inline __attribute__((always_inline))
@@ -274,6 +280,71 @@ float4 mxc_dielectric_table(thread const float& mu, thread const float& alpha, t
     float param_5 = 32.0 * (2.0 + s0);
     float4 b = mxc_table_at(param_3, param_4, param_5, mxc_tables, mxc_tablesSmplr);
     return mix(a, b, float4(s - s0));
+}
+
+static inline __attribute__((always_inline))
+float mxc_dielectric_albedo(thread const float& mu, thread const float& alpha, thread const float& eta, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    float _1581;
+    if (eta >= 1.0)
+    {
+        _1581 = eta;
+    }
+    else
+    {
+        _1581 = 1.0 / fast::max(eta, 0.001000000047497451305389404296875);
+    }
+    float e = _1581;
+    float param = mu;
+    float param_1 = alpha;
+    float param_2 = e;
+    return mxc_dielectric_table(param, param_1, param_2, mxc_tables, mxc_tablesSmplr).x;
+}
+
+static inline __attribute__((always_inline))
+float mxc_walk_eta_index(thread const float& eta)
+{
+    float e = fast::max(eta, 1.0);
+    return fast::clamp((2.0 * (e - 1.0)) / (e + 1.0), 0.0, 1.0) * 12.0;
+}
+
+static inline __attribute__((always_inline))
+float mxc_walk_texel(thread const float& column, thread const float& row, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    float2 t = float2(column + 0.5, row + 0.5) / float2(32.0, 2070.0);
+    return mxc_tables.sample(mxc_tablesSmplr, t, level(0.0)).x;
+}
+
+static inline __attribute__((always_inline))
+float mxc_walk_reflectance(thread const float& mu, thread const float& alpha, thread const float& eta, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    float param = eta;
+    float fe = mxc_walk_eta_index(param);
+    float e0 = fast::min(floor(fe), 11.0);
+    float column = sqrt(fast::clamp(mu, 0.0, 1.0)) * 31.0;
+    float row = 1654.0 + (sqrt(fast::clamp(alpha, 0.0, 1.0)) * 31.0);
+    float param_1 = column;
+    float param_2 = row + (e0 * 32.0);
+    float a = mxc_walk_texel(param_1, param_2, mxc_tables, mxc_tablesSmplr);
+    float param_3 = column;
+    float param_4 = row + ((e0 + 1.0) * 32.0);
+    float b = mxc_walk_texel(param_3, param_4, mxc_tables, mxc_tablesSmplr);
+    return mix(a, b, fe - e0);
+}
+
+static inline __attribute__((always_inline))
+float mxc_lobe_eta(thread const MxcLobe& l, thread const bool& above)
+{
+    float _1709;
+    if (above)
+    {
+        _1709 = l.eta;
+    }
+    else
+    {
+        _1709 = 1.0 / l.eta;
+    }
+    return _1709;
 }
 
 static inline __attribute__((always_inline))
@@ -345,145 +416,139 @@ float3 mxc_lobe_fresnel(thread const MxcLobe& l, thread const float& _cosh, thre
 static inline __attribute__((always_inline))
 float3 mxc_lobe_ms_scale(thread const MxcLobe& l, thread const float3& wo, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
-    bool _1938 = l.kind == 1;
-    bool _1945;
-    if (!_1938)
+    bool _2135 = l.kind == 1;
+    bool _2142;
+    if (!_2135)
     {
-        _1945 = l.kind == 2;
+        _2142 = l.kind == 2;
     }
     else
     {
-        _1945 = _1938;
+        _2142 = _2135;
     }
-    bool _1952;
-    if (!_1945)
+    bool _2149;
+    if (!_2142)
     {
-        _1952 = l.kind == 3;
+        _2149 = l.kind == 3;
     }
     else
     {
-        _1952 = _1945;
+        _2149 = _2142;
     }
-    bool microfacet = _1952;
-    bool _1954 = !microfacet;
-    bool _1961;
-    if (!_1954)
+    bool microfacet = _2149;
+    bool _2151 = !microfacet;
+    bool _2158;
+    if (!_2151)
     {
         float2 param = l.alpha;
-        _1961 = mxc_is_delta(param);
+        _2158 = mxc_is_delta(param);
     }
     else
     {
-        _1961 = _1954;
+        _2158 = _2151;
     }
-    if (_1961)
+    if (_2158)
     {
         return float3(1.0);
     }
     float alpha = sqrt(l.alpha.x * l.alpha.y);
-    bool _1972 = l.kind == 1;
-    bool _1977;
-    if (_1972)
+    bool _2169 = l.kind == 1;
+    bool _2174;
+    if (_2169)
     {
         MxcLobe param_1 = l;
-        _1977 = mxc_index_matched(param_1);
+        _2174 = mxc_index_matched(param_1);
     }
     else
     {
-        _1977 = _1972;
+        _2174 = _2169;
     }
-    if (_1977)
+    if (_2174)
     {
         return float3(1.0);
     }
-    bool _1982 = l.kind == 1;
-    bool _1989;
-    if (_1982)
+    bool _2179 = l.kind == 1;
+    bool _2186;
+    if (_2179)
     {
-        _1989 = (l.mode & 4) == 0;
+        _2186 = (l.mode & 4) == 0;
     }
     else
     {
-        _1989 = _1982;
+        _2186 = _2179;
     }
-    if (_1989)
+    if (_2186)
     {
         MxcLobe param_2 = l;
-        bool param_3 = wo.z >= 0.0;
-        float param_4 = abs(wo.z);
-        float param_5 = alpha;
-        float param_6 = mxc_lobe_eta(param_2, param_3);
-        float e = mxc_dielectric_albedo_rt(param_4, param_5, param_6, mxc_tables, mxc_tablesSmplr);
+        float3 param_3 = wo;
+        if (mxc_dielectric_walk_split(param_2, param_3))
+        {
+            float param_4 = wo.z;
+            float param_5 = alpha;
+            float param_6 = l.eta;
+            float rss = mxc_dielectric_albedo(param_4, param_5, param_6, mxc_tables, mxc_tablesSmplr);
+            float param_7 = wo.z;
+            float param_8 = alpha;
+            float param_9 = l.eta;
+            return float3(fast::clamp(mxc_walk_reflectance(param_7, param_8, param_9, mxc_tables, mxc_tablesSmplr) / fast::max(rss, 9.9999997473787516355514526367188e-05), 1.0, 20.0));
+        }
+        MxcLobe param_10 = l;
+        bool param_11 = wo.z >= 0.0;
+        float param_12 = abs(wo.z);
+        float param_13 = alpha;
+        float param_14 = mxc_lobe_eta(param_10, param_11);
+        float e = mxc_dielectric_albedo_rt(param_12, param_13, param_14, mxc_tables, mxc_tablesSmplr);
         float3 k = float3(1.0 / fast::max(e, 0.0500000007450580596923828125));
         return k;
     }
-    float param_7 = fast::max(wo.z, 0.0);
-    float param_8 = alpha;
-    float2 ab = mxc_split_sum(param_7, param_8, mxc_tables, mxc_tablesSmplr);
+    float param_15 = fast::max(wo.z, 0.0);
+    float param_16 = alpha;
+    float2 ab = mxc_split_sum(param_15, param_16, mxc_tables, mxc_tablesSmplr);
     float e_1 = ab.x + ab.y;
-    MxcLobe param_9 = l;
-    float param_10 = 1.0;
-    bool param_11 = true;
-    return float3(1.0) + ((mxc_lobe_fresnel(param_9, param_10, param_11) * (1.0 - e_1)) / float3(fast::max(e_1, 0.0500000007450580596923828125)));
-}
-
-static inline __attribute__((always_inline))
-float mxc_dielectric_albedo(thread const float& mu, thread const float& alpha, thread const float& eta, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
-{
-    float _1575;
-    if (eta >= 1.0)
-    {
-        _1575 = eta;
-    }
-    else
-    {
-        _1575 = 1.0 / fast::max(eta, 0.001000000047497451305389404296875);
-    }
-    float e = _1575;
-    float param = mu;
-    float param_1 = alpha;
-    float param_2 = e;
-    return mxc_dielectric_table(param, param_1, param_2, mxc_tables, mxc_tablesSmplr).x;
+    MxcLobe param_17 = l;
+    float param_18 = 1.0;
+    bool param_19 = true;
+    return float3(1.0) + ((mxc_lobe_fresnel(param_17, param_18, param_19) * (1.0 - e_1)) / float3(fast::max(e_1, 0.0500000007450580596923828125)));
 }
 
 static inline __attribute__((always_inline))
 float3 mxc_lobe_albedo_scaled(thread const MxcLobe& l, thread const float3& wo, thread const float3& ms, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
     float mu = fast::clamp(wo.z, 0.0, 1.0);
-    bool _2062 = l.kind == 1;
-    bool _2069;
-    if (!_2062)
+    bool _2281 = l.kind == 1;
+    bool _2288;
+    if (!_2281)
     {
-        _2069 = l.kind == 2;
+        _2288 = l.kind == 2;
     }
     else
     {
-        _2069 = _2062;
+        _2288 = _2281;
     }
-    bool _2076;
-    if (!_2069)
+    bool _2295;
+    if (!_2288)
     {
-        _2076 = l.kind == 3;
+        _2295 = l.kind == 3;
     }
     else
     {
-        _2076 = _2069;
+        _2295 = _2288;
     }
-    if (_2076)
+    if (_2295)
     {
         float alpha = sqrt(l.alpha.x * l.alpha.y);
-        bool _2087 = l.kind == 1;
-        bool _2094;
-        if (_2087)
+        bool _2306 = l.kind == 1;
+        bool _2313;
+        if (_2306)
         {
             float2 param = l.alpha;
-            _2094 = !mxc_is_delta(param);
+            _2313 = !mxc_is_delta(param);
         }
         else
         {
-            _2094 = _2087;
+            _2313 = _2306;
         }
-        if (_2094)
+        if (_2313)
         {
             float param_1 = mu;
             float param_2 = alpha;
@@ -502,16 +567,16 @@ float3 mxc_lobe_albedo_scaled(thread const MxcLobe& l, thread const float3& wo, 
         float param_10 = 0.0;
         bool param_11 = true;
         float3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
-        float3 _2052;
+        float3 _2271;
         if (l.kind == 1)
         {
-            _2052 = l.c0;
+            _2271 = l.c0;
         }
         else
         {
-            _2052 = float3(1.0);
+            _2271 = float3(1.0);
         }
-        float3 tint = _2052;
+        float3 tint = _2271;
         float2 param_12 = l.alpha;
         if (mxc_is_delta(param_12))
         {
@@ -543,17 +608,17 @@ float3 mxc_lobe_albedo(thread const MxcLobe& l, thread const float3& wo, texture
 static inline __attribute__((always_inline))
 float3 mxc_lobe_layer_albedo(thread const MxcLobe& l, thread const float3& wo, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
-    bool _2189 = l.kind == 9;
-    bool _2196;
-    if (!_2189)
+    bool _2408 = l.kind == 9;
+    bool _2415;
+    if (!_2408)
     {
-        _2196 = l.kind == 10;
+        _2415 = l.kind == 10;
     }
     else
     {
-        _2196 = _2189;
+        _2415 = _2408;
     }
-    if (_2196)
+    if (_2415)
     {
         MxcLobe white = l;
         white.c0 = float3(1.0);
@@ -564,6 +629,69 @@ float3 mxc_lobe_layer_albedo(thread const MxcLobe& l, thread const float3& wo, t
     MxcLobe param_2 = l;
     float3 param_3 = wo;
     return mxc_lobe_albedo(param_2, param_3, mxc_tables, mxc_tablesSmplr);
+}
+
+static inline __attribute__((always_inline))
+float mxc_lobe_ms_transmit(thread const MxcLobe& l, thread const float3& wo, thread const float3& ms, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
+{
+    bool _2037 = l.kind != 1;
+    bool _2044;
+    if (!_2037)
+    {
+        float2 param = l.alpha;
+        _2044 = mxc_is_delta(param);
+    }
+    else
+    {
+        _2044 = _2037;
+    }
+    bool _2050;
+    if (!_2044)
+    {
+        MxcLobe param_1 = l;
+        _2050 = mxc_index_matched(param_1);
+    }
+    else
+    {
+        _2050 = _2044;
+    }
+    bool _2058;
+    if (!_2050)
+    {
+        _2058 = (l.mode & 4) != 0;
+    }
+    else
+    {
+        _2058 = _2050;
+    }
+    bool _2066;
+    if (!_2058)
+    {
+        MxcLobe param_2 = l;
+        float3 param_3 = wo;
+        _2066 = !mxc_dielectric_walk_split(param_2, param_3);
+    }
+    else
+    {
+        _2066 = _2058;
+    }
+    if (_2066)
+    {
+        return ms.x;
+    }
+    float alpha = sqrt(l.alpha.x * l.alpha.y);
+    float param_4 = wo.z;
+    float param_5 = alpha;
+    float param_6 = l.eta;
+    float rss = mxc_dielectric_albedo(param_4, param_5, param_6, mxc_tables, mxc_tablesSmplr);
+    float param_7 = wo.z;
+    float param_8 = alpha;
+    float param_9 = l.eta;
+    float tss = mxc_dielectric_albedo_rt(param_7, param_8, param_9, mxc_tables, mxc_tablesSmplr) - rss;
+    float param_10 = wo.z;
+    float param_11 = alpha;
+    float param_12 = l.eta;
+    return fast::clamp((1.0 - mxc_walk_reflectance(param_10, param_11, param_12, mxc_tables, mxc_tablesSmplr)) / fast::max(tss, 0.0500000007450580596923828125), 1.0, 20.0);
 }
 
 static inline __attribute__((always_inline))
@@ -594,6 +722,7 @@ void mxc_closure_prepare(thread MxcClosure& c, thread const float3& wo, texture2
     {
         MxcLobe l = c.lobes[k];
         c.ms[k] = float3(1.0);
+        c.msT[k] = 1.0;
         c.choice[k] = 0.0;
         if (all(l.weight == float3(0.0)))
         {
@@ -610,7 +739,11 @@ void mxc_closure_prepare(thread MxcClosure& c, thread const float3& wo, texture2
         MxcLobe param_6 = l;
         float3 param_7 = o;
         float3 param_8 = c.ms[k];
-        c.choice[k] = mxc_lobe_choice(param_6, param_7, param_8, mxc_tables, mxc_tablesSmplr);
+        c.msT[k] = mxc_lobe_ms_transmit(param_6, param_7, param_8, mxc_tables, mxc_tablesSmplr);
+        MxcLobe param_9 = l;
+        float3 param_10 = o;
+        float3 param_11 = c.ms[k];
+        c.choice[k] = mxc_lobe_choice(param_9, param_10, param_11, mxc_tables, mxc_tablesSmplr);
         c.choiceTotal += c.choice[k];
     }
 }
@@ -674,37 +807,37 @@ void mxc_material_closure(thread const MxcGeometry& g, thread const float3& wo, 
 static inline __attribute__((always_inline))
 int mxc_light_count(constant MxcView& mxc_view)
 {
-    int _3422;
-    if (_212)
+    int _3671;
+    if (_218)
     {
-        _3422 = MXC_LIGHT_COUNT;
+        _3671 = MXC_LIGHT_COUNT;
     }
     else
     {
-        _3422 = mxc_view.counts.x;
+        _3671 = mxc_view.counts.x;
     }
-    return min(_3422, 8);
+    return min(_3671, 8);
 }
 
 static inline __attribute__((always_inline))
 int mxc_light_kinds()
 {
-    return _215;
+    return _221;
 }
 
 static inline __attribute__((always_inline))
 int mxc_environment_code(constant MxcView& mxc_view)
 {
-    int _3414;
-    if (_210)
+    int _3663;
+    if (_216)
     {
-        _3414 = MXC_ENVIRONMENT;
+        _3663 = MXC_ENVIRONMENT;
     }
     else
     {
-        _3414 = mxc_view.counts.y;
+        _3663 = mxc_view.counts.y;
     }
-    return _3414;
+    return _3663;
 }
 
 static inline __attribute__((always_inline))
@@ -795,37 +928,37 @@ float mxc_ggx_g2(thread const float3& wo, thread const float3& wi, thread const 
 {
     float3 param = wo;
     float2 param_1 = alpha;
-    float _1248 = mxc_ggx_lambda(param, param_1);
+    float _1254 = mxc_ggx_lambda(param, param_1);
     float3 param_2 = wi;
     float2 param_3 = alpha;
-    float _1252 = mxc_ggx_lambda(param_2, param_3);
-    return 1.0 / ((1.0 + _1248) + _1252);
+    float _1258 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0 / ((1.0 + _1254) + _1258);
 }
 
 static inline __attribute__((always_inline))
 float3 mxc_microfacet_reflect(thread const MxcLobe& l, thread const float3& wo, thread const float3& wi)
 {
-    bool _1684 = wo.z <= 0.0;
-    bool _1691;
-    if (!_1684)
+    bool _1768 = wo.z <= 0.0;
+    bool _1775;
+    if (!_1768)
     {
-        _1691 = wi.z <= 0.0;
+        _1775 = wi.z <= 0.0;
     }
     else
     {
-        _1691 = _1684;
+        _1775 = _1768;
     }
-    bool _1698;
-    if (!_1691)
+    bool _1782;
+    if (!_1775)
     {
         float2 param = l.alpha;
-        _1698 = mxc_is_delta(param);
+        _1782 = mxc_is_delta(param);
     }
     else
     {
-        _1698 = _1691;
+        _1782 = _1775;
     }
-    if (_1698)
+    if (_1782)
     {
         return float3(0.0);
     }
@@ -840,11 +973,11 @@ float3 mxc_microfacet_reflect(thread const MxcLobe& l, thread const float3& wo, 
     }
     float3 param_4 = h;
     float2 param_5 = l.alpha;
-    float _1724 = mxc_ggx_d(param_4, param_5);
+    float _1808 = mxc_ggx_d(param_4, param_5);
     float3 param_6 = wo;
     float3 param_7 = wi;
     float2 param_8 = l.alpha;
-    return ((f * _1724) * mxc_ggx_g2(param_6, param_7, param_8)) / float3(4.0 * wo.z);
+    return ((f * _1808) * mxc_ggx_g2(param_6, param_7, param_8)) / float3(4.0 * wo.z);
 }
 
 static inline __attribute__((always_inline))
@@ -852,16 +985,16 @@ float mxc_fon(thread const float& sigma, thread const float3& wo, thread const f
 {
     float a = 1.0 / (1.0 + (0.2877933979034423828125 * sigma));
     float s = dot(wi, wo) - (wi.z * wo.z);
-    float _1745;
+    float _1829;
     if (s > 0.0)
     {
-        _1745 = fast::max(fast::max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
+        _1829 = fast::max(fast::max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
     }
     else
     {
-        _1745 = 1.0;
+        _1829 = 1.0;
     }
-    float t = _1745;
+    float t = _1829;
     return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375;
 }
 
@@ -873,16 +1006,16 @@ float mxc_fon_albedo(thread const float& sigma, thread const float& mu)
     float param = 1.0 - (c * c);
     float s = mxc_safe_sqrt(param);
     float theta = acos(c);
-    float _1791;
+    float _1875;
     if (c > 9.9999997473787516355514526367188e-05)
     {
-        _1791 = (1.0 - ((s * s) * s)) / c;
+        _1875 = (1.0 - ((s * s) * s)) / c;
     }
     else
     {
-        _1791 = 1.5 * c;
+        _1875 = 1.5 * c;
     }
-    float tail = _1791;
+    float tail = _1875;
     float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875 * s) * tail)) - (0.666666686534881591796875 * s);
     return a + (((sigma * a) * g) * 0.3183098733425140380859375);
 }
@@ -941,17 +1074,17 @@ float3 mxc_lobe_eval(thread const MxcLobe& l, thread const float3& wo, thread co
         case 2:
         case 3:
         {
-            bool _2271 = l.kind == 3;
-            bool _2278;
-            if (_2271)
+            bool _2490 = l.kind == 3;
+            bool _2497;
+            if (_2490)
             {
-                _2278 = (l.mode & 1) == 0;
+                _2497 = (l.mode & 1) == 0;
             }
             else
             {
-                _2278 = _2271;
+                _2497 = _2490;
             }
-            if (_2278)
+            if (_2497)
             {
                 return float3(0.0);
             }
@@ -962,30 +1095,30 @@ float3 mxc_lobe_eval(thread const MxcLobe& l, thread const float3& wo, thread co
         }
         case 5:
         {
-            bool _2287 = wo.z > 0.0;
-            bool _2293;
-            if (_2287)
+            bool _2506 = wo.z > 0.0;
+            bool _2512;
+            if (_2506)
             {
-                _2293 = wi.z > 0.0;
+                _2512 = wi.z > 0.0;
             }
             else
             {
-                _2293 = _2287;
+                _2512 = _2506;
             }
-            float3 _2222;
-            if (_2293)
+            float3 _2441;
+            if (_2512)
             {
                 float3 param_9 = l.c0;
                 float param_10 = l.p0;
                 float3 param_11 = wo;
                 float3 param_12 = wi;
-                _2222 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
+                _2441 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
             }
             else
             {
-                _2222 = float3(0.0);
+                _2441 = float3(0.0);
             }
-            return _2222;
+            return _2441;
         }
         default:
         {
@@ -999,8 +1132,8 @@ float mxc_ggx_g1(thread const float3& v, thread const float2& alpha)
 {
     float3 param = v;
     float2 param_1 = alpha;
-    float _1234 = mxc_ggx_lambda(param, param_1);
-    return 1.0 / (1.0 + _1234);
+    float _1240 = mxc_ggx_lambda(param, param_1);
+    return 1.0 / (1.0 + _1240);
 }
 
 static inline __attribute__((always_inline))
@@ -1014,8 +1147,8 @@ float mxc_ggx_pdf_vndf(thread const float3& wo, thread const float3& m, thread c
     float2 param_1 = alpha;
     float3 param_2 = m;
     float2 param_3 = alpha;
-    float _1407 = mxc_ggx_d(param_2, param_3);
-    return ((mxc_ggx_g1(param, param_1) * fast::max(dot(wo, m), 0.0)) * _1407) / wo.z;
+    float _1413 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * fast::max(dot(wo, m), 0.0)) * _1413) / wo.z;
 }
 
 static inline __attribute__((always_inline))
@@ -1045,26 +1178,26 @@ float mxc_lobe_pdf(thread const MxcLobe& l, thread const float3& wo, thread cons
                 return 0.0;
             }
             bool above = wo.z > 0.0;
-            float3 _2316;
+            float3 _2535;
             if (above)
             {
-                _2316 = wo;
+                _2535 = wo;
             }
             else
             {
-                _2316 = -wo;
+                _2535 = -wo;
             }
-            float3 o = _2316;
-            float3 _2318;
+            float3 o = _2535;
+            float3 _2537;
             if (above)
             {
-                _2318 = wi;
+                _2537 = wi;
             }
             else
             {
-                _2318 = -wi;
+                _2537 = -wi;
             }
-            float3 i = _2318;
+            float3 i = _2537;
             if (i.z > 0.0)
             {
                 float3 h = fast::normalize(o + i);
@@ -1086,42 +1219,42 @@ float mxc_lobe_pdf(thread const MxcLobe& l, thread const float3& wo, thread cons
                 float3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
                 float fr = mxc_mean(param_7);
                 MxcLobe param_8 = l;
-                bool _2418 = mxc_lobe_transmits(param_8);
-                bool _2425;
-                if (_2418)
+                bool _2637 = mxc_lobe_transmits(param_8);
+                bool _2644;
+                if (_2637)
                 {
-                    _2425 = (l.mode & 1) != 0;
+                    _2644 = (l.mode & 1) != 0;
                 }
                 else
                 {
-                    _2425 = _2418;
+                    _2644 = _2637;
                 }
-                return p * (_2425 ? fr : 1.0);
+                return p * (_2644 ? fr : 1.0);
             }
             return 0.0;
         }
         default:
         {
-            bool _2338 = wo.z > 0.0;
-            bool _2344;
-            if (_2338)
+            bool _2557 = wo.z > 0.0;
+            bool _2563;
+            if (_2557)
             {
-                _2344 = wi.z > 0.0;
+                _2563 = wi.z > 0.0;
             }
             else
             {
-                _2344 = _2338;
+                _2563 = _2557;
             }
-            float _2330;
-            if (_2344)
+            float _2549;
+            if (_2563)
             {
-                _2330 = wi.z * 0.3183098733425140380859375;
+                _2549 = wi.z * 0.3183098733425140380859375;
             }
             else
             {
-                _2330 = 0.0;
+                _2549 = 0.0;
             }
-            return _2330;
+            return _2549;
         }
     }
 }
@@ -1133,16 +1266,16 @@ float3 mxc_ggx_sample_vndf(thread const float3& wo, thread float2& alpha, thread
     alpha = mxc_rough_alpha(param);
     float3 vh = fast::normalize(float3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lensq = (vh.x * vh.x) + (vh.y * vh.y);
-    float3 _1264;
+    float3 _1270;
     if (lensq > 0.0)
     {
-        _1264 = float3(-vh.y, vh.x, 0.0) * rsqrt(lensq);
+        _1270 = float3(-vh.y, vh.x, 0.0) * rsqrt(lensq);
     }
     else
     {
-        _1264 = float3(1.0, 0.0, 0.0);
+        _1270 = float3(1.0, 0.0, 0.0);
     }
-    float3 t1 = _1264;
+    float3 t1 = _1270;
     float3 t2 = cross(vh, t1);
     float r = sqrt(u.x);
     float phi = 6.283185482025146484375 * u.y;
@@ -1172,94 +1305,94 @@ MxcLobeSample mxc_lobe_sample(thread const MxcLobe& l, thread const float3& wo, 
         case 3:
         {
             bool above = wo.z > 0.0;
-            float3 _2437;
+            float3 _2656;
             if (above)
             {
-                _2437 = wo;
+                _2656 = wo;
             }
             else
             {
-                _2437 = -wo;
+                _2656 = -wo;
             }
-            float3 o = _2437;
+            float3 o = _2656;
             if (o.z <= 0.0)
             {
                 return s;
             }
             float2 param = l.alpha;
             bool delta = mxc_is_delta(param);
-            float3 _2441;
+            float3 _2660;
             if (delta)
             {
-                _2441 = float3(0.0, 0.0, 1.0);
+                _2660 = float3(0.0, 0.0, 1.0);
             }
             else
             {
                 float3 param_1 = o;
                 float2 param_2 = l.alpha;
                 float2 param_3 = u.xy;
-                float3 _2542 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
-                _2441 = _2542;
+                float3 _2761 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2660 = _2761;
             }
-            float3 m = _2441;
+            float3 m = _2660;
             float hm = dot(o, m);
-            bool _2549 = l.kind == 1;
-            bool _2556;
-            if (!_2549)
+            bool _2768 = l.kind == 1;
+            bool _2775;
+            if (!_2768)
             {
-                _2556 = l.kind == 3;
+                _2775 = l.kind == 3;
             }
             else
             {
-                _2556 = _2549;
+                _2775 = _2768;
             }
-            bool _2561;
-            if (_2556)
+            bool _2780;
+            if (_2775)
             {
                 MxcLobe param_4 = l;
-                _2561 = mxc_lobe_transmits(param_4);
+                _2780 = mxc_lobe_transmits(param_4);
             }
             else
             {
-                _2561 = _2556;
+                _2780 = _2775;
             }
-            bool transmits = _2561;
-            bool _2564 = l.kind == 2;
-            bool _2572;
-            if (!_2564)
+            bool transmits = _2780;
+            bool _2783 = l.kind == 2;
+            bool _2791;
+            if (!_2783)
             {
-                _2572 = (l.mode & 1) != 0;
+                _2791 = (l.mode & 1) != 0;
             }
             else
             {
-                _2572 = _2564;
+                _2791 = _2783;
             }
-            bool reflects = _2572;
+            bool reflects = _2791;
             MxcLobe param_5 = l;
             float param_6 = fast::max(hm, 0.0);
             bool param_7 = above;
             float3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
-            float _2454;
+            float _2673;
             if (transmits)
             {
                 float3 param_8 = f;
-                _2454 = mxc_mean(param_8);
+                _2673 = mxc_mean(param_8);
             }
             else
             {
-                _2454 = 1.0;
+                _2673 = 1.0;
             }
-            float fr = _2454;
-            float _2457;
+            float fr = _2673;
+            float _2676;
             if (transmits)
             {
-                _2457 = reflects ? fr : 0.0;
+                _2676 = reflects ? fr : 0.0;
             }
             else
             {
-                _2457 = 1.0;
+                _2676 = 1.0;
             }
-            float pReflect = _2457;
+            float pReflect = _2676;
             if (u.z < pReflect)
             {
                 float3 i = reflect(-o, m);
@@ -1267,38 +1400,38 @@ MxcLobeSample mxc_lobe_sample(thread const MxcLobe& l, thread const float3& wo, 
                 {
                     return s;
                 }
-                float3 _2459;
+                float3 _2678;
                 if (above)
                 {
-                    _2459 = i;
+                    _2678 = i;
                 }
                 else
                 {
-                    _2459 = -i;
+                    _2678 = -i;
                 }
-                s.wi = _2459;
+                s.wi = _2678;
                 s.delta = short(delta);
                 if (delta)
                 {
-                    float3 _2461;
+                    float3 _2680;
                     if (l.kind == 1)
                     {
-                        float3 _2462;
+                        float3 _2681;
                         if (above)
                         {
-                            _2462 = l.c0;
+                            _2681 = l.c0;
                         }
                         else
                         {
-                            _2462 = float3(1.0);
+                            _2681 = float3(1.0);
                         }
-                        _2461 = _2462;
+                        _2680 = _2681;
                     }
                     else
                     {
-                        _2461 = float3(1.0);
+                        _2680 = float3(1.0);
                     }
-                    float3 tint = _2461;
+                    float3 tint = _2680;
                     s.value = f * tint;
                     s.pdf = pReflect;
                 }
@@ -1473,16 +1606,16 @@ float3 mxc_env_to_map(thread const float3& w, thread const float& angle)
 static inline __attribute__((always_inline))
 float2 mxc_env_uv(thread const float3& d)
 {
-    float _3124;
+    float _3373;
     if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13)
     {
-        _3124 = 0.5 + (precise::atan2(d.x, -d.z) * 0.15915493667125701904296875);
+        _3373 = 0.5 + (precise::atan2(d.x, -d.z) * 0.15915493667125701904296875);
     }
     else
     {
-        _3124 = 0.5;
+        _3373 = 0.5;
     }
-    float u = _3124;
+    float u = _3373;
     float v = precise::atan2(length(d.xz), d.y) * 0.3183098733425140380859375;
     return float2(u, v);
 }
@@ -1518,21 +1651,21 @@ float3 mxc_environment(thread const float3& d, constant MxcView& mxc_view, textu
 }
 
 static inline __attribute__((always_inline))
-uint mxc_env_cell(thread const float3& d, const device MxcEnvDistribution& v_193)
+uint mxc_env_cell(thread const float3& d, const device MxcEnvDistribution& v_199)
 {
     float3 param = d;
     float2 uv = mxc_env_uv(param);
-    uint2 size = max(v_193.mxc_env_size.xy, uint2(1u));
+    uint2 size = max(v_199.mxc_env_size.xy, uint2(1u));
     uint i = min(uint(fast::max(uv.x, 0.0) * float(size.x)), (size.x - 1u));
     uint j = min(uint(fast::max(uv.y, 0.0) * float(size.y)), (size.y - 1u));
     return (j * size.x) + i;
 }
 
 static inline __attribute__((always_inline))
-float mxc_env_pdf(thread const float3& d, const device MxcEnvDistribution& v_193)
+float mxc_env_pdf(thread const float3& d, const device MxcEnvDistribution& v_199)
 {
     float3 param = d;
-    return ((device float*)&v_193.mxc_env_cells[mxc_env_cell(param, v_193)])[2u];
+    return ((device float*)&v_199.mxc_env_cells[mxc_env_cell(param, v_199)])[2u];
 }
 
 static inline __attribute__((always_inline))
@@ -1540,30 +1673,30 @@ float mxc_power_heuristic(thread const float& a, thread const float& b)
 {
     float a2 = a * a;
     float b2 = b * b;
-    float _3514;
+    float _3763;
     if ((a2 + b2) > 0.0)
     {
-        _3514 = a2 / (a2 + b2);
+        _3763 = a2 / (a2 + b2);
     }
     else
     {
-        _3514 = 0.0;
+        _3763 = 0.0;
     }
-    return _3514;
+    return _3763;
 }
 
 static inline __attribute__((always_inline))
-float3 mxc_env_sample(thread const float4& u, thread float& pdf, const device MxcEnvDistribution& v_193)
+float3 mxc_env_sample(thread const float4& u, thread float& pdf, const device MxcEnvDistribution& v_199)
 {
-    uint2 size = max(v_193.mxc_env_size.xy, uint2(1u));
+    uint2 size = max(v_199.mxc_env_size.xy, uint2(1u));
     uint n = size.x * size.y;
     uint k = min(uint(u.x * float(n)), (n - 1u));
-    float4 cell = v_193.mxc_env_cells[k];
+    float4 cell = v_199.mxc_env_cells[k];
     if (u.y >= cell.x)
     {
         k = min(as_type<uint>(cell.y), (n - 1u));
     }
-    pdf = ((device float*)&v_193.mxc_env_cells[k])[2u];
+    pdf = ((device float*)&v_199.mxc_env_cells[k])[2u];
     uint i = k % size.x;
     uint j = k / size.x;
     float phi = 6.283185482025146484375 * (((float(i) + u.z) / float(size.x)) - 0.5);
@@ -1588,6 +1721,7 @@ float3 mxc_closure_eval_pdf(thread const MxcClosure& c, thread const float3& wo,
 {
     float3 f = float3(0.0);
     float p = 0.0;
+    float3 _3013;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
@@ -1604,12 +1738,21 @@ float3 mxc_closure_eval_pdf(thread const MxcClosure& c, thread const float3& wo,
         float3x3 param_4 = frame;
         float3 param_5 = wi;
         float3 i = mxc_to_local(param_4, param_5);
+        if ((o.z * i.z) < 0.0)
+        {
+            _3013 = float3(c.msT[k]);
+        }
+        else
+        {
+            _3013 = c.ms[k];
+        }
+        float3 ms = _3013;
         MxcLobe param_6 = l;
         float param_7 = abs(i.z);
         MxcLobe param_8 = l;
         float3 param_9 = o;
         float3 param_10 = i;
-        f += (((l.weight * c.ms[k]) * mxc_lobe_absorption(param_6, param_7)) * mxc_lobe_eval(param_8, param_9, param_10));
+        f += (((l.weight * ms) * mxc_lobe_absorption(param_6, param_7)) * mxc_lobe_eval(param_8, param_9, param_10));
         if (wantPdf)
         {
             MxcLobe param_11 = l;
@@ -1618,20 +1761,20 @@ float3 mxc_closure_eval_pdf(thread const MxcClosure& c, thread const float3& wo,
             p += (c.choice[k] * mxc_lobe_pdf(param_11, param_12, param_13));
         }
     }
-    float _2788;
+    float _3022;
     if (c.choiceTotal > 0.0)
     {
-        _2788 = p / c.choiceTotal;
+        _3022 = p / c.choiceTotal;
     }
     else
     {
-        _2788 = 0.0;
+        _3022 = 0.0;
     }
-    pdf = _2788;
+    pdf = _3022;
     return f;
 }
 
-fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[buffer(0)]], const device MxcParameters& mxc_params [[buffer(1)]], const device MxcEnvDistribution& v_193 [[buffer(2)]], texture2d<float> mxc_tables [[texture(0)]], texture2d<float> mxc_env_radiance [[texture(1)]], sampler mxc_tablesSmplr [[sampler(0)]], sampler mxc_env_radianceSmplr [[sampler(1)]], bool gl_FrontFacing [[front_facing]], float4 gl_FragCoord [[position]])
+fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[buffer(0)]], const device MxcParameters& mxc_params [[buffer(1)]], const device MxcEnvDistribution& v_199 [[buffer(2)]], texture2d<float> mxc_tables [[texture(0)]], texture2d<float> mxc_env_radiance [[texture(1)]], sampler mxc_tablesSmplr [[sampler(0)]], sampler mxc_env_radianceSmplr [[sampler(1)]], bool gl_FrontFacing [[front_facing]], float4 gl_FragCoord [[position]])
 {
     main0_out out = {};
     MxcGeometry g;
@@ -1686,16 +1829,16 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
     int lights = mxc_light_count(mxc_view);
     int kinds = mxc_light_kinds();
     bool image = mxc_environment_code(mxc_view) == 3;
-    int _249;
+    int _255;
     if (mxc_environment_code(mxc_view) != 0)
     {
-        _249 = max(mxc_view.counts.w, 1);
+        _255 = max(mxc_view.counts.w, 1);
     }
     else
     {
-        _249 = 0;
+        _255 = 0;
     }
-    int n = _249;
+    int n = _255;
     uint param_17 = uint(mxc_view.counts.z);
     uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
     uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
@@ -1704,54 +1847,54 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
     uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
     uint pixel = mxc_pcg(param_21);
     uint param_22 = pixel;
-    float _490 = mxc_uniform(param_22);
+    float _496 = mxc_uniform(param_22);
     pixel = param_22;
     uint param_23 = pixel;
-    float _494 = mxc_uniform(param_23);
+    float _500 = mxc_uniform(param_23);
     pixel = param_23;
     uint param_24 = pixel;
-    float _497 = mxc_uniform(param_24);
+    float _503 = mxc_uniform(param_24);
     pixel = param_24;
     uint param_25 = pixel;
-    float _500 = mxc_uniform(param_25);
+    float _506 = mxc_uniform(param_25);
     pixel = param_25;
-    float4 shift = float4(_490, _494, _497, _500);
+    float4 shift = float4(_496, _500, _503, _506);
     float3 sum = float3(0.0);
-    int _266;
+    int _272;
     MxcSample smp;
-    float3 _283;
-    float3 _284;
-    float _289;
+    float3 _289;
+    float3 _290;
+    float _295;
     float param_49;
-    int _313;
+    int _319;
     float param_59;
-    float _329;
+    float _335;
     for (int b = 0; b < max(n, int(lights > 0)); b++)
     {
         int batchLights = (b == 0) ? lights : 0;
         if (b < n)
         {
-            _266 = 1 + int(image);
+            _272 = 1 + int(image);
         }
         else
         {
-            _266 = 0;
+            _272 = 0;
         }
-        int batchSamples = _266;
+        int batchSamples = _272;
         uint index = (uint(mxc_view.counts.z) * uint(max(n, 1))) + uint(b);
         uint param_26 = index;
         uint param_27 = 2u;
-        float _540 = mxc_radical_inverse(param_26, param_27);
+        float _546 = mxc_radical_inverse(param_26, param_27);
         uint param_28 = index;
         uint param_29 = 3u;
-        float _543 = mxc_radical_inverse(param_28, param_29);
+        float _549 = mxc_radical_inverse(param_28, param_29);
         uint param_30 = index;
         uint param_31 = 5u;
-        float _545 = mxc_radical_inverse(param_30, param_31);
+        float _551 = mxc_radical_inverse(param_30, param_31);
         uint param_32 = index;
         uint param_33 = 7u;
-        float _547 = mxc_radical_inverse(param_32, param_33);
-        float4 choice = fract(float4(_540, _543, _545, _547) + shift);
+        float _553 = mxc_radical_inverse(param_32, param_33);
+        float4 choice = fract(float4(_546, _549, _551, _553) + shift);
         smp.valid = short(false);
         smp.evaluate = short(false);
         smp.delta = short(false);
@@ -1770,58 +1913,58 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
         {
             if (above)
             {
-                _284 = smp.wi;
+                _290 = smp.wi;
             }
             else
             {
                 float3 param_37 = -wo;
                 float3 param_38 = smp.wi;
-                _284 = mxc_exit_direction(param_37, param_38);
+                _290 = mxc_exit_direction(param_37, param_38);
             }
-            float3 param_39 = _284;
-            _283 = mxc_environment(param_39, mxc_view, mxc_env_radiance, mxc_env_radianceSmplr);
+            float3 param_39 = _290;
+            _289 = mxc_environment(param_39, mxc_view, mxc_env_radiance, mxc_env_radianceSmplr);
         }
         else
         {
-            _283 = float3(0.0);
+            _289 = float3(0.0);
         }
-        float3 seen = _283;
-        bool _605 = (b < n) && bool(smp.valid);
-        bool _611;
-        if (_605)
-        {
-            _611 = !bool(smp.evaluate);
-        }
-        else
-        {
-            _611 = _605;
-        }
+        float3 seen = _289;
+        bool _611 = (b < n) && bool(smp.valid);
+        bool _617;
         if (_611)
         {
-            bool _616 = image && above;
-            bool _622;
-            if (_616)
+            _617 = !bool(smp.evaluate);
+        }
+        else
+        {
+            _617 = _611;
+        }
+        if (_617)
+        {
+            bool _622 = image && above;
+            bool _628;
+            if (_622)
             {
-                _622 = !bool(smp.delta);
+                _628 = !bool(smp.delta);
             }
             else
             {
-                _622 = _616;
+                _628 = _622;
             }
-            if (_622)
+            if (_628)
             {
                 float3 param_40 = smp.wi;
                 float param_41 = mxc_view.environment.z;
                 float3 param_42 = mxc_env_to_map(param_40, param_41);
                 float param_43 = smp.pdf;
-                float param_44 = mxc_env_pdf(param_42, v_193);
-                _289 = mxc_power_heuristic(param_43, param_44);
+                float param_44 = mxc_env_pdf(param_42, v_199);
+                _295 = mxc_power_heuristic(param_43, param_44);
             }
             else
             {
-                _289 = 1.0;
+                _295 = 1.0;
             }
-            float w = _289;
+            float w = _295;
             sum += ((smp.weight * w) * seen);
         }
         float3 m = float3(0.0);
@@ -1831,33 +1974,33 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
         if (image && (b < n))
         {
             uint param_45 = seed;
-            float _658 = mxc_uniform(param_45);
+            float _664 = mxc_uniform(param_45);
             seed = param_45;
             uint param_46 = seed;
-            float _661 = mxc_uniform(param_46);
+            float _667 = mxc_uniform(param_46);
             seed = param_46;
             uint param_47 = seed;
-            float _664 = mxc_uniform(param_47);
+            float _670 = mxc_uniform(param_47);
             seed = param_47;
-            float4 v = float4(choice.y, _658, _661, _664);
+            float4 v = float4(choice.y, _664, _667, _670);
             float4 param_48 = v;
-            float3 _668 = mxc_env_sample(param_48, param_49, v_193);
+            float3 _674 = mxc_env_sample(param_48, param_49, v_199);
             lightPdf = param_49;
-            m = _668;
+            m = _674;
             float3 param_50 = m;
             float param_51 = mxc_view.environment.z;
             imageWi = mxc_env_to_world(param_50, param_51);
-            bool _677 = lightPdf > 0.0;
-            bool _684;
-            if (_677)
+            bool _683 = lightPdf > 0.0;
+            bool _690;
+            if (_683)
             {
-                _684 = dot(imageWi, N) > 0.0;
+                _690 = dot(imageWi, N) > 0.0;
             }
             else
             {
-                _684 = _677;
+                _690 = _683;
             }
-            if (_684)
+            if (_690)
             {
                 float3 param_52 = imageWi;
                 imageSeen = mxc_environment(param_52, mxc_view, mxc_env_radiance, mxc_env_radianceSmplr);
@@ -1870,38 +2013,38 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
             bool use = true;
             if ((n == 0) || (j < batchLights))
             {
-                _313 = 0;
+                _319 = 0;
             }
             else
             {
-                _313 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+                _319 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
             }
-            int strategy = _313;
+            int strategy = _319;
             if (strategy == 0)
             {
                 float4 light = mxc_view.lightVector[j];
                 incoming = mxc_view.lightRadiance[j].xyz;
-                bool _729 = kinds == 1;
-                bool _742;
-                if (!_729)
+                bool _735 = kinds == 1;
+                bool _748;
+                if (!_735)
                 {
-                    bool _735 = (kinds & 1) != 0;
-                    bool _741;
-                    if (_735)
+                    bool _741 = (kinds & 1) != 0;
+                    bool _747;
+                    if (_741)
                     {
-                        _741 = light.w == 0.0;
+                        _747 = light.w == 0.0;
                     }
                     else
                     {
-                        _741 = _735;
+                        _747 = _741;
                     }
-                    _742 = _741;
+                    _748 = _747;
                 }
                 else
                 {
-                    _742 = _729;
+                    _748 = _735;
                 }
-                bool directional = _742;
+                bool directional = _748;
                 if (directional)
                 {
                     float3 param_53 = light.xyz;
@@ -1914,17 +2057,17 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                     float d2 = fast::max(dot(d, d), 9.9999999392252902907785028219223e-09);
                     wi = d * rsqrt(d2);
                     incoming /= float3(d2);
-                    bool _769 = (kinds & 4) != 0;
-                    bool _775;
-                    if (_769)
+                    bool _775 = (kinds & 4) != 0;
+                    bool _781;
+                    if (_775)
                     {
-                        _775 = light.w == 2.0;
+                        _781 = light.w == 2.0;
                     }
                     else
                     {
-                        _775 = _769;
+                        _781 = _775;
                     }
-                    if (_775)
+                    if (_781)
                     {
                         float4 spot = mxc_view.lightSpot[j];
                         incoming *= smoothstep(spot.w, mxc_view.lightRadiance[j].w, dot(-wi, spot.xyz));
@@ -1943,26 +2086,26 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                 {
                     wi = imageWi;
                     incoming = imageSeen;
-                    bool _810 = lightPdf > 0.0;
-                    bool _817;
-                    if (_810)
+                    bool _816 = lightPdf > 0.0;
+                    bool _823;
+                    if (_816)
                     {
-                        _817 = dot(imageWi, N) > 0.0;
+                        _823 = dot(imageWi, N) > 0.0;
                     }
                     else
                     {
-                        _817 = _810;
+                        _823 = _816;
                     }
-                    use = _817;
+                    use = _823;
                 }
             }
             MxcClosure param_55 = c;
             float3 param_56 = wo;
             float3 param_57 = wi;
             bool param_58 = strategy != 0;
-            float3 _823 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            float3 _829 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
             float pdf = param_59;
-            float3 f = _823;
+            float3 f = _829;
             if (strategy == 0)
             {
                 radiance += (f * incoming);
@@ -1979,14 +2122,14 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                             float param_61 = mxc_view.environment.z;
                             float3 param_62 = mxc_env_to_map(param_60, param_61);
                             float param_63 = pdf;
-                            float param_64 = mxc_env_pdf(param_62, v_193);
-                            _329 = mxc_power_heuristic(param_63, param_64);
+                            float param_64 = mxc_env_pdf(param_62, v_199);
+                            _335 = mxc_power_heuristic(param_63, param_64);
                         }
                         else
                         {
-                            _329 = 1.0;
+                            _335 = 1.0;
                         }
-                        float w_1 = _329;
+                        float w_1 = _335;
                         sum += (((f * w_1) / float3(pdf)) * incoming);
                     }
                 }
@@ -1995,7 +2138,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                     if (use)
                     {
                         float3 param_65 = m;
-                        float param_66 = mxc_env_pdf(param_65, v_193);
+                        float param_66 = mxc_env_pdf(param_65, v_199);
                         float param_67 = pdf;
                         float w_2 = mxc_power_heuristic(param_66, param_67);
                         sum += (((f * w_2) * incoming) / float3(lightPdf));

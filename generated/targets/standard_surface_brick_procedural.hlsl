@@ -54,6 +54,7 @@ struct MxcClosure
     float choice[2];
     float choiceTotal;
     float3 ms[2];
+    float msT[2];
     float3 emission;
     float3 transparency;
 };
@@ -81,18 +82,18 @@ struct MxcLobeSample
 #define SPIRV_CROSS_CONSTANT_ID_0 -1
 #endif
 static const int MXC_ENVIRONMENT = SPIRV_CROSS_CONSTANT_ID_0;
-static const bool _239 = (MXC_ENVIRONMENT != (-1));
+static const bool _245 = (MXC_ENVIRONMENT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_1
 #define SPIRV_CROSS_CONSTANT_ID_1 -1
 #endif
 static const int MXC_LIGHT_COUNT = SPIRV_CROSS_CONSTANT_ID_1;
-static const bool _241 = (MXC_LIGHT_COUNT != (-1));
+static const bool _247 = (MXC_LIGHT_COUNT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_2
 #define SPIRV_CROSS_CONSTANT_ID_2 -1
 #endif
 static const int MXC_LIGHT_KINDS = SPIRV_CROSS_CONSTANT_ID_2;
-static const bool _243 = (MXC_LIGHT_KINDS != (-1));
-static const int _244 = _243 ? MXC_LIGHT_KINDS : 7;
+static const bool _249 = (MXC_LIGHT_KINDS != (-1));
+static const int _250 = _249 ? MXC_LIGHT_KINDS : 7;
 
 cbuffer MxcView : register(b1, space0)
 {
@@ -109,7 +110,7 @@ cbuffer MxcView : register(b1, space0)
 };
 
 ByteAddressBuffer mxc_params : register(t2, space0);
-ByteAddressBuffer _222 : register(t1, space1);
+ByteAddressBuffer _228 : register(t1, space1);
 Texture2D<float4> mxc_tables : register(t0, space0);
 SamplerState _mxc_tables_sampler : register(s0, space0);
 Texture2D<float4> mxc_texture_0 : register(t5, space0);
@@ -188,16 +189,16 @@ uint2 spvTextureSize(Texture2D<float4> Tex, uint Level, out uint Param)
 float3 mxc_safe_normalize(float3 v, float3 fallback)
 {
     float l2 = dot(v, v);
-    float3 _980;
+    float3 _986;
     if (l2 > 9.9999996826552253889678874634872e-21f)
     {
-        _980 = v * rsqrt(l2);
+        _986 = v * rsqrt(l2);
     }
     else
     {
-        _980 = fallback;
+        _986 = fallback;
     }
-    return _980;
+    return _986;
 }
 
 float3x3 mxc_frame(float3 N, float3 T)
@@ -264,31 +265,31 @@ float4 mxc_sample_image(Texture2D<float4> image, SamplerState _image_sampler, fl
     }
     float param = st.x;
     int param_1 = uaddress;
-    bool _1642 = mxc_address(param, param_1);
+    bool _1648 = mxc_address(param, param_1);
     st.x = param;
-    bool _1645 = !_1642;
-    bool _1656;
-    if (!_1645)
+    bool _1651 = !_1648;
+    bool _1662;
+    if (!_1651)
     {
         float param_2 = st.y;
         int param_3 = vaddress;
-        bool _1652 = mxc_address(param_2, param_3);
+        bool _1658 = mxc_address(param_2, param_3);
         st.y = param_2;
-        _1656 = !_1652;
+        _1662 = !_1658;
     }
     else
     {
-        _1656 = _1645;
+        _1662 = _1651;
     }
-    if (_1656)
+    if (_1662)
     {
         return fallback;
     }
     st.y = 1.0f - st.y;
     if (filtertype == 1)
     {
-        uint _1670_dummy_parameter;
-        float2 size = float2(int2(spvTextureSize(image, uint(0), _1670_dummy_parameter)));
+        uint _1676_dummy_parameter;
+        float2 size = float2(int2(spvTextureSize(image, uint(0), _1676_dummy_parameter)));
         return image.SampleLevel(_image_sampler, (min(floor(st * size), size - 1.0f.xx) + 0.5f.xx) / size, 0.0f);
     }
     return image.SampleGrad(_image_sampler, st, dx, dy);
@@ -303,10 +304,10 @@ float3 mxc_hsv_to_rgb(float3 hsv)
 float3 mxc_normalmap(float3 sampleValue, float2 scale, float3 N, float3 T, float3 B)
 {
     float3 v = (sampleValue * 2.0f) - 1.0f.xxx;
-    float3 _1548 = v;
-    float2 _1550 = _1548.xy * scale;
-    v.x = _1550.x;
-    v.y = _1550.y;
+    float3 _1554 = v;
+    float2 _1556 = _1554.xy * scale;
+    v.x = _1556.x;
+    v.y = _1556.y;
     float3 param = ((T * v.x) + (B * v.y)) + (N * v.z);
     float3 param_1 = N;
     return mxc_safe_normalize(param, param_1);
@@ -327,24 +328,29 @@ bool mxc_index_matched(MxcLobe l)
     return abs(l.eta - 1.0f) < 9.9999997473787516355514526367188e-05f;
 }
 
-float mxc_lobe_eta(MxcLobe l, bool above)
+bool mxc_dielectric_walk_split(MxcLobe l, float3 wo)
 {
-    float _1845;
-    if (above)
+    bool _2155 = wo.z <= 0.0f;
+    bool _2162;
+    if (!_2155)
     {
-        _1845 = l.eta;
+        _2162 = l.eta < 1.0f;
     }
     else
     {
-        _1845 = 1.0f / l.eta;
+        _2162 = _2155;
     }
-    return _1845;
+    if (_2162)
+    {
+        return false;
+    }
+    return true;
 }
 
 float4 mxc_table_at(float mu, float x, float firstRow)
 {
     float2 t = (float2(sqrt(clamp(mu, 0.0f, 1.0f)), clamp(x, 0.0f, 1.0f)) * 31.0f) + 0.5f.xx;
-    return mxc_tables.SampleLevel(_mxc_tables_sampler, float2(t.x / 32.0f, (firstRow + t.y) / 1654.0f), 0.0f);
+    return mxc_tables.SampleLevel(_mxc_tables_sampler, float2(t.x / 32.0f, (firstRow + t.y) / 2070.0f), 0.0f);
 }
 
 float4 mxc_dielectric_table(float mu, float alpha, float e)
@@ -361,6 +367,66 @@ float4 mxc_dielectric_table(float mu, float alpha, float e)
     float param_5 = 32.0f * (2.0f + s0);
     float4 b = mxc_table_at(param_3, param_4, param_5);
     return lerp(a, b, (s - s0).xxxx);
+}
+
+float mxc_dielectric_albedo(float mu, float alpha, float eta)
+{
+    float _1801;
+    if (eta >= 1.0f)
+    {
+        _1801 = eta;
+    }
+    else
+    {
+        _1801 = 1.0f / max(eta, 0.001000000047497451305389404296875f);
+    }
+    float e = _1801;
+    float param = mu;
+    float param_1 = alpha;
+    float param_2 = e;
+    return mxc_dielectric_table(param, param_1, param_2).x;
+}
+
+float mxc_walk_eta_index(float eta)
+{
+    float e = max(eta, 1.0f);
+    return clamp((2.0f * (e - 1.0f)) / (e + 1.0f), 0.0f, 1.0f) * 12.0f;
+}
+
+float mxc_walk_texel(float column, float row)
+{
+    float2 t = float2(column + 0.5f, row + 0.5f) / float2(32.0f, 2070.0f);
+    return mxc_tables.SampleLevel(_mxc_tables_sampler, t, 0.0f).x;
+}
+
+float mxc_walk_reflectance(float mu, float alpha, float eta)
+{
+    float param = eta;
+    float fe = mxc_walk_eta_index(param);
+    float e0 = min(floor(fe), 11.0f);
+    float column = sqrt(clamp(mu, 0.0f, 1.0f)) * 31.0f;
+    float row = 1654.0f + (sqrt(clamp(alpha, 0.0f, 1.0f)) * 31.0f);
+    float param_1 = column;
+    float param_2 = row + (e0 * 32.0f);
+    float a = mxc_walk_texel(param_1, param_2);
+    float param_3 = column;
+    float param_4 = row + ((e0 + 1.0f) * 32.0f);
+    float b = mxc_walk_texel(param_3, param_4);
+    return lerp(a, b, fe - e0);
+}
+
+float mxc_lobe_eta(MxcLobe l, bool above)
+{
+    float _1929;
+    if (above)
+    {
+        _1929 = l.eta;
+    }
+    else
+    {
+        _1929 = 1.0f / l.eta;
+    }
+    return _1929;
 }
 
 float mxc_dielectric_albedo_rt(float mu, float alpha, float eta)
@@ -426,104 +492,99 @@ float3 mxc_lobe_fresnel(MxcLobe l, float _cosh, bool above)
 
 float3 mxc_lobe_ms_scale(MxcLobe l, float3 wo)
 {
-    bool _2089 = l.kind == 1;
-    bool _2096;
-    if (!_2089)
+    bool _2286 = l.kind == 1;
+    bool _2293;
+    if (!_2286)
     {
-        _2096 = l.kind == 2;
+        _2293 = l.kind == 2;
     }
     else
     {
-        _2096 = _2089;
+        _2293 = _2286;
     }
-    bool _2103;
-    if (!_2096)
+    bool _2300;
+    if (!_2293)
     {
-        _2103 = l.kind == 3;
+        _2300 = l.kind == 3;
     }
     else
     {
-        _2103 = _2096;
+        _2300 = _2293;
     }
-    bool microfacet = _2103;
-    bool _2105 = !microfacet;
-    bool _2112;
-    if (!_2105)
+    bool microfacet = _2300;
+    bool _2302 = !microfacet;
+    bool _2309;
+    if (!_2302)
     {
         float2 param = l.alpha;
-        _2112 = mxc_is_delta(param);
+        _2309 = mxc_is_delta(param);
     }
     else
     {
-        _2112 = _2105;
+        _2309 = _2302;
     }
-    if (_2112)
+    if (_2309)
     {
         return 1.0f.xxx;
     }
     float alpha = sqrt(l.alpha.x * l.alpha.y);
-    bool _2123 = l.kind == 1;
-    bool _2128;
-    if (_2123)
+    bool _2320 = l.kind == 1;
+    bool _2325;
+    if (_2320)
     {
         MxcLobe param_1 = l;
-        _2128 = mxc_index_matched(param_1);
+        _2325 = mxc_index_matched(param_1);
     }
     else
     {
-        _2128 = _2123;
+        _2325 = _2320;
     }
-    if (_2128)
+    if (_2325)
     {
         return 1.0f.xxx;
     }
-    bool _2133 = l.kind == 1;
-    bool _2140;
-    if (_2133)
+    bool _2330 = l.kind == 1;
+    bool _2337;
+    if (_2330)
     {
-        _2140 = (l.mode & 4) == 0;
+        _2337 = (l.mode & 4) == 0;
     }
     else
     {
-        _2140 = _2133;
+        _2337 = _2330;
     }
-    if (_2140)
+    if (_2337)
     {
         MxcLobe param_2 = l;
-        bool param_3 = wo.z >= 0.0f;
-        float param_4 = abs(wo.z);
-        float param_5 = alpha;
-        float param_6 = mxc_lobe_eta(param_2, param_3);
-        float e = mxc_dielectric_albedo_rt(param_4, param_5, param_6);
+        float3 param_3 = wo;
+        if (mxc_dielectric_walk_split(param_2, param_3))
+        {
+            float param_4 = wo.z;
+            float param_5 = alpha;
+            float param_6 = l.eta;
+            float rss = mxc_dielectric_albedo(param_4, param_5, param_6);
+            float param_7 = wo.z;
+            float param_8 = alpha;
+            float param_9 = l.eta;
+            return clamp(mxc_walk_reflectance(param_7, param_8, param_9) / max(rss, 9.9999997473787516355514526367188e-05f), 1.0f, 20.0f).xxx;
+        }
+        MxcLobe param_10 = l;
+        bool param_11 = wo.z >= 0.0f;
+        float param_12 = abs(wo.z);
+        float param_13 = alpha;
+        float param_14 = mxc_lobe_eta(param_10, param_11);
+        float e = mxc_dielectric_albedo_rt(param_12, param_13, param_14);
         float3 k = (1.0f / max(e, 0.0500000007450580596923828125f)).xxx;
         return k;
     }
-    float param_7 = max(wo.z, 0.0f);
-    float param_8 = alpha;
-    float2 ab = mxc_split_sum(param_7, param_8);
+    float param_15 = max(wo.z, 0.0f);
+    float param_16 = alpha;
+    float2 ab = mxc_split_sum(param_15, param_16);
     float e_1 = ab.x + ab.y;
-    MxcLobe param_9 = l;
-    float param_10 = 1.0f;
-    bool param_11 = true;
-    return 1.0f.xxx + ((mxc_lobe_fresnel(param_9, param_10, param_11) * (1.0f - e_1)) / max(e_1, 0.0500000007450580596923828125f).xxx);
-}
-
-float mxc_dielectric_albedo(float mu, float alpha, float eta)
-{
-    float _1795;
-    if (eta >= 1.0f)
-    {
-        _1795 = eta;
-    }
-    else
-    {
-        _1795 = 1.0f / max(eta, 0.001000000047497451305389404296875f);
-    }
-    float e = _1795;
-    float param = mu;
-    float param_1 = alpha;
-    float param_2 = e;
-    return mxc_dielectric_table(param, param_1, param_2).x;
+    MxcLobe param_17 = l;
+    float param_18 = 1.0f;
+    bool param_19 = true;
+    return 1.0f.xxx + ((mxc_lobe_fresnel(param_17, param_18, param_19) * (1.0f - e_1)) / max(e_1, 0.0500000007450580596923828125f).xxx);
 }
 
 float mxc_safe_sqrt(float x)
@@ -538,16 +599,16 @@ float mxc_fon_albedo(float sigma, float mu)
     float param = 1.0f - (c * c);
     float s = mxc_safe_sqrt(param);
     float theta = acos(c);
-    float _2011;
+    float _2095;
     if (c > 9.9999997473787516355514526367188e-05f)
     {
-        _2011 = (1.0f - ((s * s) * s)) / c;
+        _2095 = (1.0f - ((s * s) * s)) / c;
     }
     else
     {
-        _2011 = 1.5f * c;
+        _2095 = 1.5f * c;
     }
-    float tail = _2011;
+    float tail = _2095;
     float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875f * s) * tail)) - (0.666666686534881591796875f * s);
     return a + (((sigma * a) * g) * 0.3183098733425140380859375f);
 }
@@ -555,40 +616,40 @@ float mxc_fon_albedo(float sigma, float mu)
 float3 mxc_lobe_albedo_scaled(MxcLobe l, float3 wo, float3 ms)
 {
     float mu = clamp(wo.z, 0.0f, 1.0f);
-    bool _2215 = l.kind == 1;
-    bool _2222;
-    if (!_2215)
+    bool _2434 = l.kind == 1;
+    bool _2441;
+    if (!_2434)
     {
-        _2222 = l.kind == 2;
+        _2441 = l.kind == 2;
     }
     else
     {
-        _2222 = _2215;
+        _2441 = _2434;
     }
-    bool _2229;
-    if (!_2222)
+    bool _2448;
+    if (!_2441)
     {
-        _2229 = l.kind == 3;
+        _2448 = l.kind == 3;
     }
     else
     {
-        _2229 = _2222;
+        _2448 = _2441;
     }
-    if (_2229)
+    if (_2448)
     {
         float alpha = sqrt(l.alpha.x * l.alpha.y);
-        bool _2240 = l.kind == 1;
-        bool _2247;
-        if (_2240)
+        bool _2459 = l.kind == 1;
+        bool _2466;
+        if (_2459)
         {
             float2 param = l.alpha;
-            _2247 = !mxc_is_delta(param);
+            _2466 = !mxc_is_delta(param);
         }
         else
         {
-            _2247 = _2240;
+            _2466 = _2459;
         }
-        if (_2247)
+        if (_2466)
         {
             float param_1 = mu;
             float param_2 = alpha;
@@ -607,16 +668,16 @@ float3 mxc_lobe_albedo_scaled(MxcLobe l, float3 wo, float3 ms)
         float param_10 = 0.0f;
         bool param_11 = true;
         float3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
-        float3 _2203;
+        float3 _2422;
         if (l.kind == 1)
         {
-            _2203 = l.c0;
+            _2422 = l.c0;
         }
         else
         {
-            _2203 = 1.0f.xxx;
+            _2422 = 1.0f.xxx;
         }
-        float3 tint = _2203;
+        float3 tint = _2422;
         float2 param_12 = l.alpha;
         if (mxc_is_delta(param_12))
         {
@@ -652,17 +713,17 @@ float3 mxc_lobe_albedo(MxcLobe l, float3 wo)
 
 float3 mxc_lobe_layer_albedo(MxcLobe l, float3 wo)
 {
-    bool _2354 = l.kind == 9;
-    bool _2361;
-    if (!_2354)
+    bool _2573 = l.kind == 9;
+    bool _2580;
+    if (!_2573)
     {
-        _2361 = l.kind == 10;
+        _2580 = l.kind == 10;
     }
     else
     {
-        _2361 = _2354;
+        _2580 = _2573;
     }
-    if (_2361)
+    if (_2580)
     {
         MxcLobe white = l;
         white.c0 = 1.0f.xxx;
@@ -673,6 +734,68 @@ float3 mxc_lobe_layer_albedo(MxcLobe l, float3 wo)
     MxcLobe param_2 = l;
     float3 param_3 = wo;
     return mxc_lobe_albedo(param_2, param_3);
+}
+
+float mxc_lobe_ms_transmit(MxcLobe l, float3 wo, float3 ms)
+{
+    bool _2188 = l.kind != 1;
+    bool _2195;
+    if (!_2188)
+    {
+        float2 param = l.alpha;
+        _2195 = mxc_is_delta(param);
+    }
+    else
+    {
+        _2195 = _2188;
+    }
+    bool _2201;
+    if (!_2195)
+    {
+        MxcLobe param_1 = l;
+        _2201 = mxc_index_matched(param_1);
+    }
+    else
+    {
+        _2201 = _2195;
+    }
+    bool _2209;
+    if (!_2201)
+    {
+        _2209 = (l.mode & 4) != 0;
+    }
+    else
+    {
+        _2209 = _2201;
+    }
+    bool _2217;
+    if (!_2209)
+    {
+        MxcLobe param_2 = l;
+        float3 param_3 = wo;
+        _2217 = !mxc_dielectric_walk_split(param_2, param_3);
+    }
+    else
+    {
+        _2217 = _2209;
+    }
+    if (_2217)
+    {
+        return ms.x;
+    }
+    float alpha = sqrt(l.alpha.x * l.alpha.y);
+    float param_4 = wo.z;
+    float param_5 = alpha;
+    float param_6 = l.eta;
+    float rss = mxc_dielectric_albedo(param_4, param_5, param_6);
+    float param_7 = wo.z;
+    float param_8 = alpha;
+    float param_9 = l.eta;
+    float tss = mxc_dielectric_albedo_rt(param_7, param_8, param_9) - rss;
+    float param_10 = wo.z;
+    float param_11 = alpha;
+    float param_12 = l.eta;
+    return clamp((1.0f - mxc_walk_reflectance(param_10, param_11, param_12)) / max(tss, 0.0500000007450580596923828125f), 1.0f, 20.0f);
 }
 
 float mxc_luminance(float3 c)
@@ -700,6 +823,7 @@ void mxc_closure_prepare(inout MxcClosure c, float3 wo)
     {
         MxcLobe l = c.lobes[k];
         c.ms[k] = 1.0f.xxx;
+        c.msT[k] = 1.0f;
         c.choice[k] = 0.0f;
         if (all(bool3(l.weight.x == 0.0f.xxx.x, l.weight.y == 0.0f.xxx.y, l.weight.z == 0.0f.xxx.z)))
         {
@@ -716,7 +840,11 @@ void mxc_closure_prepare(inout MxcClosure c, float3 wo)
         MxcLobe param_6 = l;
         float3 param_7 = o;
         float3 param_8 = c.ms[k];
-        c.choice[k] = mxc_lobe_choice(param_6, param_7, param_8);
+        c.msT[k] = mxc_lobe_ms_transmit(param_6, param_7, param_8);
+        MxcLobe param_9 = l;
+        float3 param_10 = o;
+        float3 param_11 = c.ms[k];
+        c.choice[k] = mxc_lobe_choice(param_9, param_10, param_11);
         c.choiceTotal += c.choice[k];
     }
 }
@@ -856,35 +984,35 @@ void mxc_material_closure(MxcGeometry g, float3 wo, inout MxcClosure c)
 
 int mxc_light_count()
 {
-    int _3782;
-    if (_241)
+    int _4031;
+    if (_247)
     {
-        _3782 = MXC_LIGHT_COUNT;
+        _4031 = MXC_LIGHT_COUNT;
     }
     else
     {
-        _3782 = mxc_view_counts.x;
+        _4031 = mxc_view_counts.x;
     }
-    return min(_3782, 8);
+    return min(_4031, 8);
 }
 
 int mxc_light_kinds()
 {
-    return _244;
+    return _250;
 }
 
 int mxc_environment_code()
 {
-    int _3774;
-    if (_239)
+    int _4023;
+    if (_245)
     {
-        _3774 = MXC_ENVIRONMENT;
+        _4023 = MXC_ENVIRONMENT;
     }
     else
     {
-        _3774 = mxc_view_counts.y;
+        _4023 = mxc_view_counts.y;
     }
-    return _3774;
+    return _4023;
 }
 
 float mxc_uniform(inout uint seed)
@@ -961,36 +1089,36 @@ float mxc_ggx_g2(float3 wo, float3 wi, float2 alpha)
 {
     float3 param = wo;
     float2 param_1 = alpha;
-    float _1284 = mxc_ggx_lambda(param, param_1);
+    float _1290 = mxc_ggx_lambda(param, param_1);
     float3 param_2 = wi;
     float2 param_3 = alpha;
-    float _1288 = mxc_ggx_lambda(param_2, param_3);
-    return 1.0f / ((1.0f + _1284) + _1288);
+    float _1294 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0f / ((1.0f + _1290) + _1294);
 }
 
 float3 mxc_microfacet_reflect(MxcLobe l, float3 wo, float3 wi)
 {
-    bool _1904 = wo.z <= 0.0f;
-    bool _1911;
-    if (!_1904)
+    bool _1988 = wo.z <= 0.0f;
+    bool _1995;
+    if (!_1988)
     {
-        _1911 = wi.z <= 0.0f;
+        _1995 = wi.z <= 0.0f;
     }
     else
     {
-        _1911 = _1904;
+        _1995 = _1988;
     }
-    bool _1918;
-    if (!_1911)
+    bool _2002;
+    if (!_1995)
     {
         float2 param = l.alpha;
-        _1918 = mxc_is_delta(param);
+        _2002 = mxc_is_delta(param);
     }
     else
     {
-        _1918 = _1911;
+        _2002 = _1995;
     }
-    if (_1918)
+    if (_2002)
     {
         return 0.0f.xxx;
     }
@@ -1005,27 +1133,27 @@ float3 mxc_microfacet_reflect(MxcLobe l, float3 wo, float3 wi)
     }
     float3 param_4 = h;
     float2 param_5 = l.alpha;
-    float _1944 = mxc_ggx_d(param_4, param_5);
+    float _2028 = mxc_ggx_d(param_4, param_5);
     float3 param_6 = wo;
     float3 param_7 = wi;
     float2 param_8 = l.alpha;
-    return ((f * _1944) * mxc_ggx_g2(param_6, param_7, param_8)) / (4.0f * wo.z).xxx;
+    return ((f * _2028) * mxc_ggx_g2(param_6, param_7, param_8)) / (4.0f * wo.z).xxx;
 }
 
 float mxc_fon(float sigma, float3 wo, float3 wi)
 {
     float a = 1.0f / (1.0f + (0.2877933979034423828125f * sigma));
     float s = dot(wi, wo) - (wi.z * wo.z);
-    float _1965;
+    float _2049;
     if (s > 0.0f)
     {
-        _1965 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07f);
+        _2049 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07f);
     }
     else
     {
-        _1965 = 1.0f;
+        _2049 = 1.0f;
     }
-    float t = _1965;
+    float t = _2049;
     return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375f;
 }
 
@@ -1061,17 +1189,17 @@ float3 mxc_lobe_eval(MxcLobe l, float3 wo, float3 wi)
         case 2:
         case 3:
         {
-            bool _2435 = l.kind == 3;
-            bool _2442;
-            if (_2435)
+            bool _2654 = l.kind == 3;
+            bool _2661;
+            if (_2654)
             {
-                _2442 = (l.mode & 1) == 0;
+                _2661 = (l.mode & 1) == 0;
             }
             else
             {
-                _2442 = _2435;
+                _2661 = _2654;
             }
-            if (_2442)
+            if (_2661)
             {
                 return 0.0f.xxx;
             }
@@ -1082,29 +1210,29 @@ float3 mxc_lobe_eval(MxcLobe l, float3 wo, float3 wi)
         }
         case 4:
         {
-            bool _2451 = wo.z > 0.0f;
-            bool _2457;
-            if (_2451)
+            bool _2670 = wo.z > 0.0f;
+            bool _2676;
+            if (_2670)
             {
-                _2457 = wi.z > 0.0f;
+                _2676 = wi.z > 0.0f;
             }
             else
             {
-                _2457 = _2451;
+                _2676 = _2670;
             }
-            float3 _2387;
-            if (_2457)
+            float3 _2606;
+            if (_2676)
             {
                 float param_9 = l.p0;
                 float3 param_10 = wo;
                 float3 param_11 = wi;
-                _2387 = (l.c0 * mxc_fon(param_9, param_10, param_11)) * wi.z;
+                _2606 = (l.c0 * mxc_fon(param_9, param_10, param_11)) * wi.z;
             }
             else
             {
-                _2387 = 0.0f.xxx;
+                _2606 = 0.0f.xxx;
             }
-            return _2387;
+            return _2606;
         }
         default:
         {
@@ -1117,8 +1245,8 @@ float mxc_ggx_g1(float3 v, float2 alpha)
 {
     float3 param = v;
     float2 param_1 = alpha;
-    float _1270 = mxc_ggx_lambda(param, param_1);
-    return 1.0f / (1.0f + _1270);
+    float _1276 = mxc_ggx_lambda(param, param_1);
+    return 1.0f / (1.0f + _1276);
 }
 
 float mxc_ggx_pdf_vndf(float3 wo, float3 m, float2 alpha)
@@ -1131,8 +1259,8 @@ float mxc_ggx_pdf_vndf(float3 wo, float3 m, float2 alpha)
     float2 param_1 = alpha;
     float3 param_2 = m;
     float2 param_3 = alpha;
-    float _1443 = mxc_ggx_d(param_2, param_3);
-    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0f)) * _1443) / wo.z;
+    float _1449 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0f)) * _1449) / wo.z;
 }
 
 float mxc_mean(float3 c)
@@ -1159,26 +1287,26 @@ float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
                 return 0.0f;
             }
             bool above = wo.z > 0.0f;
-            float3 _2481;
+            float3 _2700;
             if (above)
             {
-                _2481 = wo;
+                _2700 = wo;
             }
             else
             {
-                _2481 = -wo;
+                _2700 = -wo;
             }
-            float3 o = _2481;
-            float3 _2483;
+            float3 o = _2700;
+            float3 _2702;
             if (above)
             {
-                _2483 = wi;
+                _2702 = wi;
             }
             else
             {
-                _2483 = -wi;
+                _2702 = -wi;
             }
-            float3 i = _2483;
+            float3 i = _2702;
             if (i.z > 0.0f)
             {
                 float3 h = normalize(o + i);
@@ -1200,42 +1328,42 @@ float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
                 float3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
                 float fr = mxc_mean(param_7);
                 MxcLobe param_8 = l;
-                bool _2583 = mxc_lobe_transmits(param_8);
-                bool _2590;
-                if (_2583)
+                bool _2802 = mxc_lobe_transmits(param_8);
+                bool _2809;
+                if (_2802)
                 {
-                    _2590 = (l.mode & 1) != 0;
+                    _2809 = (l.mode & 1) != 0;
                 }
                 else
                 {
-                    _2590 = _2583;
+                    _2809 = _2802;
                 }
-                return p * (_2590 ? fr : 1.0f);
+                return p * (_2809 ? fr : 1.0f);
             }
             return 0.0f;
         }
         default:
         {
-            bool _2503 = wo.z > 0.0f;
-            bool _2509;
-            if (_2503)
+            bool _2722 = wo.z > 0.0f;
+            bool _2728;
+            if (_2722)
             {
-                _2509 = wi.z > 0.0f;
+                _2728 = wi.z > 0.0f;
             }
             else
             {
-                _2509 = _2503;
+                _2728 = _2722;
             }
-            float _2495;
-            if (_2509)
+            float _2714;
+            if (_2728)
             {
-                _2495 = wi.z * 0.3183098733425140380859375f;
+                _2714 = wi.z * 0.3183098733425140380859375f;
             }
             else
             {
-                _2495 = 0.0f;
+                _2714 = 0.0f;
             }
-            return _2495;
+            return _2714;
         }
     }
 }
@@ -1246,16 +1374,16 @@ float3 mxc_ggx_sample_vndf(float3 wo, inout float2 alpha, float2 u)
     alpha = mxc_rough_alpha(param);
     float3 vh = normalize(float3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lensq = (vh.x * vh.x) + (vh.y * vh.y);
-    float3 _1300;
+    float3 _1306;
     if (lensq > 0.0f)
     {
-        _1300 = float3(-vh.y, vh.x, 0.0f) * rsqrt(lensq);
+        _1306 = float3(-vh.y, vh.x, 0.0f) * rsqrt(lensq);
     }
     else
     {
-        _1300 = float3(1.0f, 0.0f, 0.0f);
+        _1306 = float3(1.0f, 0.0f, 0.0f);
     }
-    float3 t1 = _1300;
+    float3 t1 = _1306;
     float3 t2 = cross(vh, t1);
     float r = sqrt(u.x);
     float phi = 6.283185482025146484375f * u.y;
@@ -1284,94 +1412,94 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, float3 wo, float3 u)
         case 3:
         {
             bool above = wo.z > 0.0f;
-            float3 _2602;
+            float3 _2821;
             if (above)
             {
-                _2602 = wo;
+                _2821 = wo;
             }
             else
             {
-                _2602 = -wo;
+                _2821 = -wo;
             }
-            float3 o = _2602;
+            float3 o = _2821;
             if (o.z <= 0.0f)
             {
                 return s;
             }
             float2 param = l.alpha;
             bool delta = mxc_is_delta(param);
-            float3 _2606;
+            float3 _2825;
             if (delta)
             {
-                _2606 = float3(0.0f, 0.0f, 1.0f);
+                _2825 = float3(0.0f, 0.0f, 1.0f);
             }
             else
             {
                 float3 param_1 = o;
                 float2 param_2 = l.alpha;
                 float2 param_3 = u.xy;
-                float3 _2707 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
-                _2606 = _2707;
+                float3 _2926 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2825 = _2926;
             }
-            float3 m = _2606;
+            float3 m = _2825;
             float hm = dot(o, m);
-            bool _2714 = l.kind == 1;
-            bool _2721;
-            if (!_2714)
+            bool _2933 = l.kind == 1;
+            bool _2940;
+            if (!_2933)
             {
-                _2721 = l.kind == 3;
+                _2940 = l.kind == 3;
             }
             else
             {
-                _2721 = _2714;
+                _2940 = _2933;
             }
-            bool _2726;
-            if (_2721)
+            bool _2945;
+            if (_2940)
             {
                 MxcLobe param_4 = l;
-                _2726 = mxc_lobe_transmits(param_4);
+                _2945 = mxc_lobe_transmits(param_4);
             }
             else
             {
-                _2726 = _2721;
+                _2945 = _2940;
             }
-            bool transmits = _2726;
-            bool _2729 = l.kind == 2;
-            bool _2737;
-            if (!_2729)
+            bool transmits = _2945;
+            bool _2948 = l.kind == 2;
+            bool _2956;
+            if (!_2948)
             {
-                _2737 = (l.mode & 1) != 0;
+                _2956 = (l.mode & 1) != 0;
             }
             else
             {
-                _2737 = _2729;
+                _2956 = _2948;
             }
-            bool reflects = _2737;
+            bool reflects = _2956;
             MxcLobe param_5 = l;
             float param_6 = max(hm, 0.0f);
             bool param_7 = above;
             float3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
-            float _2619;
+            float _2838;
             if (transmits)
             {
                 float3 param_8 = f;
-                _2619 = mxc_mean(param_8);
+                _2838 = mxc_mean(param_8);
             }
             else
             {
-                _2619 = 1.0f;
+                _2838 = 1.0f;
             }
-            float fr = _2619;
-            float _2622;
+            float fr = _2838;
+            float _2841;
             if (transmits)
             {
-                _2622 = reflects ? fr : 0.0f;
+                _2841 = reflects ? fr : 0.0f;
             }
             else
             {
-                _2622 = 1.0f;
+                _2841 = 1.0f;
             }
-            float pReflect = _2622;
+            float pReflect = _2841;
             if (u.z < pReflect)
             {
                 float3 i = reflect(-o, m);
@@ -1379,38 +1507,38 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, float3 wo, float3 u)
                 {
                     return s;
                 }
-                float3 _2624;
+                float3 _2843;
                 if (above)
                 {
-                    _2624 = i;
+                    _2843 = i;
                 }
                 else
                 {
-                    _2624 = -i;
+                    _2843 = -i;
                 }
-                s.wi = _2624;
+                s.wi = _2843;
                 s.delta = delta;
                 if (delta)
                 {
-                    float3 _2626;
+                    float3 _2845;
                     if (l.kind == 1)
                     {
-                        float3 _2627;
+                        float3 _2846;
                         if (above)
                         {
-                            _2627 = l.c0;
+                            _2846 = l.c0;
                         }
                         else
                         {
-                            _2627 = 1.0f.xxx;
+                            _2846 = 1.0f.xxx;
                         }
-                        _2626 = _2627;
+                        _2845 = _2846;
                     }
                     else
                     {
-                        _2626 = 1.0f.xxx;
+                        _2845 = 1.0f.xxx;
                     }
-                    float3 tint = _2626;
+                    float3 tint = _2845;
                     s.value = f * tint;
                     s.pdf = pReflect;
                 }
@@ -1578,16 +1706,16 @@ float3 mxc_env_to_map(float3 w, float angle)
 
 float2 mxc_env_uv(float3 d)
 {
-    float _3484;
+    float _3733;
     if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13f)
     {
-        _3484 = 0.5f + (atan2(d.x, -d.z) * 0.15915493667125701904296875f);
+        _3733 = 0.5f + (atan2(d.x, -d.z) * 0.15915493667125701904296875f);
     }
     else
     {
-        _3484 = 0.5f;
+        _3733 = 0.5f;
     }
-    float u = _3484;
+    float u = _3733;
     float v = atan2(length(d.xz), d.y) * 0.3183098733425140380859375f;
     return float2(u, v);
 }
@@ -1624,7 +1752,7 @@ uint mxc_env_cell(float3 d)
 {
     float3 param = d;
     float2 uv = mxc_env_uv(param);
-    uint2 size = max(_222.Load4(0).xy, uint2(1u, 1u));
+    uint2 size = max(_228.Load4(0).xy, uint2(1u, 1u));
     uint i = min(uint(max(uv.x, 0.0f) * float(size.x)), (size.x - 1u));
     uint j = min(uint(max(uv.y, 0.0f) * float(size.y)), (size.y - 1u));
     return (j * size.x) + i;
@@ -1633,36 +1761,36 @@ uint mxc_env_cell(float3 d)
 float mxc_env_pdf(float3 d)
 {
     float3 param = d;
-    return asfloat(_222.Load(mxc_env_cell(param) * 16 + 24));
+    return asfloat(_228.Load(mxc_env_cell(param) * 16 + 24));
 }
 
 float mxc_power_heuristic(float a, float b)
 {
     float a2 = a * a;
     float b2 = b * b;
-    float _3874;
+    float _4123;
     if ((a2 + b2) > 0.0f)
     {
-        _3874 = a2 / (a2 + b2);
+        _4123 = a2 / (a2 + b2);
     }
     else
     {
-        _3874 = 0.0f;
+        _4123 = 0.0f;
     }
-    return _3874;
+    return _4123;
 }
 
 float3 mxc_env_sample(float4 u, out float pdf)
 {
-    uint2 size = max(_222.Load4(0).xy, uint2(1u, 1u));
+    uint2 size = max(_228.Load4(0).xy, uint2(1u, 1u));
     uint n = size.x * size.y;
     uint k = min(uint(u.x * float(n)), (n - 1u));
-    float4 cell = asfloat(_222.Load4(k * 16 + 16));
+    float4 cell = asfloat(_228.Load4(k * 16 + 16));
     if (u.y >= cell.x)
     {
         k = min(asuint(cell.y), (n - 1u));
     }
-    pdf = asfloat(_222.Load(k * 16 + 24));
+    pdf = asfloat(_228.Load(k * 16 + 24));
     uint i = k % size.x;
     uint j = k / size.x;
     float phi = 6.283185482025146484375f * (((float(i) + u.z) / float(size.x)) - 0.5f);
@@ -1685,6 +1813,7 @@ float3 mxc_closure_eval_pdf(MxcClosure c, float3 wo, float3 wi, bool wantPdf, in
 {
     float3 f = 0.0f.xxx;
     float p = 0.0f;
+    float3 _3178;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
@@ -1701,12 +1830,21 @@ float3 mxc_closure_eval_pdf(MxcClosure c, float3 wo, float3 wi, bool wantPdf, in
         float3x3 param_4 = frame;
         float3 param_5 = wi;
         float3 i = mxc_to_local(param_4, param_5);
+        if ((o.z * i.z) < 0.0f)
+        {
+            _3178 = c.msT[k].xxx;
+        }
+        else
+        {
+            _3178 = c.ms[k];
+        }
+        float3 ms = _3178;
         MxcLobe param_6 = l;
         float param_7 = abs(i.z);
         MxcLobe param_8 = l;
         float3 param_9 = o;
         float3 param_10 = i;
-        f += (((l.weight * c.ms[k]) * mxc_lobe_absorption(param_6, param_7)) * mxc_lobe_eval(param_8, param_9, param_10));
+        f += (((l.weight * ms) * mxc_lobe_absorption(param_6, param_7)) * mxc_lobe_eval(param_8, param_9, param_10));
         if (wantPdf)
         {
             MxcLobe param_11 = l;
@@ -1715,16 +1853,16 @@ float3 mxc_closure_eval_pdf(MxcClosure c, float3 wo, float3 wi, bool wantPdf, in
             p += (c.choice[k] * mxc_lobe_pdf(param_11, param_12, param_13));
         }
     }
-    float _2953;
+    float _3187;
     if (c.choiceTotal > 0.0f)
     {
-        _2953 = p / c.choiceTotal;
+        _3187 = p / c.choiceTotal;
     }
     else
     {
-        _2953 = 0.0f;
+        _3187 = 0.0f;
     }
-    pdf = _2953;
+    pdf = _3187;
     return f;
 }
 
@@ -1788,16 +1926,16 @@ void frag_main()
     int lights = mxc_light_count();
     int kinds = mxc_light_kinds();
     bool image = mxc_environment_code() == 3;
-    int _278;
+    int _284;
     if (mxc_environment_code() != 0)
     {
-        _278 = max(mxc_view_counts.w, 1);
+        _284 = max(mxc_view_counts.w, 1);
     }
     else
     {
-        _278 = 0;
+        _284 = 0;
     }
-    int n = _278;
+    int n = _284;
     uint param_17 = uint(mxc_view_counts.z);
     uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
     uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
@@ -1806,54 +1944,54 @@ void frag_main()
     uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
     uint pixel = mxc_pcg(param_21);
     uint param_22 = pixel;
-    float _526 = mxc_uniform(param_22);
+    float _532 = mxc_uniform(param_22);
     pixel = param_22;
     uint param_23 = pixel;
-    float _530 = mxc_uniform(param_23);
+    float _536 = mxc_uniform(param_23);
     pixel = param_23;
     uint param_24 = pixel;
-    float _533 = mxc_uniform(param_24);
+    float _539 = mxc_uniform(param_24);
     pixel = param_24;
     uint param_25 = pixel;
-    float _536 = mxc_uniform(param_25);
+    float _542 = mxc_uniform(param_25);
     pixel = param_25;
-    float4 shift = float4(_526, _530, _533, _536);
+    float4 shift = float4(_532, _536, _539, _542);
     float3 sum = 0.0f.xxx;
-    int _295;
+    int _301;
     MxcSample smp;
-    float3 _312;
-    float3 _313;
-    float _318;
+    float3 _318;
+    float3 _319;
+    float _324;
     float param_49;
-    int _342;
+    int _348;
     float param_59;
-    float _358;
+    float _364;
     for (int b = 0; b < max(n, int(lights > 0)); b++)
     {
         int batchLights = (b == 0) ? lights : 0;
         if (b < n)
         {
-            _295 = 1 + int(image);
+            _301 = 1 + int(image);
         }
         else
         {
-            _295 = 0;
+            _301 = 0;
         }
-        int batchSamples = _295;
+        int batchSamples = _301;
         uint index = (uint(mxc_view_counts.z) * uint(max(n, 1))) + uint(b);
         uint param_26 = index;
         uint param_27 = 2u;
-        float _576 = mxc_radical_inverse(param_26, param_27);
+        float _582 = mxc_radical_inverse(param_26, param_27);
         uint param_28 = index;
         uint param_29 = 3u;
-        float _579 = mxc_radical_inverse(param_28, param_29);
+        float _585 = mxc_radical_inverse(param_28, param_29);
         uint param_30 = index;
         uint param_31 = 5u;
-        float _581 = mxc_radical_inverse(param_30, param_31);
+        float _587 = mxc_radical_inverse(param_30, param_31);
         uint param_32 = index;
         uint param_33 = 7u;
-        float _583 = mxc_radical_inverse(param_32, param_33);
-        float4 choice = frac(float4(_576, _579, _581, _583) + shift);
+        float _589 = mxc_radical_inverse(param_32, param_33);
+        float4 choice = frac(float4(_582, _585, _587, _589) + shift);
         smp.valid = false;
         smp.evaluate = false;
         smp.delta = false;
@@ -1872,58 +2010,58 @@ void frag_main()
         {
             if (above)
             {
-                _313 = smp.wi;
+                _319 = smp.wi;
             }
             else
             {
                 float3 param_37 = -wo;
                 float3 param_38 = smp.wi;
-                _313 = mxc_exit_direction(param_37, param_38);
+                _319 = mxc_exit_direction(param_37, param_38);
             }
-            float3 param_39 = _313;
-            _312 = mxc_environment(param_39);
+            float3 param_39 = _319;
+            _318 = mxc_environment(param_39);
         }
         else
         {
-            _312 = 0.0f.xxx;
+            _318 = 0.0f.xxx;
         }
-        float3 seen = _312;
-        bool _641 = (b < n) && smp.valid;
-        bool _647;
-        if (_641)
-        {
-            _647 = !smp.evaluate;
-        }
-        else
-        {
-            _647 = _641;
-        }
+        float3 seen = _318;
+        bool _647 = (b < n) && smp.valid;
+        bool _653;
         if (_647)
         {
-            bool _652 = image && above;
-            bool _658;
-            if (_652)
+            _653 = !smp.evaluate;
+        }
+        else
+        {
+            _653 = _647;
+        }
+        if (_653)
+        {
+            bool _658 = image && above;
+            bool _664;
+            if (_658)
             {
-                _658 = !smp.delta;
+                _664 = !smp.delta;
             }
             else
             {
-                _658 = _652;
+                _664 = _658;
             }
-            if (_658)
+            if (_664)
             {
                 float3 param_40 = smp.wi;
                 float param_41 = mxc_view_environment.z;
                 float3 param_42 = mxc_env_to_map(param_40, param_41);
                 float param_43 = smp.pdf;
                 float param_44 = mxc_env_pdf(param_42);
-                _318 = mxc_power_heuristic(param_43, param_44);
+                _324 = mxc_power_heuristic(param_43, param_44);
             }
             else
             {
-                _318 = 1.0f;
+                _324 = 1.0f;
             }
-            float w = _318;
+            float w = _324;
             sum += ((smp.weight * w) * seen);
         }
         float3 m = 0.0f.xxx;
@@ -1933,33 +2071,33 @@ void frag_main()
         if (image && (b < n))
         {
             uint param_45 = seed;
-            float _694 = mxc_uniform(param_45);
+            float _700 = mxc_uniform(param_45);
             seed = param_45;
             uint param_46 = seed;
-            float _697 = mxc_uniform(param_46);
+            float _703 = mxc_uniform(param_46);
             seed = param_46;
             uint param_47 = seed;
-            float _700 = mxc_uniform(param_47);
+            float _706 = mxc_uniform(param_47);
             seed = param_47;
-            float4 v = float4(choice.y, _694, _697, _700);
+            float4 v = float4(choice.y, _700, _703, _706);
             float4 param_48 = v;
-            float3 _704 = mxc_env_sample(param_48, param_49);
+            float3 _710 = mxc_env_sample(param_48, param_49);
             lightPdf = param_49;
-            m = _704;
+            m = _710;
             float3 param_50 = m;
             float param_51 = mxc_view_environment.z;
             imageWi = mxc_env_to_world(param_50, param_51);
-            bool _713 = lightPdf > 0.0f;
-            bool _720;
-            if (_713)
+            bool _719 = lightPdf > 0.0f;
+            bool _726;
+            if (_719)
             {
-                _720 = dot(imageWi, N) > 0.0f;
+                _726 = dot(imageWi, N) > 0.0f;
             }
             else
             {
-                _720 = _713;
+                _726 = _719;
             }
-            if (_720)
+            if (_726)
             {
                 float3 param_52 = imageWi;
                 imageSeen = mxc_environment(param_52);
@@ -1972,38 +2110,38 @@ void frag_main()
             bool use = true;
             if ((n == 0) || (j < batchLights))
             {
-                _342 = 0;
+                _348 = 0;
             }
             else
             {
-                _342 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+                _348 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
             }
-            int strategy = _342;
+            int strategy = _348;
             if (strategy == 0)
             {
                 float4 light = mxc_view_lightVector[j];
                 incoming = mxc_view_lightRadiance[j].xyz;
-                bool _765 = kinds == 1;
-                bool _778;
-                if (!_765)
+                bool _771 = kinds == 1;
+                bool _784;
+                if (!_771)
                 {
-                    bool _771 = (kinds & 1) != 0;
-                    bool _777;
-                    if (_771)
+                    bool _777 = (kinds & 1) != 0;
+                    bool _783;
+                    if (_777)
                     {
-                        _777 = light.w == 0.0f;
+                        _783 = light.w == 0.0f;
                     }
                     else
                     {
-                        _777 = _771;
+                        _783 = _777;
                     }
-                    _778 = _777;
+                    _784 = _783;
                 }
                 else
                 {
-                    _778 = _765;
+                    _784 = _771;
                 }
-                bool directional = _778;
+                bool directional = _784;
                 if (directional)
                 {
                     float3 param_53 = light.xyz;
@@ -2016,17 +2154,17 @@ void frag_main()
                     float d2 = max(dot(d, d), 9.9999999392252902907785028219223e-09f);
                     wi = d * rsqrt(d2);
                     incoming /= d2.xxx;
-                    bool _805 = (kinds & 4) != 0;
-                    bool _811;
-                    if (_805)
+                    bool _811 = (kinds & 4) != 0;
+                    bool _817;
+                    if (_811)
                     {
-                        _811 = light.w == 2.0f;
+                        _817 = light.w == 2.0f;
                     }
                     else
                     {
-                        _811 = _805;
+                        _817 = _811;
                     }
-                    if (_811)
+                    if (_817)
                     {
                         float4 spot = mxc_view_lightSpot[j];
                         incoming *= smoothstep(spot.w, mxc_view_lightRadiance[j].w, dot(-wi, spot.xyz));
@@ -2045,26 +2183,26 @@ void frag_main()
                 {
                     wi = imageWi;
                     incoming = imageSeen;
-                    bool _846 = lightPdf > 0.0f;
-                    bool _853;
-                    if (_846)
+                    bool _852 = lightPdf > 0.0f;
+                    bool _859;
+                    if (_852)
                     {
-                        _853 = dot(imageWi, N) > 0.0f;
+                        _859 = dot(imageWi, N) > 0.0f;
                     }
                     else
                     {
-                        _853 = _846;
+                        _859 = _852;
                     }
-                    use = _853;
+                    use = _859;
                 }
             }
             MxcClosure param_55 = c;
             float3 param_56 = wo;
             float3 param_57 = wi;
             bool param_58 = strategy != 0;
-            float3 _859 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            float3 _865 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
             float pdf = param_59;
-            float3 f = _859;
+            float3 f = _865;
             if (strategy == 0)
             {
                 radiance += (f * incoming);
@@ -2082,13 +2220,13 @@ void frag_main()
                             float3 param_62 = mxc_env_to_map(param_60, param_61);
                             float param_63 = pdf;
                             float param_64 = mxc_env_pdf(param_62);
-                            _358 = mxc_power_heuristic(param_63, param_64);
+                            _364 = mxc_power_heuristic(param_63, param_64);
                         }
                         else
                         {
-                            _358 = 1.0f;
+                            _364 = 1.0f;
                         }
-                        float w_1 = _358;
+                        float w_1 = _364;
                         sum += (((f * w_1) / pdf.xxx) * incoming);
                     }
                 }

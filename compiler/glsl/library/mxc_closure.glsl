@@ -12,6 +12,7 @@ struct MxcClosure {
   float choice[MXC_MAX_LOBES];  // how often each lobe is sampled (mxc_closure_prepare), for this wo
   float choiceTotal;
   vec3 ms[MXC_MAX_LOBES];       // each lobe's multiple-scattering factor for this wo (mxc_lobe_ms_scale)
+  float msT[MXC_MAX_LOBES];     // and on its refraction (mxc_lobe_ms_transmit)
   vec3 emission;      // radiance leaving towards wo
   vec3 transparency;  // weight of light passing straight through (opacity < 1)
 };
@@ -71,10 +72,12 @@ void mxc_closure_prepare(inout MxcClosure c, vec3 wo) {
     // A lobe that is off (an input of the general shader at 0) is never evaluated nor chosen:
     // its factor and its tables' lookups are not needed.
     c.ms[k] = vec3(1.0);
+    c.msT[k] = 1.0;
     c.choice[k] = 0.0;
     if (l.weight == vec3(0.0)) continue;
     vec3 o = mxc_to_local(mxc_frame(l.N, l.T), wo);
     c.ms[k] = mxc_lobe_ms_scale(l, o);
+    c.msT[k] = mxc_lobe_ms_transmit(l, o, c.ms[k]);
     c.choice[k] = mxc_lobe_choice(l, o, c.ms[k]);
     c.choiceTotal += c.choice[k];
   }
@@ -92,7 +95,8 @@ vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, out floa
     mat3 frame = mxc_frame(l.N, l.T);
     vec3 o = mxc_to_local(frame, wo);
     vec3 i = mxc_to_local(frame, wi);
-    f += l.weight * c.ms[k] * mxc_lobe_absorption(l, abs(i.z)) * mxc_lobe_eval(l, o, i);
+    vec3 ms = o.z * i.z < 0.0 ? vec3(c.msT[k]) : c.ms[k];  // refraction or reflection
+    f += l.weight * ms * mxc_lobe_absorption(l, abs(i.z)) * mxc_lobe_eval(l, o, i);
     if (wantPdf) p += c.choice[k] * mxc_lobe_pdf(l, o, i);
   }
   pdf = c.choiceTotal > 0.0 ? p / c.choiceTotal : 0.0;

@@ -80,6 +80,33 @@ float mxc_dielectric_albedo_rt(float mu, float alpha, float eta) {
   if (eta >= 1.0) return mxc_dielectric_table(mu, alpha, eta).y;
   return mxc_dielectric_table(mu, alpha, 1.0 / max(eta, 1e-3)).z;
 }
+
+// The reference walk's tables (compiler/glsl/WalkTables.h): rows of the same image under the
+// computed tables, measured from the walk itself by tools/GenerateWalkFits.cpp.
+// .x at fractional texel coordinates, bilinear between texel centres.
+float mxc_walk_texel(float column, float row) {
+  vec2 t = vec2(column + 0.5, row + 0.5) / vec2(float(MXC_TABLE_SIZE), float(MXC_TABLE_HEIGHT));
+  return textureLod(MXC_SAMPLER2D(mxc_tables), t, 0.0).x;
+}
+// The fractional index of a relative IOR on the walk tables' grid, u = (eta - 1) / (eta + 1)
+// over [0, 0.5] (eta 1 to 3; below 1 as 1).
+float mxc_walk_eta_index(float eta) {
+  float e = max(eta, 1.0);
+  return clamp(2.0 * (e - 1.0) / (e + 1.0), 0.0, 1.0) * float(MXC_WALK_ETA_STEPS - 1);  // e + 1 >= 2
+}
+// The walk's rough dielectric's reflectance seen from outside at view cosine mu, every order of
+// scattering on the microsurface (Heitz et al. 2016), for GGX alpha and IOR ratio eta >= 1:
+// the tables' axes, sqrt(mu) across and sqrt(alpha) down, one block of rows per eta.
+float mxc_walk_reflectance(float mu, float alpha, float eta) {
+  const float n = float(MXC_TABLE_SIZE);
+  float fe = mxc_walk_eta_index(eta);
+  float e0 = min(floor(fe), float(MXC_WALK_ETA_STEPS - 2));
+  float column = sqrt(clamp(mu, 0.0, 1.0)) * (n - 1.0);
+  float row = float(MXC_WALK_REFLECTANCE_ROW) + sqrt(clamp(alpha, 0.0, 1.0)) * (n - 1.0);
+  float a = mxc_walk_texel(column, row + e0 * n);
+  float b = mxc_walk_texel(column, row + (e0 + 1.0) * n);
+  return mix(a, b, fe - e0);
+}
 #else
 #include "tables/mxc_albedo_fits.glsl"
 // The fast tier's albedos: rational fits of the same tables (scripts/generate-tables fits them;
@@ -297,14 +324,42 @@ float mxc_burley_albedo(float muo, float r) {
 // light that bounces between microfacets (Turquin 2019, "Practical multiple scattering
 // compensation for microfacet models"): with E the single-scattering albedo of the lobe with
 // F = 1 at this view, a reflector is scaled by 1 + F0 (1 - E) / E, which makes a white one's
-// albedo exactly 1 and lets a coloured one saturate with F0; a dielectric's reflection and
-// refraction together by 1 / E_RT, its single-scattering R + T (the OpenPBR spec's
-// "Microfacet model" names both). A thin sheet's straight-through transmission is not a
+// albedo exactly 1 and lets a coloured one saturate with F0. A dielectric seen from outside
+// has its reflection and its refraction scaled apart, so that they reach what the microsurface
+// walk measures: R_ms, all orders (mxc_walk_reflectance), and 1 - R_ms (mxc_lobe_ms_transmit).
+// Scaling both by 1 / E_RT (Turquin's split, in proportion to single scattering) sent most of
+// the lost energy into reflection at grazing where the walk sends it into transmission
+// (blackboard at 78.75 degrees: 0.19 against 0.085; issue 39). From inside, or with a film,
+// the split stays 1 / E_RT for both. A thin sheet's straight-through transmission is not a
 // microfacet lobe: its rough reflection is compensated as a reflector's, with its Fresnel.
 // Not reciprocal (physics notes 2.4): the factor depends on wo only, as albedo scaling does.
 // mxc_lobe_eval is the single-scattering lobe; the closure applies the factor, computed once per
 // lobe for its view (mxc_closure_prepare), and the lobe's albedo includes it. Other lobe kinds
 // have no factor.
+
+// Whether a dielectric's compensation is split as the walk measures: seen from outside (the
+// tables' side, eta >= 1), without a film (the tables are of the bare interface).
+bool mxc_dielectric_walk_split(MxcLobe l, vec3 wo) {
+  if (wo.z <= 0.0 || l.eta < 1.0) return false;
+#ifdef MXC_THIN_FILM
+  if (l.film.z > 0.0 && l.film.x > 0.0) return false;
+#endif
+  return true;
+}
+
+// The factor on a rough dielectric's refraction: (1 - R_ms) / T_ss where the split is the
+// walk's (T_ss = E_RT - R_ss, the single-scattering transmission, floored at 0.05 as 1 / E_RT
+// is), else the reflection's factor.
+float mxc_lobe_ms_transmit(MxcLobe l, vec3 wo, vec3 ms) {
+  if (l.kind != MXC_LOBE_DIELECTRIC || mxc_is_delta(l.alpha) || mxc_index_matched(l) || (l.mode & MXC_THIN_WALL) != 0 ||
+      !mxc_dielectric_walk_split(l, wo)) {
+    return ms.x;
+  }
+  float alpha = sqrt(l.alpha.x * l.alpha.y);
+  float rss = mxc_dielectric_albedo(wo.z, alpha, l.eta);
+  float tss = mxc_dielectric_albedo_rt(wo.z, alpha, l.eta) - rss;
+  return clamp((1.0 - mxc_walk_reflectance(wo.z, alpha, l.eta)) / max(tss, 0.05), 1.0, 20.0);
+}
 
 vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo) {
   bool microfacet = l.kind == MXC_LOBE_DIELECTRIC || l.kind == MXC_LOBE_CONDUCTOR || l.kind == MXC_LOBE_SCHLICK;
@@ -314,6 +369,12 @@ vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo) {
   // nothing for the compensation to restore.
   if (l.kind == MXC_LOBE_DIELECTRIC && mxc_index_matched(l)) return vec3(1.0);
   if (l.kind == MXC_LOBE_DIELECTRIC && (l.mode & MXC_THIN_WALL) == 0) {
+    if (mxc_dielectric_walk_split(l, wo)) {
+      // R_ms / R_ss >= 1 (multiple scattering only adds reflection); R_ss >= 1e-4 bounds it
+      // near index matching, where both vanish.
+      float rss = mxc_dielectric_albedo(wo.z, alpha, l.eta);
+      return vec3(clamp(mxc_walk_reflectance(wo.z, alpha, l.eta) / max(rss, 1e-4), 1.0, 20.0));
+    }
     float e = mxc_dielectric_albedo_rt(abs(wo.z), alpha, mxc_lobe_eta(l, wo.z >= 0.0));
     // Height-correlated masking on both sides of a refraction takes E_RT towards 0 near
     // grazing and index matching (0.024 at mu = 0.07, alpha = 0.65, eta = 1.1; 0.14 at
@@ -341,6 +402,7 @@ vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo) {
 }
 #else
 vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo) { return vec3(1.0); }
+float mxc_lobe_ms_transmit(MxcLobe l, vec3 wo, vec3 ms) { return ms.x; }
 #endif
 
 // ---- The lobe interface used by the closure ----

@@ -349,17 +349,7 @@ MxcCross mxc_walk_interface(MxcLobe l, vec3 w, vec3 conn, bool tinted, inout vec
 // tools/GenerateWalkFits.cpp: they turn the colours OpenPBR defines by what is observed into
 // the parameters the walk needs. The host reads them the same way (WalkTables.cpp).
 
-// .x of the tables image at fractional texel coordinates, bilinear between texel centres.
-float mxc_walk_texel(float column, float row) {
-  vec2 t = vec2(column + 0.5, row + 0.5) / vec2(float(MXC_TABLE_SIZE), float(MXC_TABLE_HEIGHT));
-  return textureLod(MXC_SAMPLER2D(mxc_tables), t, 0.0).x;
-}
-// The fractional index of a relative IOR on the tables' grid, u = (eta - 1) / (eta + 1) over
-// [0, 0.5] (eta 1 to 3; a ratio below 1 traps nothing by total internal reflection: as 1).
-float mxc_walk_eta_index(float eta) {
-  float e = max(eta, 1.0);
-  return clamp(2.0 * (e - 1.0) / (e + 1.0), 0.0, 1.0) * float(MXC_WALK_ETA_STEPS - 1);  // e + 1 >= 2
-}
+// mxc_walk_texel and mxc_walk_eta_index: mxc_lobes.glsl (the balanced tier reads the tables too).
 // A microfacet interface's roughness as the tables' axis: sqrt of its alpha (the geometric mean
 // of an anisotropic pair).
 float mxc_walk_roughness(vec2 alpha) { return sqrt(sqrt(max(alpha.x * alpha.y, 0.0))); }
