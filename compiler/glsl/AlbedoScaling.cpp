@@ -29,7 +29,7 @@ class Walk {
   Walk(const ir::Material& m, const ExprEmitter& x, Closure& out) : m_(m), v_(m, x), out_(out) {}
 
   void run() {
-    if (m_.root != ir::kNone) node(m_.root, v_.vec3(1.0f), Above::ambient(v_));
+    if (m_.root != ir::kNone) node(m_.root, v_.vec3(1.0f), v_.vec3(1.0f), Above::ambient(v_));
     // The lobes' weights, summed over the paths that reach each, and the lobes stored; a lobe
     // of weight constant 0 is dropped.
     for (const PendingLobe& l : lobes_) {
@@ -83,7 +83,9 @@ class Walk {
     return name;
   }
 
-  void slab(const ir::ScatterNode& n, Id weight, const Above& above) {
+  /// `weight`: what the node's lobes are weighted by; `emitted`: what an emission under it is
+  /// (the light it emits crosses the layers above once, without their darkening: see below).
+  void slab(const ir::ScatterNode& n, Id weight, Id emitted, const Above& above) {
     const Id cov = v_.param(n.coverage, v_.constant(1.0f));
     const ir::Medium* medium = n.medium != ir::kNone ? &m_.media[n.medium] : nullptr;
     auto mediumSlot = [&](Slot slot, Id fallback) { return medium ? v_.slot(medium->slots, slot, fallback) : fallback; };
@@ -95,6 +97,13 @@ class Walk {
     std::string tangent = "g.T";
     Id topIor = v_.constant(1.0f);
     Id through = v_.vec3(1.0f);  // what passes the top and its medium, along wo
+    Id throughEmitted = v_.vec3(1.0f);  // the same for light emitted under the top
+    struct Recycle {
+      const ir::Param* darkening = nullptr;
+      const ir::Param* baseAlbedo = nullptr;
+      const ir::Param* baseRoughness = nullptr;
+      std::string lobe;
+    } recycle;  // set when a coat darkens what is under it
     const Id floor = v_.constant(1e-3f);  // IORs that divide are kept >= 1e-3
     const ir::Interface* top = n.top != ir::kNone ? &m_.interfaces[n.top] : nullptr;
     if (top) {
@@ -133,10 +142,14 @@ class Walk {
                                      known->second, l));
         }
         through = v_.oneMinus(v_.local(known->second, Type::Vec3));
+        throughEmitted = through;
         const ir::Param* darkening = top->slots.find(Slot::Darkening);
         const ir::Param* baseAlbedo = top->slots.find(Slot::BaseAlbedo);
         const ir::Param* baseRoughness = top->slots.find(Slot::BaseRoughness);
         const Id delta = darkening ? v_.param(*darkening, v_.constant(0.0f)) : v_.constant(0.0f);
+        if (m_.features.emission && darkening && baseAlbedo && baseRoughness) {
+          recycle = {darkening, baseAlbedo, baseRoughness, l};
+        }
         if (baseAlbedo && baseRoughness && !v_.isZero(delta)) {
           // OpenPBR "Darkening": the internal reflections of the coat darken what is under it
           // (albedo scaling alone does not trap light), modulated by coat_darkening.
@@ -159,9 +172,29 @@ class Walk {
     if (finite && below) {
       tauSlab = keep("tau", v_.mul(mediumSlot(Slot::Absorption, v_.vec3(0.0f)), mediumSlot(Slot::Thickness, v_.constant(1.0f))));
       // OpenPBR "View-dependent absorption": the coat's transmittance along the refracted wo.
-      through = v_.mul(through, v_.local(fmt::format("mxc_absorption({}, {}, clamp(dot(wo, {}), 0.0, 1.0))", v_.glsl(tauSlab),
-                                                     v_.glsl(v_.max(topIor, floor)), normal),
-                                         Type::Vec3));
+      const Id absorbed = v_.local(fmt::format("mxc_absorption({}, {}, clamp(dot(wo, {}), 0.0, 1.0))", v_.glsl(tauSlab),
+                                               v_.glsl(v_.max(topIor, floor)), normal),
+                                   Type::Vec3);
+      through = v_.mul(through, absorbed);
+      throughEmitted = v_.mul(throughEmitted, absorbed);
+    }
+    // Without emission there is nothing to carry apart (the weights stay one value, one variable).
+    if (!m_.features.emission) throughEmitted = through;
+    if (recycle.darkening) {
+      // Emitted light crosses the coat once (OpenPBR "Emission": L_e = lerp(1, T_coat, C) E,
+      // T_coat the one-way transmittance, coat_color = T_coat^2), and what the coat reflects
+      // back down the base reflects again (mxc_coat_recycling): not the darkening of light that
+      // came from above. The reference walk agrees: 0.468 for coat_color 0.25 over a black base,
+      // where the darkening gave 0.164; 2.05 for a clear coat over base_color 0.8 (issue 39).
+      auto [recycled, added] = recycling_.try_emplace(recycle.lobe, std::string());
+      if (added) {
+        recycled->second = var("recycled");
+        out_.lines.add(fmt::format("  vec3 {} = mxc_coat_recycling({}, {}, {}, dot(wo, {}.N), {});", recycled->second,
+                                   v_.glsl(v_.max(topIor, floor)), v_.glsl(v_.asVec3(recycle.baseAlbedo->value)),
+                                   v_.glsl(recycle.baseRoughness->value), recycle.lobe, v_.glsl(tauSlab)),
+                       recycle.darkening->origin.location);
+      }
+      throughEmitted = v_.mul(throughEmitted, v_.local(recycled->second, Type::Vec3));
     }
     if (top && top->kind == InterfaceKind::Dielectric && top->iorReference == ir::IorReference::MediumAbove) {
       under.coatIor = topIor;
@@ -200,34 +233,39 @@ class Walk {
     }
     if (finite && !v_.isOne(cov)) {
       // Partly covered by an absorbing slab: the uncovered part sees no absorption along wi.
-      node(n.base, v_.mul(weight, v_.oneMinus(cov)), above);
-      node(n.base, v_.mul(v_.mul(weight, cov), through), under);
+      node(n.base, v_.mul(weight, v_.oneMinus(cov)), v_.mul(emitted, v_.oneMinus(cov)), above);
+      node(n.base, v_.mul(v_.mul(weight, cov), through), v_.mul(v_.mul(emitted, cov), throughEmitted), under);
       return;
     }
     // The base receives the uncovered part whole and the covered part through the top.
     const Id reaching = v_.add(v_.oneMinus(cov), v_.mul(cov, through));
-    node(n.base, keep("w", v_.mul(weight, reaching)), under);
+    const Id reachingEmitted = v_.add(v_.oneMinus(cov), v_.mul(cov, throughEmitted));
+    node(n.base, keep("w", v_.mul(weight, reaching)), keep("w", v_.mul(emitted, reachingEmitted)), under);
   }
 
-  void node(Index index, Id weight, const Above& above) {
+  void node(Index index, Id weight, Id emitted, const Above& above) {
     const ir::ScatterNode& n = m_.nodes[index];
     switch (n.kind) {
-      case ScatterKind::Slab: slab(n, weight, above); break;
+      case ScatterKind::Slab: slab(n, weight, emitted, above); break;
       case ScatterKind::Mix: {
         const Id w = keep("m", n.weight.value, n.weight.origin.location);
-        node(n.a, v_.mul(weight, v_.oneMinus(w)), above);
-        node(n.b, v_.mul(weight, w), above);
+        node(n.a, v_.mul(weight, v_.oneMinus(w)), v_.mul(emitted, v_.oneMinus(w)), above);
+        node(n.b, v_.mul(weight, w), v_.mul(emitted, w), above);
         break;
       }
       case ScatterKind::Add:
-        node(n.a, weight, above);
-        node(n.b, weight, above);
+        node(n.a, weight, emitted, above);
+        node(n.b, weight, emitted, above);
         break;
-      case ScatterKind::Tint: node(n.a, v_.mul(weight, v_.asVec3(n.weight.value)), above); break;
+      case ScatterKind::Tint: {
+        const Id tint = v_.asVec3(n.weight.value);
+        node(n.a, v_.mul(weight, tint), v_.mul(emitted, tint), above);
+        break;
+      }
       case ScatterKind::Emissive: {
         const ir::Emission& e = m_.emissions[n.emission];
-        out_.lines.add(fmt::format("  c.emission += {};", emittedRadiance(v_, e, weight)), e.origin.location);
-        node(n.a, weight, above);
+        out_.lines.add(fmt::format("  c.emission += {};", emittedRadiance(v_, e, emitted)), e.origin.location);
+        node(n.a, weight, emitted, above);
         break;
       }
       case ScatterKind::Ambient:
@@ -258,6 +296,7 @@ class Walk {
   bool created_ = false;                         ///< the last lobe() made a new lobe
   std::map<std::string, std::string> layerAlbedo_;  ///< a lobe's variable -> its layer albedo's
   std::map<std::string, std::string> darkening_;    ///< a lobe's variable -> its coat darkening's
+  std::map<std::string, std::string> recycling_;    ///< a lobe's variable -> its emission recycling's
   std::map<Id, Id> kept_;                        ///< keep(): a value -> its variable
 };
 

@@ -233,3 +233,22 @@ vec3 mxc_coat_darkening(float eta_c, vec3 Eb, float rb, float delta, float mu_o)
   vec3 darkening = vec3(1.0 - K) / (vec3(1.0) - clamp(Eb, 0.0, 1.0) * K);  // denominator >= 1 - K > 0
   return mix(vec3(1.0), darkening, clamp(delta, 0.0, 1.0));
 }
+
+// What the coat and the base under it return of light emitted under the coat, besides the
+// coat's own transmission: the part the coat reflects back down reaches the base, which
+// reflects E_b of it up again, and so on: 1 / (1 - E_b K T_d^2), K as in mxc_coat_darkening
+// (the darkening of light from above is this without T_d, times 1 - K, its first escape) and
+// T_d the coat's transmittance for diffuse light crossing it, 2 integral_0^1 exp(-tau / mu) mu
+// dmu = 2 E_3(tau) (Chandrasekhar 1960, s. 2.5), each way: 4-point Gauss-Legendre on [0, 1].
+// `tau`: the coat's optical depth along the normal (0 for a clear coat: T_d = 1).
+vec3 mxc_coat_recycling(float eta_c, vec3 Eb, float rb, float mu_o, vec3 tau) {
+  float eta = max(eta_c, 1.0);
+  float Kr = 1.0 - (1.0 - mxc_fresnel_average(eta)) / (eta * eta);  // eta >= 1
+  float Ks = mxc_fresnel_dielectric(clamp(mu_o, 0.0, 1.0), eta);
+  float K = min(mix(Ks, Kr, clamp(rb, 0.0, 1.0)), 0.999);
+  const vec4 x = vec4(0.0694318, 0.3300095, 0.6699905, 0.9305682);  // nodes on [0, 1], > 0
+  const vec4 w = vec4(0.1739274, 0.3260726, 0.3260726, 0.1739274);  // weights, summing to 1
+  vec3 td = vec3(0.0);
+  for (int k = 0; k < 4; ++k) td += 2.0 * w[k] * x[k] * exp(-max(tau, vec3(0.0)) / x[k]);
+  return vec3(1.0) / (vec3(1.0) - clamp(Eb, 0.0, 1.0) * K * td * td);  // denominator >= 1 - K > 0
+}
