@@ -143,6 +143,15 @@ class Walk {
         }
         through = v_.oneMinus(v_.local(known->second, Type::Vec3));
         throughEmitted = through;
+        if (const ir::Param* under = top->slots.find(Slot::BaseAlbedo);
+            under && top->kind == InterfaceKind::Sheen && top->sheenModel == ir::SheenModel::Zeltner) {
+          // OpenPBR "Fuzz": what the base returns meets the fuzz again (mxc_fuzz_darkening).
+          const std::string args = fmt::format("{}.c0, {}.p0, {}", l, l, v_.glsl(v_.asVec3(under->value)));
+          through = v_.mul(through, v_.local(fmt::format("mxc_fuzz_darkening({})", args), Type::Vec3));
+          if (m_.features.emission) {
+            throughEmitted = v_.mul(throughEmitted, v_.local(fmt::format("mxc_fuzz_recycling({})", args), Type::Vec3));
+          }
+        }
         const ir::Param* darkening = top->slots.find(Slot::Darkening);
         const ir::Param* baseAlbedo = top->slots.find(Slot::BaseAlbedo);
         const ir::Param* baseRoughness = top->slots.find(Slot::BaseRoughness);

@@ -64,7 +64,7 @@ enum class Slot : uint8_t {
   ObservedAlbedo,    ///< vec3: multiple-scattering albedo a user asked for (subsurface_color)
   AbbeNumber,        ///< float: dispersion (OpenPBR "Translucent base"); absent or 0 means none
   Darkening,         ///< float: coat darkening control (OpenPBR "Darkening")
-  BaseAlbedo,        ///< vec3: a coat's estimate of the albedo under it, E_b (OpenPBR "Darkening")
+  BaseAlbedo,        ///< vec3: a coat's or fuzz's estimate of the albedo under it, E_b (OpenPBR "Darkening")
   BaseRoughness,     ///< float: a coat's estimate of the roughness under it, r_b (OpenPBR eq. base_roughness_estimate)
   Weight,            ///< float: a lobe scale MaterialX gives but physics does not (pbrlib `weight`)
   Luminance,         ///< float: emission luminance (nits)
@@ -113,7 +113,7 @@ enum class InterfaceKind : uint8_t {
   Burley,               ///< Burley diffuse: Color, Roughness, Normal
   DiffuseTransmission,  ///< diffuse transmission (MaterialX translucent_bsdf): Color, Normal
   DiffuseSheet,         ///< thin-walled subsurface: reflection S(1-g)/2, transmission S(1+g)/2 (OpenPBR "Thin-walled mode"): Color, Anisotropy, Roughness, Normal
-  Sheen,                ///< sheen / fuzz, index-matched, no Fresnel: Color, Roughness, Normal
+  Sheen,                ///< sheen / fuzz, index-matched, no Fresnel: Color, Roughness, Normal, BaseAlbedo (under a fuzz: for its darkening)
   Hair,                 ///< a hair fibre (Chiang 2016): Ior, ReflectionTint (R), TransmissionTint (TT), InternalReflectionTint (TRT), FibreRoughnessR/TT/TRT, CuticleTilt, Absorption (per unit fibre radius), Normal, Tangent (along the fibre); not layerable
 };
 

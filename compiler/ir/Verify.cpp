@@ -32,6 +32,9 @@ constexpr SlotSpec kSchlick[] = {
 constexpr SlotSpec kDiffuse[] = {
     {Slot::Color, kVec3}, {Slot::Roughness, kFloat}, {Slot::Normal, kVec3}, {Slot::Weight, kColor},
 };
+constexpr SlotSpec kSheen[] = {
+    {Slot::Color, kVec3}, {Slot::Roughness, kFloat}, {Slot::Normal, kVec3}, {Slot::Weight, kColor}, {Slot::BaseAlbedo, kVec3},
+};
 constexpr SlotSpec kDiffuseTransmission[] = {
     {Slot::Color, kVec3}, {Slot::Normal, kVec3}, {Slot::Weight, kColor},
 };
@@ -278,8 +281,8 @@ std::span<const SlotSpec> slotSchema(InterfaceKind kind) {
     case InterfaceKind::Conductor: return kConductor;
     case InterfaceKind::Schlick: return kSchlick;
     case InterfaceKind::Diffuse:
-    case InterfaceKind::Burley:
-    case InterfaceKind::Sheen: return kDiffuse;
+    case InterfaceKind::Burley: return kDiffuse;
+    case InterfaceKind::Sheen: return kSheen;
     case InterfaceKind::DiffuseTransmission: return kDiffuseTransmission;
     case InterfaceKind::DiffuseSheet: return kDiffuseSheet;
     case InterfaceKind::Hair: return kHair;

@@ -272,6 +272,9 @@ struct OpenPbr : ShadingModelInputs {
     fuzz.origin = c.nodeOrigin(n);
     fuzz.slots.set(Slot::Color, clamped("fuzz_color", 0.0f, 1.0f));
     fuzz.slots.set(Slot::Roughness, clamped("fuzz_roughness", 0.0f, 1.0f));
+    // The albedo under the fuzz, for the light it returns to the base (the fuzz's darkening, as
+    // the coat's: the base substrate's estimate, ignoring the coat).
+    fuzz.slots.set(Slot::BaseAlbedo, {darkeningBaseAlbedo(), at("fuzz_weight")});
     ExprId fuzzNormal = b.normalize(b.lerp(p("geometry_normal").value, p("geometry_coat_normal").value,
                                            clamped("coat_weight", 0.0f, 1.0f).value));
     fuzz.slots.set(Slot::Normal, {fuzzNormal, at("geometry_normal")});

@@ -234,6 +234,10 @@ vec3 mxc_coat_darkening(float eta_c, vec3 Eb, float rb, float delta, float mu_o)
   return mix(vec3(1.0), darkening, clamp(delta, 0.0, 1.0));
 }
 
+#ifdef MXC_ACCURACY_FAST
+// The fast tier keeps OpenPBR's formula, L_e = lerp(1, T_coat, C) E: nothing returned.
+vec3 mxc_coat_recycling(float eta_c, vec3 Eb, float rb, float mu_o, vec3 tau) { return vec3(1.0); }
+#else
 // What the coat and the base under it return of light emitted under the coat, besides the
 // coat's own transmission: the part the coat reflects back down reaches the base, which
 // reflects E_b of it up again, and so on: 1 / (1 - E_b K T_d^2), K as in mxc_coat_darkening
@@ -252,3 +256,4 @@ vec3 mxc_coat_recycling(float eta_c, vec3 Eb, float rb, float mu_o, vec3 tau) {
   for (int k = 0; k < 4; ++k) td += 2.0 * w[k] * x[k] * exp(-max(tau, vec3(0.0)) / x[k]);
   return vec3(1.0) / (vec3(1.0) - clamp(Eb, 0.0, 1.0) * K * td * td);  // denominator >= 1 - K > 0
 }
+#endif

@@ -85,3 +85,35 @@ vec3 mxc_fuzz_sample(float roughness, vec3 wo, vec2 u) {
   vec3 d = mxc_sample_cosine(u);
   return mxc_fuzz_from_ltc(wo, normalize(vec3((d.x - ab.y * d.z) / ab.x, d.y / ab.x, d.z)));
 }
+
+// The fuzz's reflectance averaged over cosine-distributed light, 2 integral_0^1 R(mu, r) mu dmu:
+// 8-point Gauss-Legendre on [0, 1] (R is smooth in mu: a Gaussian and an offset).
+float mxc_fuzz_average(float roughness) {
+  float r = mxc_fuzz_roughness(roughness);
+  const float x[8] = float[](0.0198551, 0.1016667, 0.2372338, 0.4082826, 0.5917174, 0.7627662, 0.8983333, 0.9801449);
+  const float w[8] = float[](0.0506143, 0.1111905, 0.1568533, 0.1813419, 0.1813419, 0.1568533, 0.1111905, 0.0506143);
+  float sum = 0.0;
+  for (int k = 0; k < 8; ++k) sum += 2.0 * w[k] * x[k] * mxc_fuzz_albedo(x[k], r);
+  return sum;
+}
+
+#ifdef MXC_ACCURACY_FAST
+// The fast tier keeps OpenPBR's layering of the fuzz, f_fuzz + (1 - E_fuzz) f_base: nothing more.
+vec3 mxc_fuzz_darkening(vec3 c, float roughness, vec3 Eb) { return vec3(1.0); }
+vec3 mxc_fuzz_recycling(vec3 c, float roughness, vec3 Eb) { return vec3(1.0); }
+#else
+// OpenPBR "Fuzz" is a volume that passes what it does not reflect: light the base under it
+// (albedo E_b) reflects back up meets it again, and of that diffuse light the fibres return
+// c E_avg down to the base and pass 1 - E_avg. So the base's light leaves with
+// (1 - E_avg) / (1 - E_b c E_avg) of what albedo scaling gives it (the interfaced-Lambertian
+// form of OpenPBR "Darkening" for a fuzz), and light emitted under the fuzz with
+// 1 / (1 - E_b c E_avg) besides its own transmission. The reference walk does this: albedo
+// scaling alone left white fuzz over a grey base 0.03 brighter than the walk (issue 39).
+vec3 mxc_fuzz_recycling(vec3 c, float roughness, vec3 Eb) {
+  float e = mxc_fuzz_average(roughness);
+  return vec3(1.0) / (vec3(1.0) - clamp(Eb, 0.0, 1.0) * clamp(c, 0.0, 1.0) * e);  // >= 1 - e > 0 (e <= 0.75)
+}
+vec3 mxc_fuzz_darkening(vec3 c, float roughness, vec3 Eb) {
+  return (1.0 - mxc_fuzz_average(roughness)) * mxc_fuzz_recycling(c, roughness, Eb);
+}
+#endif

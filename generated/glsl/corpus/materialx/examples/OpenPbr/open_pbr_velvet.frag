@@ -63,7 +63,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
-  vec3 w2 = (vec3(1.0) - e1);
+  vec3 w2 = ((vec3(1.0) - e1) * mxc_fuzz_darkening(lobe0.c0, lobe0.p0, vec3(0.02)));
   MxcLobe lobe3;
   lobe3.kind = MXC_LOBE_DIELECTRIC;
   lobe3.mode = 1;
