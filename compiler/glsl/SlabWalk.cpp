@@ -225,7 +225,10 @@ class Walk {
       case ScatterKind::Ambient:
         out_.lines.add(fmt::format("  c.transparency += {};", v_.glsl(weight)), n.origin.location);
         break;
-      case ScatterKind::Absorber: break;
+      // Black under the layers above (base_weight 0): they still reflect, and what crosses the
+      // last of them is lost (mxc_walk: nothing under the last layer). Dropping the stack lost
+      // the specular layer and coat over it too (issue 39).
+      case ScatterKind::Absorber: emitStack(stack, weight); break;
     }
   }
 

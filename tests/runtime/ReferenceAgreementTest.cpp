@@ -40,6 +40,9 @@ std::vector<Case> cases() {
       {"metal", input("base_metalness", "float", "1") + input("base_color", "color3", "0.9, 0.6, 0.3") +
                     input("specular_color", "color3", "0.8, 0.9, 1") + input("specular_roughness", "float", "0.4")},
       {"rough_glass", input("transmission_weight", "float", "1") + input("specular_roughness", "float", "0.3")},
+      // A base of weight 0: an absorber under the specular layer and a partial coat.
+      {"black_base", input("base_weight", "float", "0") + input("coat_weight", "float", "0.5") +
+                         input("specular_roughness", "float", "0.4")},
       // mu_t = -ln(colour) / depth = (0.105, 0.51, 1.2), mu_s = scatter / depth: omega (0.86, 0.78, 0.75).
       // (A white half-space, omega = 1, returns everything only after walks longer than either
       // walk's cap: the shader's loop budget loses a few percent there, README "Hard cases".)

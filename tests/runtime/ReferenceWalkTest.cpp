@@ -311,6 +311,29 @@ TEST(ReferenceWalk, PartialCoverageIsTheMixtureOfWithAndWithout) {
   }
 }
 
+// A base of weight 0 is black (an absorber in the IR) but the layers over it are still there:
+// the specular layer and the coat reflect as over a black diffuse base. The walk dropped every
+// stack over an absorber and returned 0 (issue 39).
+TEST(ReferenceWalk, LayersOverABlackBaseStillReflect) {
+  for (const char* coat : {"0", "1"}) {
+    double albedo[2] = {0.0, 0.0}, error[2] = {0.0, 0.0};
+    for (int k = 0; k < 2; ++k) {
+      Context context;
+      ir::Material m = openPbr(context, input(k == 0 ? "base_weight" : "base_color", k == 0 ? "float" : "color3",
+                                              k == 0 ? "0" : "0, 0, 0") +
+                                            input("coat_weight", "float", coat) +
+                                            input("coat_roughness", "float", "0.3"));
+      std::vector<rt::Albedo> a = furnace(m, {viewAt(60)}, 16384, {}, kReference);
+      ASSERT_EQ(a.size(), 1u);
+      albedo[k] = a[0].total().y;
+      error[k] = a[0].reflectedError.y;
+    }
+    EXPECT_GT(albedo[1], 0.05) << "coat " << coat;
+    expectNear(albedo[0], albedo[1], error[0] + error[1], 1e-3,
+               fmt::format("coat {}: base_weight 0 against base_color 0 ({})", coat, albedo[1]));
+  }
+}
+
 // A white, lossless stack keeps albedo 1 when its layers cover only part of the surface: a
 // white diffuse base under the specular layer, a clear coat and white fuzz, each at half.
 TEST(ReferenceWalk, PartialCoverageOfWhiteLosslessLayersKeepsAlbedoOne) {

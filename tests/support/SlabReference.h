@@ -322,7 +322,9 @@ class Builder {
         break;
       }
       case ir::ScatterKind::Ambient: out_.transparency += weight; break;
-      case ir::ScatterKind::Absorber: break;
+      // Black under the layers above: they still reflect (a stack whose light, once through
+      // its last layer, is lost).
+      case ir::ScatterKind::Absorber: emit(std::move(stack), weight); break;
       default: throw std::runtime_error("SlabReference: an Add or Tint node");
     }
   }
