@@ -15,11 +15,23 @@ namespace {
 
 constexpr uint32_t kGroup = glsl::kWorkGroupSize;  // local_size_x of the compute stages
 
+/// A buffer destroyed when it goes out of scope, also when a dispatch throws.
+struct OwnedBuffer {
+  VulkanContext& context;
+  Buffer buffer;
+  OwnedBuffer(VulkanContext& c, Buffer b) : context(c), buffer(b) {}
+  ~OwnedBuffer() { context.destroy(buffer); }
+  OwnedBuffer(const OwnedBuffer&) = delete;
+  OwnedBuffer& operator=(const OwnedBuffer&) = delete;
+};
+
 }  // namespace
 
 MaterialKernel::MaterialKernel(VulkanContext& context, const AlbedoTables& tables, const MaterialResources& resources,
                                const glsl::MaterialInterface& material, const std::vector<uint32_t>& spirv)
-    : context_(context), samplesPerDispatch_(material.samplesPerDispatch ? material.samplesPerDispatch : UINT32_MAX) {
+    : context_(context),
+      samplesPerDispatch_(std::min(material.samplesPerDispatch ? material.samplesPerDispatch : UINT32_MAX,
+                                   kMaxSamplesPerDispatch)) {
   kernel_ = std::make_unique<ComputeKernel>(context, spirv, MaterialResources::layout(material), 0);
   batch_ = context.createBuffer(glsl::std140Layout(glsl::batchMembers()).size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   resources.bind(kernel_->descriptors(), tables);
@@ -43,12 +55,25 @@ void MaterialKernel::run(const Buffer& in, const Buffer& out, uint32_t groups, u
   kernel_->dispatch(groups, 1, nullptr);
 }
 
+uint32_t MaterialKernel::shrinkAfterCut(uint32_t drawn, uint32_t chunk, const char* what) {
+  if (chunk <= 1) {
+    throw std::runtime_error(
+        fmt::format("the device cut the {}'s loop at its first sample (its loops run too long for the device)", what));
+  }
+  // The guard counts loop iterations: half of what an invocation drew keeps clear of it however
+  // the samples' lengths vary (the lobe choice stops at the lobe it picks).
+  samplesPerDispatch_ = std::clamp<uint32_t>(drawn / 2, 1u, chunk - 1);
+  return samplesPerDispatch_;
+}
+
 std::vector<glm::vec4> MaterialEvaluator::evaluate(const std::vector<DirectionPair>& pairs, uint32_t dispatches,
                                                    uint32_t seed) {
   if (pairs.empty()) return {};
   const size_t n = pairs.size();
-  Buffer in = context_.createBuffer(n * 2 * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  Buffer out = context_.createBuffer(n * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  OwnedBuffer inBuffer(context_, context_.createBuffer(n * 2 * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+  OwnedBuffer outBuffer(context_, context_.createBuffer(n * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+  const Buffer& in = inBuffer.buffer;
+  const Buffer& out = outBuffer.buffer;
   auto* dirs = static_cast<glm::vec4*>(in.mapped);
   for (size_t i = 0; i < n; ++i) {
     dirs[2 * i] = glm::vec4(pairs[i].wo, 0.0f);
@@ -63,8 +88,6 @@ std::vector<glm::vec4> MaterialEvaluator::evaluate(const std::vector<DirectionPa
   }
   std::vector<glm::vec4> result(n);
   for (size_t i = 0; i < n; ++i) result[i] = glm::vec4(sum[i] / double(dispatches));
-  context_.destroy(in);
-  context_.destroy(out);
   return result;
 }
 
@@ -72,24 +95,30 @@ std::vector<Albedo> FurnaceEstimator::estimate(const std::vector<glm::vec3>& vie
   if (views.empty()) return {};
   const size_t n = views.size();
   const uint32_t perInvocation = std::max<uint32_t>((samples + kGroup - 1) / kGroup, 1);
-  Buffer in = context_.createBuffer(n * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  Buffer out = context_.createBuffer(n * kGroup * 4 * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  OwnedBuffer inBuffer(context_, context_.createBuffer(n * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+  OwnedBuffer outBuffer(context_,
+                        context_.createBuffer(n * kGroup * 4 * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+  const Buffer& in = inBuffer.buffer;
+  const Buffer& out = outBuffer.buffer;
   auto* dirs = static_cast<glm::vec4*>(in.mapped);
   for (size_t i = 0; i < n; ++i) dirs[i] = glm::vec4(views[i], 0.0f);
   std::vector<glm::dvec3> r(n, glm::dvec3(0.0)), t(n, glm::dvec3(0.0)), r2(n, glm::dvec3(0.0)), t2(n, glm::dvec3(0.0));
   uint32_t dispatch = 0;
   for (uint32_t done = 0; done < perInvocation; ++dispatch) {
     const uint32_t chunk = std::min(samplesPerDispatch_, perInvocation - done);
-    // Each dispatch its own seed: seed + dispatch * 2^16 keeps seeds of different runs apart.
+    // Each dispatch its own seed: seed + dispatch * 2^16 keeps seeds of different runs apart (a
+    // dispatch run again after a cut takes the next seed).
     run(in, out, static_cast<uint32_t>(n), static_cast<uint32_t>(n), chunk, seed + (dispatch << 16));
     const auto* sums = static_cast<const glm::vec4*>(out.mapped);
+    float fewest = float(chunk);
+    for (size_t i = 0; i < n * kGroup; ++i) fewest = std::min(fewest, sums[4 * i].w);
+    if (fewest != float(chunk)) {
+      shrinkAfterCut(static_cast<uint32_t>(std::max(fewest, 0.0f)), chunk, "furnace");
+      continue;  // nothing of the cut dispatch is kept
+    }
     for (size_t a = 0; a < n; ++a) {
       for (uint32_t i = 0; i < kGroup; ++i) {
         const glm::vec4* s = &sums[4 * (a * kGroup + i)];
-        if (s[0].w != float(chunk)) {
-          throw std::runtime_error(fmt::format(
-              "the device cut the furnace's sampling loop ({} of {} samples drawn by an invocation)", s[0].w, chunk));
-        }
         r[a] += glm::dvec3(s[0]);
         t[a] += glm::dvec3(s[1]);
         r2[a] += glm::dvec3(s[2]);
@@ -112,8 +141,6 @@ std::vector<Albedo> FurnaceEstimator::estimate(const std::vector<glm::vec3>& vie
     result[a].reflectedError = error(r[a], r2[a]);
     result[a].transmittedError = error(t[a], t2[a]);
   }
-  context_.destroy(in);
-  context_.destroy(out);
   return result;
 }
 
@@ -122,27 +149,59 @@ std::vector<std::vector<SampledDirection>> DirectionSampler::sample(const std::v
   if (views.empty()) return {};
   const size_t n = views.size();
   const uint32_t perInvocation = std::max<uint32_t>((samples + kGroup - 1) / kGroup, 1);
-  const size_t perView = size_t{perInvocation} * kGroup;
-  Buffer in = context_.createBuffer(n * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  Buffer out = context_.createBuffer(n * perView * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  OwnedBuffer inBuffer(context_, context_.createBuffer(n * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+  const Buffer& in = inBuffer.buffer;
   auto* dirs = static_cast<glm::vec4*>(in.mapped);
   for (size_t i = 0; i < n; ++i) dirs[i] = glm::vec4(views[i], 0.0f);
-  run(in, out, static_cast<uint32_t>(n), static_cast<uint32_t>(n), perInvocation, seed);
-  const auto* drawn = static_cast<const glm::vec4*>(out.mapped);
   std::vector<std::vector<SampledDirection>> result(n);
-  for (size_t a = 0; a < n; ++a) {
-    result[a].resize(perView);
-    for (size_t i = 0; i < perView; ++i) {
-      const glm::vec4& d = drawn[a * perView + i];
-      // The stage writes kind 0, 1 or 2 exactly (mxc_sample.comp).
-      result[a][i].wi = glm::vec3(d);
-      result[a][i].kind = d.w > 1.5f   ? SampledDirection::Kind::Delta
-                          : d.w > 0.5f ? SampledDirection::Kind::Continuous
-                                       : SampledDirection::Kind::None;
+  for (auto& r : result) r.reserve(size_t{perInvocation} * kGroup);
+  // The stage writes kind 0, 1 or 2 exactly (mxc_sample.comp); a slot still holding this after
+  // the dispatch was not reached: the device cut the invocation's loop.
+  constexpr float kUnwritten = -1.0f;
+  OwnedBuffer outBuffer(context_, Buffer{});
+  Buffer& out = outBuffer.buffer;
+  size_t outSlots = 0;
+  uint32_t dispatch = 0;
+  for (uint32_t done = 0; done < perInvocation; ++dispatch) {
+    const uint32_t chunk = std::min(samplesPerDispatch_, perInvocation - done);
+    const size_t slots = n * kGroup * chunk;
+    if (slots > outSlots) {
+      context_.destroy(out);
+      out = context_.createBuffer(slots * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      outSlots = slots;
     }
+    auto* drawn = static_cast<glm::vec4*>(out.mapped);
+    std::fill(drawn, drawn + slots, glm::vec4(0.0f, 0.0f, 0.0f, kUnwritten));
+    // Seeds as the furnace's: seed + dispatch * 2^16.
+    run(in, out, static_cast<uint32_t>(n), static_cast<uint32_t>(n), chunk, seed + (dispatch << 16));
+    // Invocation i wrote slots [i chunk, (i + 1) chunk) in order: the first unwritten one is
+    // how many it drew.
+    uint32_t fewest = chunk;
+    for (size_t i = 0; i < n * kGroup && fewest == chunk; ++i) {
+      for (uint32_t s = 0; s < chunk; ++s) {
+        if (drawn[i * chunk + s].w == kUnwritten) {
+          fewest = std::min(fewest, s);
+          break;
+        }
+      }
+    }
+    if (fewest != chunk) {
+      shrinkAfterCut(fewest, chunk, "sampler");
+      continue;  // nothing of the cut dispatch is kept
+    }
+    for (size_t a = 0; a < n; ++a) {
+      for (size_t i = 0; i < size_t{kGroup} * chunk; ++i) {
+        const glm::vec4& d = drawn[a * kGroup * chunk + i];
+        SampledDirection sampled;
+        sampled.wi = glm::vec3(d);
+        sampled.kind = d.w > 1.5f   ? SampledDirection::Kind::Delta
+                       : d.w > 0.5f ? SampledDirection::Kind::Continuous
+                                    : SampledDirection::Kind::None;
+        result[a].push_back(sampled);
+      }
+    }
+    done += chunk;
   }
-  context_.destroy(in);
-  context_.destroy(out);
   return result;
 }
 
