@@ -49,6 +49,10 @@ struct MxcClosure
     float choiceTotal;
     float3 ms[2];
     float msT[2];
+    float3 msLobe[2];
+    float3 msLobeT[2];
+    float msPick[2];
+    float msSplit[2];
     float3 emission;
     float3 transparency;
 };
@@ -76,18 +80,18 @@ struct MxcLobeSample
 #define SPIRV_CROSS_CONSTANT_ID_0 -1
 #endif
 static const int MXC_ENVIRONMENT = SPIRV_CROSS_CONSTANT_ID_0;
-static const bool _216 = (MXC_ENVIRONMENT != (-1));
+static const bool _223 = (MXC_ENVIRONMENT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_1
 #define SPIRV_CROSS_CONSTANT_ID_1 -1
 #endif
 static const int MXC_LIGHT_COUNT = SPIRV_CROSS_CONSTANT_ID_1;
-static const bool _218 = (MXC_LIGHT_COUNT != (-1));
+static const bool _225 = (MXC_LIGHT_COUNT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_2
 #define SPIRV_CROSS_CONSTANT_ID_2 -1
 #endif
 static const int MXC_LIGHT_KINDS = SPIRV_CROSS_CONSTANT_ID_2;
-static const bool _220 = (MXC_LIGHT_KINDS != (-1));
-static const int _221 = _220 ? MXC_LIGHT_KINDS : 7;
+static const bool _227 = (MXC_LIGHT_KINDS != (-1));
+static const int _228 = _227 ? MXC_LIGHT_KINDS : 7;
 
 cbuffer MxcView : register(b1, space0)
 {
@@ -104,7 +108,7 @@ cbuffer MxcView : register(b1, space0)
 };
 
 ByteAddressBuffer mxc_params : register(t2, space0);
-ByteAddressBuffer _199 : register(t1, space1);
+ByteAddressBuffer _206 : register(t1, space1);
 Texture2D<float4> mxc_tables : register(t0, space0);
 SamplerState _mxc_tables_sampler : register(s0, space0);
 Texture2D<float4> mxc_env_radiance : register(t0, space1);
@@ -142,16 +146,16 @@ struct SPIRV_Cross_Output
 float3 mxc_safe_normalize(float3 v, float3 fallback)
 {
     float l2 = dot(v, v);
-    float3 _950;
+    float3 _957;
     if (l2 > 9.9999996826552253889678874634872e-21f)
     {
-        _950 = v * rsqrt(l2);
+        _957 = v * rsqrt(l2);
     }
     else
     {
-        _950 = fallback;
+        _957 = fallback;
     }
-    return _950;
+    return _957;
 }
 
 float3x3 mxc_frame(float3 N, float3 T)
@@ -200,17 +204,17 @@ bool mxc_index_matched(MxcLobe l)
 
 bool mxc_dielectric_walk_split(MxcLobe l, float3 wo)
 {
-    bool _2004 = wo.z <= 0.0f;
-    bool _2011;
-    if (!_2004)
+    bool _2011 = wo.z <= 0.0f;
+    bool _2018;
+    if (!_2011)
     {
-        _2011 = l.eta < 1.0f;
+        _2018 = l.eta < 1.0f;
     }
     else
     {
-        _2011 = _2004;
+        _2018 = _2011;
     }
-    if (_2011)
+    if (_2018)
     {
         return false;
     }
@@ -241,16 +245,16 @@ float4 mxc_dielectric_table(float mu, float alpha, float e)
 
 float mxc_dielectric_albedo(float mu, float alpha, float eta)
 {
-    float _1581;
+    float _1588;
     if (eta >= 1.0f)
     {
-        _1581 = eta;
+        _1588 = eta;
     }
     else
     {
-        _1581 = 1.0f / max(eta, 0.001000000047497451305389404296875f);
+        _1588 = 1.0f / max(eta, 0.001000000047497451305389404296875f);
     }
-    float e = _1581;
+    float e = _1588;
     float param = mu;
     float param_1 = alpha;
     float param_2 = e;
@@ -287,16 +291,16 @@ float mxc_walk_reflectance(float mu, float alpha, float eta)
 
 float mxc_lobe_eta(MxcLobe l, bool above)
 {
-    float _1709;
+    float _1716;
     if (above)
     {
-        _1709 = l.eta;
+        _1716 = l.eta;
     }
     else
     {
-        _1709 = 1.0f / l.eta;
+        _1716 = 1.0f / l.eta;
     }
-    return _1709;
+    return _1716;
 }
 
 float mxc_dielectric_albedo_rt(float mu, float alpha, float eta)
@@ -362,68 +366,68 @@ float3 mxc_lobe_fresnel(MxcLobe l, float _cosh, bool above)
 
 float3 mxc_lobe_ms_scale(MxcLobe l, float3 wo)
 {
-    bool _2135 = l.kind == 1;
-    bool _2142;
-    if (!_2135)
-    {
-        _2142 = l.kind == 2;
-    }
-    else
-    {
-        _2142 = _2135;
-    }
+    bool _2142 = l.kind == 1;
     bool _2149;
     if (!_2142)
     {
-        _2149 = l.kind == 3;
+        _2149 = l.kind == 2;
     }
     else
     {
         _2149 = _2142;
     }
-    bool microfacet = _2149;
-    bool _2151 = !microfacet;
-    bool _2158;
-    if (!_2151)
+    bool _2156;
+    if (!_2149)
     {
-        float2 param = l.alpha;
-        _2158 = mxc_is_delta(param);
+        _2156 = l.kind == 3;
     }
     else
     {
-        _2158 = _2151;
+        _2156 = _2149;
     }
-    if (_2158)
+    bool microfacet = _2156;
+    bool _2158 = !microfacet;
+    bool _2165;
+    if (!_2158)
+    {
+        float2 param = l.alpha;
+        _2165 = mxc_is_delta(param);
+    }
+    else
+    {
+        _2165 = _2158;
+    }
+    if (_2165)
     {
         return 1.0f.xxx;
     }
     float alpha = sqrt(l.alpha.x * l.alpha.y);
-    bool _2169 = l.kind == 1;
-    bool _2174;
-    if (_2169)
+    bool _2176 = l.kind == 1;
+    bool _2181;
+    if (_2176)
     {
         MxcLobe param_1 = l;
-        _2174 = mxc_index_matched(param_1);
+        _2181 = mxc_index_matched(param_1);
     }
     else
     {
-        _2174 = _2169;
+        _2181 = _2176;
     }
-    if (_2174)
+    if (_2181)
     {
         return 1.0f.xxx;
     }
-    bool _2179 = l.kind == 1;
-    bool _2186;
-    if (_2179)
+    bool _2186 = l.kind == 1;
+    bool _2193;
+    if (_2186)
     {
-        _2186 = (l.mode & 4) == 0;
+        _2193 = (l.mode & 4) == 0;
     }
     else
     {
-        _2186 = _2179;
+        _2193 = _2186;
     }
-    if (_2186)
+    if (_2193)
     {
         MxcLobe param_2 = l;
         float3 param_3 = wo;
@@ -460,40 +464,40 @@ float3 mxc_lobe_ms_scale(MxcLobe l, float3 wo)
 float3 mxc_lobe_albedo_scaled(MxcLobe l, float3 wo, float3 ms)
 {
     float mu = clamp(wo.z, 0.0f, 1.0f);
-    bool _2281 = l.kind == 1;
-    bool _2288;
-    if (!_2281)
+    bool _2385 = l.kind == 1;
+    bool _2392;
+    if (!_2385)
     {
-        _2288 = l.kind == 2;
+        _2392 = l.kind == 2;
     }
     else
     {
-        _2288 = _2281;
+        _2392 = _2385;
     }
-    bool _2295;
-    if (!_2288)
+    bool _2399;
+    if (!_2392)
     {
-        _2295 = l.kind == 3;
+        _2399 = l.kind == 3;
     }
     else
     {
-        _2295 = _2288;
+        _2399 = _2392;
     }
-    if (_2295)
+    if (_2399)
     {
         float alpha = sqrt(l.alpha.x * l.alpha.y);
-        bool _2306 = l.kind == 1;
-        bool _2313;
-        if (_2306)
+        bool _2410 = l.kind == 1;
+        bool _2417;
+        if (_2410)
         {
             float2 param = l.alpha;
-            _2313 = !mxc_is_delta(param);
+            _2417 = !mxc_is_delta(param);
         }
         else
         {
-            _2313 = _2306;
+            _2417 = _2410;
         }
-        if (_2313)
+        if (_2417)
         {
             float param_1 = mu;
             float param_2 = alpha;
@@ -512,16 +516,16 @@ float3 mxc_lobe_albedo_scaled(MxcLobe l, float3 wo, float3 ms)
         float param_10 = 0.0f;
         bool param_11 = true;
         float3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
-        float3 _2271;
+        float3 _2375;
         if (l.kind == 1)
         {
-            _2271 = l.c0;
+            _2375 = l.c0;
         }
         else
         {
-            _2271 = 1.0f.xxx;
+            _2375 = 1.0f.xxx;
         }
-        float3 tint = _2271;
+        float3 tint = _2375;
         float2 param_12 = l.alpha;
         if (mxc_is_delta(param_12))
         {
@@ -551,17 +555,17 @@ float3 mxc_lobe_albedo(MxcLobe l, float3 wo)
 
 float3 mxc_lobe_layer_albedo(MxcLobe l, float3 wo)
 {
-    bool _2408 = l.kind == 9;
-    bool _2415;
-    if (!_2408)
+    bool _2512 = l.kind == 9;
+    bool _2519;
+    if (!_2512)
     {
-        _2415 = l.kind == 10;
+        _2519 = l.kind == 10;
     }
     else
     {
-        _2415 = _2408;
+        _2519 = _2512;
     }
-    if (_2415)
+    if (_2519)
     {
         MxcLobe white = l;
         white.c0 = 1.0f.xxx;
@@ -576,48 +580,48 @@ float3 mxc_lobe_layer_albedo(MxcLobe l, float3 wo)
 
 float mxc_lobe_ms_transmit(MxcLobe l, float3 wo, float3 ms)
 {
-    bool _2037 = l.kind != 1;
-    bool _2044;
-    if (!_2037)
-    {
-        float2 param = l.alpha;
-        _2044 = mxc_is_delta(param);
-    }
-    else
-    {
-        _2044 = _2037;
-    }
-    bool _2050;
+    bool _2044 = l.kind != 1;
+    bool _2051;
     if (!_2044)
     {
+        float2 param = l.alpha;
+        _2051 = mxc_is_delta(param);
+    }
+    else
+    {
+        _2051 = _2044;
+    }
+    bool _2057;
+    if (!_2051)
+    {
         MxcLobe param_1 = l;
-        _2050 = mxc_index_matched(param_1);
+        _2057 = mxc_index_matched(param_1);
     }
     else
     {
-        _2050 = _2044;
+        _2057 = _2051;
     }
-    bool _2058;
-    if (!_2050)
+    bool _2065;
+    if (!_2057)
     {
-        _2058 = (l.mode & 4) != 0;
+        _2065 = (l.mode & 4) != 0;
     }
     else
     {
-        _2058 = _2050;
+        _2065 = _2057;
     }
-    bool _2066;
-    if (!_2058)
+    bool _2073;
+    if (!_2065)
     {
         MxcLobe param_2 = l;
         float3 param_3 = wo;
-        _2066 = !mxc_dielectric_walk_split(param_2, param_3);
+        _2073 = !mxc_dielectric_walk_split(param_2, param_3);
     }
     else
     {
-        _2066 = _2058;
+        _2073 = _2065;
     }
-    if (_2066)
+    if (_2073)
     {
         return ms.x;
     }
@@ -654,14 +658,114 @@ float mxc_lobe_choice(MxcLobe l, float3 woLocal, float3 ms)
     return max(mxc_luminance(param_3), 0.0f) + 9.9999997473787516355514526367188e-05f;
 }
 
+bool mxc_lobe_ms_shaped(MxcLobe l, float3 wo)
+{
+    bool _2264 = wo.z <= 0.0f;
+    bool _2271;
+    if (!_2264)
+    {
+        float2 param = l.alpha;
+        _2271 = mxc_is_delta(param);
+    }
+    else
+    {
+        _2271 = _2264;
+    }
+    if (_2271)
+    {
+        return false;
+    }
+    if (l.kind == 2)
+    {
+        return true;
+    }
+    if (l.kind == 3)
+    {
+        return (l.mode & 1) != 0;
+    }
+    bool _2290 = l.kind == 1;
+    bool _2297;
+    if (_2290)
+    {
+        _2297 = (l.mode & 1) != 0;
+    }
+    else
+    {
+        _2297 = _2290;
+    }
+    bool _2304;
+    if (_2297)
+    {
+        _2304 = (l.mode & 4) == 0;
+    }
+    else
+    {
+        _2304 = _2297;
+    }
+    bool _2310;
+    if (_2304)
+    {
+        MxcLobe param_1 = l;
+        _2310 = !mxc_index_matched(param_1);
+    }
+    else
+    {
+        _2310 = _2304;
+    }
+    bool _2316;
+    if (_2310)
+    {
+        MxcLobe param_2 = l;
+        float3 param_3 = wo;
+        _2316 = mxc_dielectric_walk_split(param_2, param_3);
+    }
+    else
+    {
+        _2316 = _2310;
+    }
+    return _2316;
+}
+
+bool mxc_lobe_transmits(MxcLobe l)
+{
+    return false;
+}
+
+MxcLobe mxc_ms_lobe(MxcLobe l, bool transmitted)
+{
+    MxcLobe m = l;
+    m.alpha = min(l.alpha * (transmitted ? 3.0f : 1.5f), 1.0f.xx);
+    int _2322;
+    if (transmitted)
+    {
+        _2322 = l.mode & (-2);
+    }
+    else
+    {
+        _2322 = l.mode & (-3);
+    }
+    m.mode = _2322;
+    if (l.kind == 1)
+    {
+        m.c0 = 1.0f.xxx;
+        m.c1 = 1.0f.xxx;
+    }
+    return m;
+}
+
 void mxc_closure_prepare(inout MxcClosure c, float3 wo)
 {
     c.choiceTotal = 0.0f;
+    float _3080;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
         c.ms[k] = 1.0f.xxx;
         c.msT[k] = 1.0f;
+        c.msLobe[k] = 0.0f.xxx;
+        c.msLobeT[k] = 0.0f.xxx;
+        c.msPick[k] = 0.0f;
+        c.msSplit[k] = 1.0f;
         c.choice[k] = 0.0f;
         if (all(bool3(l.weight.x == 0.0f.xxx.x, l.weight.y == 0.0f.xxx.y, l.weight.z == 0.0f.xxx.z)))
         {
@@ -674,16 +778,110 @@ void mxc_closure_prepare(inout MxcClosure c, float3 wo)
         float3 o = mxc_to_local(param_2, param_3);
         MxcLobe param_4 = l;
         float3 param_5 = o;
-        c.ms[k] = mxc_lobe_ms_scale(param_4, param_5);
+        float3 ms = mxc_lobe_ms_scale(param_4, param_5);
         MxcLobe param_6 = l;
         float3 param_7 = o;
-        float3 param_8 = c.ms[k];
+        float3 param_8 = ms;
         c.msT[k] = mxc_lobe_ms_transmit(param_6, param_7, param_8);
         MxcLobe param_9 = l;
         float3 param_10 = o;
-        float3 param_11 = c.ms[k];
+        float3 param_11 = ms;
         c.choice[k] = mxc_lobe_choice(param_9, param_10, param_11);
         c.choiceTotal += c.choice[k];
+        MxcLobe param_12 = l;
+        float3 param_13 = o;
+        if (mxc_lobe_ms_shaped(param_12, param_13))
+        {
+            float alpha = sqrt(l.alpha.x * l.alpha.y);
+            MxcLobe param_14 = l;
+            float3 param_15 = o;
+            float3 param_16 = 1.0f.xxx;
+            float3 reflected = mxc_lobe_albedo_scaled(param_14, param_15, param_16);
+            MxcLobe param_17 = l;
+            float3 param_18 = o;
+            float3 param_19 = ms;
+            float3 addedR = max(mxc_lobe_albedo_scaled(param_17, param_18, param_19) - reflected, 0.0f.xxx);
+            float3 transmitted = 0.0f.xxx;
+            float3 addedT = 0.0f.xxx;
+            bool _3168 = l.kind == 1;
+            bool _3173;
+            if (_3168)
+            {
+                MxcLobe param_20 = l;
+                _3173 = mxc_lobe_transmits(param_20);
+            }
+            else
+            {
+                _3173 = _3168;
+            }
+            if (_3173)
+            {
+                float param_21 = o.z;
+                float param_22 = alpha;
+                float param_23 = l.eta;
+                float rss = mxc_dielectric_albedo(param_21, param_22, param_23);
+                float param_24 = o.z;
+                float param_25 = alpha;
+                float param_26 = l.eta;
+                transmitted = l.c1 * max(mxc_dielectric_albedo_rt(param_24, param_25, param_26) - rss, 0.0f);
+                addedT = transmitted * max(c.msT[k] - 1.0f, 0.0f);
+            }
+            MxcLobe param_27 = l;
+            bool param_28 = false;
+            MxcLobe mr = mxc_ms_lobe(param_27, param_28);
+            MxcLobe param_29 = mr;
+            float3 param_30 = o;
+            float3 param_31 = 1.0f.xxx;
+            float3 broadR = mxc_lobe_albedo_scaled(param_29, param_30, param_31);
+            float broadT = 1.0f;
+            bool _3208 = l.kind == 1;
+            bool _3213;
+            if (_3208)
+            {
+                MxcLobe param_32 = l;
+                _3213 = mxc_lobe_transmits(param_32);
+            }
+            else
+            {
+                _3213 = _3208;
+            }
+            if (_3213)
+            {
+                MxcLobe param_33 = l;
+                bool param_34 = true;
+                MxcLobe mt = mxc_ms_lobe(param_33, param_34);
+                float at = sqrt(mt.alpha.x * mt.alpha.y);
+                float param_35 = o.z;
+                float param_36 = at;
+                float param_37 = l.eta;
+                float param_38 = o.z;
+                float param_39 = at;
+                float param_40 = l.eta;
+                broadT = mxc_dielectric_albedo_rt(param_35, param_36, param_37) - mxc_dielectric_albedo(param_38, param_39, param_40);
+            }
+            c.msLobe[k] = addedR / max(broadR, 9.9999997473787516355514526367188e-05f.xxx);
+            c.msLobeT[k] = addedT / max(broadT, 9.9999997473787516355514526367188e-05f).xxx;
+            float3 param_41 = ((reflected + addedR) + transmitted) + addedT;
+            float total = max(mxc_luminance(param_41), 9.9999999747524270787835121154785e-07f);
+            float3 param_42 = addedR + addedT;
+            float added = mxc_luminance(param_42);
+            c.msPick[k] = 0.999000012874603271484375f * min(added / total, 1.0f);
+            if (added > 0.0f)
+            {
+                float3 param_43 = addedR;
+                _3080 = mxc_luminance(param_43) / added;
+            }
+            else
+            {
+                _3080 = 1.0f;
+            }
+            c.msSplit[k] = _3080;
+            c.msT[k] = 1.0f;
+        }
+        else
+        {
+            c.ms[k] = ms;
+        }
     }
 }
 
@@ -744,35 +942,35 @@ void mxc_material_closure(MxcGeometry g, float3 wo, inout MxcClosure c)
 
 int mxc_light_count()
 {
-    int _3671;
-    if (_218)
+    int _4127;
+    if (_225)
     {
-        _3671 = MXC_LIGHT_COUNT;
+        _4127 = MXC_LIGHT_COUNT;
     }
     else
     {
-        _3671 = mxc_view_counts.x;
+        _4127 = mxc_view_counts.x;
     }
-    return min(_3671, 8);
+    return min(_4127, 8);
 }
 
 int mxc_light_kinds()
 {
-    return _221;
+    return _228;
 }
 
 int mxc_environment_code()
 {
-    int _3663;
-    if (_216)
+    int _4119;
+    if (_223)
     {
-        _3663 = MXC_ENVIRONMENT;
+        _4119 = MXC_ENVIRONMENT;
     }
     else
     {
-        _3663 = mxc_view_counts.y;
+        _4119 = mxc_view_counts.y;
     }
-    return _3663;
+    return _4119;
 }
 
 float mxc_uniform(inout uint seed)
@@ -854,36 +1052,36 @@ float mxc_ggx_g2(float3 wo, float3 wi, float2 alpha)
 {
     float3 param = wo;
     float2 param_1 = alpha;
-    float _1254 = mxc_ggx_lambda(param, param_1);
+    float _1261 = mxc_ggx_lambda(param, param_1);
     float3 param_2 = wi;
     float2 param_3 = alpha;
-    float _1258 = mxc_ggx_lambda(param_2, param_3);
-    return 1.0f / ((1.0f + _1254) + _1258);
+    float _1265 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0f / ((1.0f + _1261) + _1265);
 }
 
 float3 mxc_microfacet_reflect(MxcLobe l, float3 wo, float3 wi)
 {
-    bool _1768 = wo.z <= 0.0f;
-    bool _1775;
-    if (!_1768)
-    {
-        _1775 = wi.z <= 0.0f;
-    }
-    else
-    {
-        _1775 = _1768;
-    }
+    bool _1775 = wo.z <= 0.0f;
     bool _1782;
     if (!_1775)
     {
-        float2 param = l.alpha;
-        _1782 = mxc_is_delta(param);
+        _1782 = wi.z <= 0.0f;
     }
     else
     {
         _1782 = _1775;
     }
-    if (_1782)
+    bool _1789;
+    if (!_1782)
+    {
+        float2 param = l.alpha;
+        _1789 = mxc_is_delta(param);
+    }
+    else
+    {
+        _1789 = _1782;
+    }
+    if (_1789)
     {
         return 0.0f.xxx;
     }
@@ -898,27 +1096,27 @@ float3 mxc_microfacet_reflect(MxcLobe l, float3 wo, float3 wi)
     }
     float3 param_4 = h;
     float2 param_5 = l.alpha;
-    float _1808 = mxc_ggx_d(param_4, param_5);
+    float _1815 = mxc_ggx_d(param_4, param_5);
     float3 param_6 = wo;
     float3 param_7 = wi;
     float2 param_8 = l.alpha;
-    return ((f * _1808) * mxc_ggx_g2(param_6, param_7, param_8)) / (4.0f * wo.z).xxx;
+    return ((f * _1815) * mxc_ggx_g2(param_6, param_7, param_8)) / (4.0f * wo.z).xxx;
 }
 
 float mxc_fon(float sigma, float3 wo, float3 wi)
 {
     float a = 1.0f / (1.0f + (0.2877933979034423828125f * sigma));
     float s = dot(wi, wo) - (wi.z * wo.z);
-    float _1829;
+    float _1836;
     if (s > 0.0f)
     {
-        _1829 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07f);
+        _1836 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07f);
     }
     else
     {
-        _1829 = 1.0f;
+        _1836 = 1.0f;
     }
-    float t = _1829;
+    float t = _1836;
     return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375f;
 }
 
@@ -929,16 +1127,16 @@ float mxc_fon_albedo(float sigma, float mu)
     float param = 1.0f - (c * c);
     float s = mxc_safe_sqrt(param);
     float theta = acos(c);
-    float _1875;
+    float _1882;
     if (c > 9.9999997473787516355514526367188e-05f)
     {
-        _1875 = (1.0f - ((s * s) * s)) / c;
+        _1882 = (1.0f - ((s * s) * s)) / c;
     }
     else
     {
-        _1875 = 1.5f * c;
+        _1882 = 1.5f * c;
     }
-    float tail = _1875;
+    float tail = _1882;
     float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875f * s) * tail)) - (0.666666686534881591796875f * s);
     return a + (((sigma * a) * g) * 0.3183098733425140380859375f);
 }
@@ -995,17 +1193,17 @@ float3 mxc_lobe_eval(MxcLobe l, float3 wo, float3 wi)
         case 2:
         case 3:
         {
-            bool _2490 = l.kind == 3;
-            bool _2497;
-            if (_2490)
+            bool _2594 = l.kind == 3;
+            bool _2601;
+            if (_2594)
             {
-                _2497 = (l.mode & 1) == 0;
+                _2601 = (l.mode & 1) == 0;
             }
             else
             {
-                _2497 = _2490;
+                _2601 = _2594;
             }
-            if (_2497)
+            if (_2601)
             {
                 return 0.0f.xxx;
             }
@@ -1016,30 +1214,30 @@ float3 mxc_lobe_eval(MxcLobe l, float3 wo, float3 wi)
         }
         case 5:
         {
-            bool _2506 = wo.z > 0.0f;
-            bool _2512;
-            if (_2506)
+            bool _2610 = wo.z > 0.0f;
+            bool _2616;
+            if (_2610)
             {
-                _2512 = wi.z > 0.0f;
+                _2616 = wi.z > 0.0f;
             }
             else
             {
-                _2512 = _2506;
+                _2616 = _2610;
             }
-            float3 _2441;
-            if (_2512)
+            float3 _2545;
+            if (_2616)
             {
                 float3 param_9 = l.c0;
                 float param_10 = l.p0;
                 float3 param_11 = wo;
                 float3 param_12 = wi;
-                _2441 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
+                _2545 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
             }
             else
             {
-                _2441 = 0.0f.xxx;
+                _2545 = 0.0f.xxx;
             }
-            return _2441;
+            return _2545;
         }
         default:
         {
@@ -1052,8 +1250,8 @@ float mxc_ggx_g1(float3 v, float2 alpha)
 {
     float3 param = v;
     float2 param_1 = alpha;
-    float _1240 = mxc_ggx_lambda(param, param_1);
-    return 1.0f / (1.0f + _1240);
+    float _1247 = mxc_ggx_lambda(param, param_1);
+    return 1.0f / (1.0f + _1247);
 }
 
 float mxc_ggx_pdf_vndf(float3 wo, float3 m, float2 alpha)
@@ -1066,18 +1264,13 @@ float mxc_ggx_pdf_vndf(float3 wo, float3 m, float2 alpha)
     float2 param_1 = alpha;
     float3 param_2 = m;
     float2 param_3 = alpha;
-    float _1413 = mxc_ggx_d(param_2, param_3);
-    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0f)) * _1413) / wo.z;
+    float _1420 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0f)) * _1420) / wo.z;
 }
 
 float mxc_mean(float3 c)
 {
     return ((c.x + c.y) + c.z) * 0.3333333432674407958984375f;
-}
-
-bool mxc_lobe_transmits(MxcLobe l)
-{
-    return false;
 }
 
 float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
@@ -1094,26 +1287,26 @@ float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
                 return 0.0f;
             }
             bool above = wo.z > 0.0f;
-            float3 _2535;
+            float3 _2639;
             if (above)
             {
-                _2535 = wo;
+                _2639 = wo;
             }
             else
             {
-                _2535 = -wo;
+                _2639 = -wo;
             }
-            float3 o = _2535;
-            float3 _2537;
+            float3 o = _2639;
+            float3 _2641;
             if (above)
             {
-                _2537 = wi;
+                _2641 = wi;
             }
             else
             {
-                _2537 = -wi;
+                _2641 = -wi;
             }
-            float3 i = _2537;
+            float3 i = _2641;
             if (i.z > 0.0f)
             {
                 float3 h = normalize(o + i);
@@ -1135,42 +1328,42 @@ float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
                 float3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
                 float fr = mxc_mean(param_7);
                 MxcLobe param_8 = l;
-                bool _2637 = mxc_lobe_transmits(param_8);
-                bool _2644;
-                if (_2637)
+                bool _2741 = mxc_lobe_transmits(param_8);
+                bool _2748;
+                if (_2741)
                 {
-                    _2644 = (l.mode & 1) != 0;
+                    _2748 = (l.mode & 1) != 0;
                 }
                 else
                 {
-                    _2644 = _2637;
+                    _2748 = _2741;
                 }
-                return p * (_2644 ? fr : 1.0f);
+                return p * (_2748 ? fr : 1.0f);
             }
             return 0.0f;
         }
         default:
         {
-            bool _2557 = wo.z > 0.0f;
-            bool _2563;
-            if (_2557)
+            bool _2661 = wo.z > 0.0f;
+            bool _2667;
+            if (_2661)
             {
-                _2563 = wi.z > 0.0f;
+                _2667 = wi.z > 0.0f;
             }
             else
             {
-                _2563 = _2557;
+                _2667 = _2661;
             }
-            float _2549;
-            if (_2563)
+            float _2653;
+            if (_2667)
             {
-                _2549 = wi.z * 0.3183098733425140380859375f;
+                _2653 = wi.z * 0.3183098733425140380859375f;
             }
             else
             {
-                _2549 = 0.0f;
+                _2653 = 0.0f;
             }
-            return _2549;
+            return _2653;
         }
     }
 }
@@ -1181,16 +1374,16 @@ float3 mxc_ggx_sample_vndf(float3 wo, inout float2 alpha, float2 u)
     alpha = mxc_rough_alpha(param);
     float3 vh = normalize(float3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lensq = (vh.x * vh.x) + (vh.y * vh.y);
-    float3 _1270;
+    float3 _1277;
     if (lensq > 0.0f)
     {
-        _1270 = float3(-vh.y, vh.x, 0.0f) * rsqrt(lensq);
+        _1277 = float3(-vh.y, vh.x, 0.0f) * rsqrt(lensq);
     }
     else
     {
-        _1270 = float3(1.0f, 0.0f, 0.0f);
+        _1277 = float3(1.0f, 0.0f, 0.0f);
     }
-    float3 t1 = _1270;
+    float3 t1 = _1277;
     float3 t2 = cross(vh, t1);
     float r = sqrt(u.x);
     float phi = 6.283185482025146484375f * u.y;
@@ -1219,94 +1412,94 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, float3 wo, float3 u)
         case 3:
         {
             bool above = wo.z > 0.0f;
-            float3 _2656;
+            float3 _2760;
             if (above)
             {
-                _2656 = wo;
+                _2760 = wo;
             }
             else
             {
-                _2656 = -wo;
+                _2760 = -wo;
             }
-            float3 o = _2656;
+            float3 o = _2760;
             if (o.z <= 0.0f)
             {
                 return s;
             }
             float2 param = l.alpha;
             bool delta = mxc_is_delta(param);
-            float3 _2660;
+            float3 _2764;
             if (delta)
             {
-                _2660 = float3(0.0f, 0.0f, 1.0f);
+                _2764 = float3(0.0f, 0.0f, 1.0f);
             }
             else
             {
                 float3 param_1 = o;
                 float2 param_2 = l.alpha;
                 float2 param_3 = u.xy;
-                float3 _2761 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
-                _2660 = _2761;
+                float3 _2865 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2764 = _2865;
             }
-            float3 m = _2660;
+            float3 m = _2764;
             float hm = dot(o, m);
-            bool _2768 = l.kind == 1;
-            bool _2775;
-            if (!_2768)
+            bool _2872 = l.kind == 1;
+            bool _2879;
+            if (!_2872)
             {
-                _2775 = l.kind == 3;
+                _2879 = l.kind == 3;
             }
             else
             {
-                _2775 = _2768;
+                _2879 = _2872;
             }
-            bool _2780;
-            if (_2775)
+            bool _2884;
+            if (_2879)
             {
                 MxcLobe param_4 = l;
-                _2780 = mxc_lobe_transmits(param_4);
+                _2884 = mxc_lobe_transmits(param_4);
             }
             else
             {
-                _2780 = _2775;
+                _2884 = _2879;
             }
-            bool transmits = _2780;
-            bool _2783 = l.kind == 2;
-            bool _2791;
-            if (!_2783)
+            bool transmits = _2884;
+            bool _2887 = l.kind == 2;
+            bool _2895;
+            if (!_2887)
             {
-                _2791 = (l.mode & 1) != 0;
+                _2895 = (l.mode & 1) != 0;
             }
             else
             {
-                _2791 = _2783;
+                _2895 = _2887;
             }
-            bool reflects = _2791;
+            bool reflects = _2895;
             MxcLobe param_5 = l;
             float param_6 = max(hm, 0.0f);
             bool param_7 = above;
             float3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
-            float _2673;
+            float _2777;
             if (transmits)
             {
                 float3 param_8 = f;
-                _2673 = mxc_mean(param_8);
+                _2777 = mxc_mean(param_8);
             }
             else
             {
-                _2673 = 1.0f;
+                _2777 = 1.0f;
             }
-            float fr = _2673;
-            float _2676;
+            float fr = _2777;
+            float _2780;
             if (transmits)
             {
-                _2676 = reflects ? fr : 0.0f;
+                _2780 = reflects ? fr : 0.0f;
             }
             else
             {
-                _2676 = 1.0f;
+                _2780 = 1.0f;
             }
-            float pReflect = _2676;
+            float pReflect = _2780;
             if (u.z < pReflect)
             {
                 float3 i = reflect(-o, m);
@@ -1314,38 +1507,38 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, float3 wo, float3 u)
                 {
                     return s;
                 }
-                float3 _2678;
+                float3 _2782;
                 if (above)
                 {
-                    _2678 = i;
+                    _2782 = i;
                 }
                 else
                 {
-                    _2678 = -i;
+                    _2782 = -i;
                 }
-                s.wi = _2678;
+                s.wi = _2782;
                 s.delta = delta;
                 if (delta)
                 {
-                    float3 _2680;
+                    float3 _2784;
                     if (l.kind == 1)
                     {
-                        float3 _2681;
+                        float3 _2785;
                         if (above)
                         {
-                            _2681 = l.c0;
+                            _2785 = l.c0;
                         }
                         else
                         {
-                            _2681 = 1.0f.xxx;
+                            _2785 = 1.0f.xxx;
                         }
-                        _2680 = _2681;
+                        _2784 = _2785;
                     }
                     else
                     {
-                        _2680 = 1.0f.xxx;
+                        _2784 = 1.0f.xxx;
                     }
-                    float3 tint = _2680;
+                    float3 tint = _2784;
                     s.value = f * tint;
                     s.pdf = pReflect;
                 }
@@ -1452,24 +1645,59 @@ MxcSample mxc_closure_sample_direction(MxcClosure c, float3 wo, float3 u)
     float3x3 param_2 = frame;
     float3 param_3 = wo;
     float3 o = mxc_to_local(param_2, param_3);
-    MxcLobe param_4 = l;
-    float3 param_5 = o;
-    float3 param_6 = float3(u.xy, uz);
-    MxcLobeSample ls = mxc_lobe_sample(param_4, param_5, param_6);
+    float q = c.msPick[chosen];
+    bool shaped = uz < q;
+    bool reflected = true;
+    if (shaped)
+    {
+        float v = uz / q;
+        float split = c.msSplit[chosen];
+        reflected = v < split;
+        float _3534;
+        if (reflected)
+        {
+            _3534 = v / max(split, 9.9999999747524270787835121154785e-07f);
+        }
+        else
+        {
+            _3534 = (v - split) / max(1.0f - split, 9.9999999747524270787835121154785e-07f);
+        }
+        uz = _3534;
+    }
+    else
+    {
+        uz = (uz - q) / (1.0f - q);
+    }
+    MxcLobe _3536;
+    if (shaped)
+    {
+        MxcLobe param_4 = l;
+        bool param_5 = !reflected;
+        _3536 = mxc_ms_lobe(param_4, param_5);
+    }
+    else
+    {
+        _3536 = l;
+    }
+    MxcLobe m = _3536;
+    MxcLobe param_6 = m;
+    float3 param_7 = o;
+    float3 param_8 = float3(u.xy, min(uz, 0.999999940395355224609375f));
+    MxcLobeSample ls = mxc_lobe_sample(param_6, param_7, param_8);
     if (!ls.valid)
     {
         return s;
     }
-    float3x3 param_7 = frame;
-    float3 param_8 = ls.wi;
-    s.wi = mxc_to_world(param_7, param_8);
+    float3x3 param_9 = frame;
+    float3 param_10 = ls.wi;
+    s.wi = mxc_to_world(param_9, param_10);
     if (ls.delta)
     {
         s.delta = true;
         s.pdf = (ls.pdf * p) / total;
-        MxcLobe param_9 = l;
-        float param_10 = abs(ls.wi.z);
-        s.weight = (((l.weight * c.ms[chosen]) * mxc_lobe_absorption(param_9, param_10)) * ls.value) / s.pdf.xxx;
+        MxcLobe param_11 = l;
+        float param_12 = abs(ls.wi.z);
+        s.weight = (((l.weight * c.ms[chosen]) * mxc_lobe_absorption(param_11, param_12)) * ls.value) / s.pdf.xxx;
         s.valid = s.pdf > 0.0f;
         return s;
     }
@@ -1513,16 +1741,16 @@ float3 mxc_env_to_map(float3 w, float angle)
 
 float2 mxc_env_uv(float3 d)
 {
-    float _3373;
+    float _3829;
     if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13f)
     {
-        _3373 = 0.5f + (atan2(d.x, -d.z) * 0.15915493667125701904296875f);
+        _3829 = 0.5f + (atan2(d.x, -d.z) * 0.15915493667125701904296875f);
     }
     else
     {
-        _3373 = 0.5f;
+        _3829 = 0.5f;
     }
-    float u = _3373;
+    float u = _3829;
     float v = atan2(length(d.xz), d.y) * 0.3183098733425140380859375f;
     return float2(u, v);
 }
@@ -1559,7 +1787,7 @@ uint mxc_env_cell(float3 d)
 {
     float3 param = d;
     float2 uv = mxc_env_uv(param);
-    uint2 size = max(_199.Load4(0).xy, uint2(1u, 1u));
+    uint2 size = max(_206.Load4(0).xy, uint2(1u, 1u));
     uint i = min(uint(max(uv.x, 0.0f) * float(size.x)), (size.x - 1u));
     uint j = min(uint(max(uv.y, 0.0f) * float(size.y)), (size.y - 1u));
     return (j * size.x) + i;
@@ -1568,36 +1796,36 @@ uint mxc_env_cell(float3 d)
 float mxc_env_pdf(float3 d)
 {
     float3 param = d;
-    return asfloat(_199.Load(mxc_env_cell(param) * 16 + 24));
+    return asfloat(_206.Load(mxc_env_cell(param) * 16 + 24));
 }
 
 float mxc_power_heuristic(float a, float b)
 {
     float a2 = a * a;
     float b2 = b * b;
-    float _3763;
+    float _4219;
     if ((a2 + b2) > 0.0f)
     {
-        _3763 = a2 / (a2 + b2);
+        _4219 = a2 / (a2 + b2);
     }
     else
     {
-        _3763 = 0.0f;
+        _4219 = 0.0f;
     }
-    return _3763;
+    return _4219;
 }
 
 float3 mxc_env_sample(float4 u, out float pdf)
 {
-    uint2 size = max(_199.Load4(0).xy, uint2(1u, 1u));
+    uint2 size = max(_206.Load4(0).xy, uint2(1u, 1u));
     uint n = size.x * size.y;
     uint k = min(uint(u.x * float(n)), (n - 1u));
-    float4 cell = asfloat(_199.Load4(k * 16 + 16));
+    float4 cell = asfloat(_206.Load4(k * 16 + 16));
     if (u.y >= cell.x)
     {
         k = min(asuint(cell.y), (n - 1u));
     }
-    pdf = asfloat(_199.Load(k * 16 + 24));
+    pdf = asfloat(_206.Load(k * 16 + 24));
     uint i = k % size.x;
     uint j = k / size.x;
     float phi = 6.283185482025146484375f * (((float(i) + u.z) / float(size.x)) - 0.5f);
@@ -1620,7 +1848,12 @@ float3 mxc_closure_eval_pdf(MxcClosure c, float3 wo, float3 wi, bool wantPdf, in
 {
     float3 f = 0.0f.xxx;
     float p = 0.0f;
-    float3 _3013;
+    MxcLobe _3314;
+    float3 _3318;
+    float3 _3319;
+    float3 _3320;
+    float _3325;
+    float _3326;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
@@ -1637,39 +1870,95 @@ float3 mxc_closure_eval_pdf(MxcClosure c, float3 wo, float3 wi, bool wantPdf, in
         float3x3 param_4 = frame;
         float3 param_5 = wi;
         float3 i = mxc_to_local(param_4, param_5);
-        if ((o.z * i.z) < 0.0f)
+        float3 fk = 0.0f.xxx;
+        float pk = 0.0f;
+        int passes = (c.msPick[k] > 0.0f) ? 2 : 1;
+        for (int _pass = 0; _pass < passes; _pass++)
         {
-            _3013 = c.msT[k].xxx;
+            bool shaped = _pass == 1;
+            if (shaped)
+            {
+                MxcLobe param_6 = l;
+                bool param_7 = i.z < 0.0f;
+                _3314 = mxc_ms_lobe(param_6, param_7);
+            }
+            else
+            {
+                _3314 = l;
+            }
+            MxcLobe m = _3314;
+            if (shaped)
+            {
+                if (i.z > 0.0f)
+                {
+                    _3319 = c.msLobe[k];
+                }
+                else
+                {
+                    _3319 = c.msLobeT[k];
+                }
+                _3318 = _3319;
+            }
+            else
+            {
+                if ((o.z * i.z) < 0.0f)
+                {
+                    _3320 = c.msT[k].xxx;
+                }
+                else
+                {
+                    _3320 = c.ms[k];
+                }
+                _3318 = _3320;
+            }
+            float3 scale = _3318;
+            MxcLobe param_8 = m;
+            float3 param_9 = o;
+            float3 param_10 = i;
+            fk += (scale * mxc_lobe_eval(param_8, param_9, param_10));
+            if (wantPdf)
+            {
+                if (shaped)
+                {
+                    if (i.z > 0.0f)
+                    {
+                        _3326 = c.msSplit[k];
+                    }
+                    else
+                    {
+                        _3326 = 1.0f - c.msSplit[k];
+                    }
+                    _3325 = c.msPick[k] * _3326;
+                }
+                else
+                {
+                    _3325 = 1.0f - c.msPick[k];
+                }
+                float share = _3325;
+                MxcLobe param_11 = m;
+                float3 param_12 = o;
+                float3 param_13 = i;
+                pk += (share * mxc_lobe_pdf(param_11, param_12, param_13));
+            }
         }
-        else
-        {
-            _3013 = c.ms[k];
-        }
-        float3 ms = _3013;
-        MxcLobe param_6 = l;
-        float param_7 = abs(i.z);
-        MxcLobe param_8 = l;
-        float3 param_9 = o;
-        float3 param_10 = i;
-        f += (((l.weight * ms) * mxc_lobe_absorption(param_6, param_7)) * mxc_lobe_eval(param_8, param_9, param_10));
+        MxcLobe param_14 = l;
+        float param_15 = abs(i.z);
+        f += ((l.weight * mxc_lobe_absorption(param_14, param_15)) * fk);
         if (wantPdf)
         {
-            MxcLobe param_11 = l;
-            float3 param_12 = o;
-            float3 param_13 = i;
-            p += (c.choice[k] * mxc_lobe_pdf(param_11, param_12, param_13));
+            p += (c.choice[k] * pk);
         }
     }
-    float _3022;
+    float _3332;
     if (c.choiceTotal > 0.0f)
     {
-        _3022 = p / c.choiceTotal;
+        _3332 = p / c.choiceTotal;
     }
     else
     {
-        _3022 = 0.0f;
+        _3332 = 0.0f;
     }
-    pdf = _3022;
+    pdf = _3332;
     return f;
 }
 
@@ -1727,16 +2016,16 @@ void frag_main()
     int lights = mxc_light_count();
     int kinds = mxc_light_kinds();
     bool image = mxc_environment_code() == 3;
-    int _255;
+    int _262;
     if (mxc_environment_code() != 0)
     {
-        _255 = max(mxc_view_counts.w, 1);
+        _262 = max(mxc_view_counts.w, 1);
     }
     else
     {
-        _255 = 0;
+        _262 = 0;
     }
-    int n = _255;
+    int n = _262;
     uint param_17 = uint(mxc_view_counts.z);
     uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
     uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
@@ -1745,54 +2034,54 @@ void frag_main()
     uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
     uint pixel = mxc_pcg(param_21);
     uint param_22 = pixel;
-    float _496 = mxc_uniform(param_22);
+    float _503 = mxc_uniform(param_22);
     pixel = param_22;
     uint param_23 = pixel;
-    float _500 = mxc_uniform(param_23);
+    float _507 = mxc_uniform(param_23);
     pixel = param_23;
     uint param_24 = pixel;
-    float _503 = mxc_uniform(param_24);
+    float _510 = mxc_uniform(param_24);
     pixel = param_24;
     uint param_25 = pixel;
-    float _506 = mxc_uniform(param_25);
+    float _513 = mxc_uniform(param_25);
     pixel = param_25;
-    float4 shift = float4(_496, _500, _503, _506);
+    float4 shift = float4(_503, _507, _510, _513);
     float3 sum = 0.0f.xxx;
-    int _272;
+    int _279;
     MxcSample smp;
-    float3 _289;
-    float3 _290;
-    float _295;
+    float3 _296;
+    float3 _297;
+    float _302;
     float param_49;
-    int _319;
+    int _326;
     float param_59;
-    float _335;
+    float _342;
     for (int b = 0; b < max(n, int(lights > 0)); b++)
     {
         int batchLights = (b == 0) ? lights : 0;
         if (b < n)
         {
-            _272 = 1 + int(image);
+            _279 = 1 + int(image);
         }
         else
         {
-            _272 = 0;
+            _279 = 0;
         }
-        int batchSamples = _272;
+        int batchSamples = _279;
         uint index = (uint(mxc_view_counts.z) * uint(max(n, 1))) + uint(b);
         uint param_26 = index;
         uint param_27 = 2u;
-        float _546 = mxc_radical_inverse(param_26, param_27);
+        float _553 = mxc_radical_inverse(param_26, param_27);
         uint param_28 = index;
         uint param_29 = 3u;
-        float _549 = mxc_radical_inverse(param_28, param_29);
+        float _556 = mxc_radical_inverse(param_28, param_29);
         uint param_30 = index;
         uint param_31 = 5u;
-        float _551 = mxc_radical_inverse(param_30, param_31);
+        float _558 = mxc_radical_inverse(param_30, param_31);
         uint param_32 = index;
         uint param_33 = 7u;
-        float _553 = mxc_radical_inverse(param_32, param_33);
-        float4 choice = frac(float4(_546, _549, _551, _553) + shift);
+        float _560 = mxc_radical_inverse(param_32, param_33);
+        float4 choice = frac(float4(_553, _556, _558, _560) + shift);
         smp.valid = false;
         smp.evaluate = false;
         smp.delta = false;
@@ -1811,58 +2100,58 @@ void frag_main()
         {
             if (above)
             {
-                _290 = smp.wi;
+                _297 = smp.wi;
             }
             else
             {
                 float3 param_37 = -wo;
                 float3 param_38 = smp.wi;
-                _290 = mxc_exit_direction(param_37, param_38);
+                _297 = mxc_exit_direction(param_37, param_38);
             }
-            float3 param_39 = _290;
-            _289 = mxc_environment(param_39);
+            float3 param_39 = _297;
+            _296 = mxc_environment(param_39);
         }
         else
         {
-            _289 = 0.0f.xxx;
+            _296 = 0.0f.xxx;
         }
-        float3 seen = _289;
-        bool _611 = (b < n) && smp.valid;
-        bool _617;
-        if (_611)
+        float3 seen = _296;
+        bool _618 = (b < n) && smp.valid;
+        bool _624;
+        if (_618)
         {
-            _617 = !smp.evaluate;
+            _624 = !smp.evaluate;
         }
         else
         {
-            _617 = _611;
+            _624 = _618;
         }
-        if (_617)
+        if (_624)
         {
-            bool _622 = image && above;
-            bool _628;
-            if (_622)
+            bool _629 = image && above;
+            bool _635;
+            if (_629)
             {
-                _628 = !smp.delta;
+                _635 = !smp.delta;
             }
             else
             {
-                _628 = _622;
+                _635 = _629;
             }
-            if (_628)
+            if (_635)
             {
                 float3 param_40 = smp.wi;
                 float param_41 = mxc_view_environment.z;
                 float3 param_42 = mxc_env_to_map(param_40, param_41);
                 float param_43 = smp.pdf;
                 float param_44 = mxc_env_pdf(param_42);
-                _295 = mxc_power_heuristic(param_43, param_44);
+                _302 = mxc_power_heuristic(param_43, param_44);
             }
             else
             {
-                _295 = 1.0f;
+                _302 = 1.0f;
             }
-            float w = _295;
+            float w = _302;
             sum += ((smp.weight * w) * seen);
         }
         float3 m = 0.0f.xxx;
@@ -1872,33 +2161,33 @@ void frag_main()
         if (image && (b < n))
         {
             uint param_45 = seed;
-            float _664 = mxc_uniform(param_45);
+            float _671 = mxc_uniform(param_45);
             seed = param_45;
             uint param_46 = seed;
-            float _667 = mxc_uniform(param_46);
+            float _674 = mxc_uniform(param_46);
             seed = param_46;
             uint param_47 = seed;
-            float _670 = mxc_uniform(param_47);
+            float _677 = mxc_uniform(param_47);
             seed = param_47;
-            float4 v = float4(choice.y, _664, _667, _670);
+            float4 v = float4(choice.y, _671, _674, _677);
             float4 param_48 = v;
-            float3 _674 = mxc_env_sample(param_48, param_49);
+            float3 _681 = mxc_env_sample(param_48, param_49);
             lightPdf = param_49;
-            m = _674;
+            m = _681;
             float3 param_50 = m;
             float param_51 = mxc_view_environment.z;
             imageWi = mxc_env_to_world(param_50, param_51);
-            bool _683 = lightPdf > 0.0f;
-            bool _690;
-            if (_683)
+            bool _690 = lightPdf > 0.0f;
+            bool _697;
+            if (_690)
             {
-                _690 = dot(imageWi, N) > 0.0f;
+                _697 = dot(imageWi, N) > 0.0f;
             }
             else
             {
-                _690 = _683;
+                _697 = _690;
             }
-            if (_690)
+            if (_697)
             {
                 float3 param_52 = imageWi;
                 imageSeen = mxc_environment(param_52);
@@ -1911,38 +2200,38 @@ void frag_main()
             bool use = true;
             if ((n == 0) || (j < batchLights))
             {
-                _319 = 0;
+                _326 = 0;
             }
             else
             {
-                _319 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+                _326 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
             }
-            int strategy = _319;
+            int strategy = _326;
             if (strategy == 0)
             {
                 float4 light = mxc_view_lightVector[j];
                 incoming = mxc_view_lightRadiance[j].xyz;
-                bool _735 = kinds == 1;
-                bool _748;
-                if (!_735)
+                bool _742 = kinds == 1;
+                bool _755;
+                if (!_742)
                 {
-                    bool _741 = (kinds & 1) != 0;
-                    bool _747;
-                    if (_741)
+                    bool _748 = (kinds & 1) != 0;
+                    bool _754;
+                    if (_748)
                     {
-                        _747 = light.w == 0.0f;
+                        _754 = light.w == 0.0f;
                     }
                     else
                     {
-                        _747 = _741;
+                        _754 = _748;
                     }
-                    _748 = _747;
+                    _755 = _754;
                 }
                 else
                 {
-                    _748 = _735;
+                    _755 = _742;
                 }
-                bool directional = _748;
+                bool directional = _755;
                 if (directional)
                 {
                     float3 param_53 = light.xyz;
@@ -1955,17 +2244,17 @@ void frag_main()
                     float d2 = max(dot(d, d), 9.9999999392252902907785028219223e-09f);
                     wi = d * rsqrt(d2);
                     incoming /= d2.xxx;
-                    bool _775 = (kinds & 4) != 0;
-                    bool _781;
-                    if (_775)
+                    bool _782 = (kinds & 4) != 0;
+                    bool _788;
+                    if (_782)
                     {
-                        _781 = light.w == 2.0f;
+                        _788 = light.w == 2.0f;
                     }
                     else
                     {
-                        _781 = _775;
+                        _788 = _782;
                     }
-                    if (_781)
+                    if (_788)
                     {
                         float4 spot = mxc_view_lightSpot[j];
                         incoming *= smoothstep(spot.w, mxc_view_lightRadiance[j].w, dot(-wi, spot.xyz));
@@ -1984,26 +2273,26 @@ void frag_main()
                 {
                     wi = imageWi;
                     incoming = imageSeen;
-                    bool _816 = lightPdf > 0.0f;
-                    bool _823;
-                    if (_816)
+                    bool _823 = lightPdf > 0.0f;
+                    bool _830;
+                    if (_823)
                     {
-                        _823 = dot(imageWi, N) > 0.0f;
+                        _830 = dot(imageWi, N) > 0.0f;
                     }
                     else
                     {
-                        _823 = _816;
+                        _830 = _823;
                     }
-                    use = _823;
+                    use = _830;
                 }
             }
             MxcClosure param_55 = c;
             float3 param_56 = wo;
             float3 param_57 = wi;
             bool param_58 = strategy != 0;
-            float3 _829 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            float3 _836 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
             float pdf = param_59;
-            float3 f = _829;
+            float3 f = _836;
             if (strategy == 0)
             {
                 radiance += (f * incoming);
@@ -2021,13 +2310,13 @@ void frag_main()
                             float3 param_62 = mxc_env_to_map(param_60, param_61);
                             float param_63 = pdf;
                             float param_64 = mxc_env_pdf(param_62);
-                            _335 = mxc_power_heuristic(param_63, param_64);
+                            _342 = mxc_power_heuristic(param_63, param_64);
                         }
                         else
                         {
-                            _335 = 1.0f;
+                            _342 = 1.0f;
                         }
-                        float w_1 = _335;
+                        float w_1 = _342;
                         sum += (((f * w_1) / pdf.xxx) * incoming);
                     }
                 }

@@ -55,6 +55,10 @@ struct MxcClosure
     float choiceTotal;
     float3 ms[2];
     float msT[2];
+    float3 msLobe[2];
+    float3 msLobeT[2];
+    float msPick[2];
+    float msSplit[2];
     float3 emission;
     float3 transparency;
 };
@@ -82,18 +86,18 @@ struct MxcLobeSample
 #define SPIRV_CROSS_CONSTANT_ID_0 -1
 #endif
 static const int MXC_ENVIRONMENT = SPIRV_CROSS_CONSTANT_ID_0;
-static const bool _245 = (MXC_ENVIRONMENT != (-1));
+static const bool _250 = (MXC_ENVIRONMENT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_1
 #define SPIRV_CROSS_CONSTANT_ID_1 -1
 #endif
 static const int MXC_LIGHT_COUNT = SPIRV_CROSS_CONSTANT_ID_1;
-static const bool _247 = (MXC_LIGHT_COUNT != (-1));
+static const bool _252 = (MXC_LIGHT_COUNT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_2
 #define SPIRV_CROSS_CONSTANT_ID_2 -1
 #endif
 static const int MXC_LIGHT_KINDS = SPIRV_CROSS_CONSTANT_ID_2;
-static const bool _249 = (MXC_LIGHT_KINDS != (-1));
-static const int _250 = _249 ? MXC_LIGHT_KINDS : 7;
+static const bool _254 = (MXC_LIGHT_KINDS != (-1));
+static const int _255 = _254 ? MXC_LIGHT_KINDS : 7;
 
 cbuffer MxcView : register(b1, space0)
 {
@@ -110,7 +114,7 @@ cbuffer MxcView : register(b1, space0)
 };
 
 ByteAddressBuffer mxc_params : register(t2, space0);
-ByteAddressBuffer _228 : register(t1, space1);
+ByteAddressBuffer _233 : register(t1, space1);
 Texture2D<float4> mxc_tables : register(t0, space0);
 SamplerState _mxc_tables_sampler : register(s0, space0);
 Texture2D<float4> mxc_texture_0 : register(t5, space0);
@@ -189,16 +193,16 @@ uint2 spvTextureSize(Texture2D<float4> Tex, uint Level, out uint Param)
 float3 mxc_safe_normalize(float3 v, float3 fallback)
 {
     float l2 = dot(v, v);
-    float3 _986;
+    float3 _991;
     if (l2 > 9.9999996826552253889678874634872e-21f)
     {
-        _986 = v * rsqrt(l2);
+        _991 = v * rsqrt(l2);
     }
     else
     {
-        _986 = fallback;
+        _991 = fallback;
     }
-    return _986;
+    return _991;
 }
 
 float3x3 mxc_frame(float3 N, float3 T)
@@ -265,31 +269,31 @@ float4 mxc_sample_image(Texture2D<float4> image, SamplerState _image_sampler, fl
     }
     float param = st.x;
     int param_1 = uaddress;
-    bool _1648 = mxc_address(param, param_1);
+    bool _1653 = mxc_address(param, param_1);
     st.x = param;
-    bool _1651 = !_1648;
-    bool _1662;
-    if (!_1651)
+    bool _1656 = !_1653;
+    bool _1667;
+    if (!_1656)
     {
         float param_2 = st.y;
         int param_3 = vaddress;
-        bool _1658 = mxc_address(param_2, param_3);
+        bool _1663 = mxc_address(param_2, param_3);
         st.y = param_2;
-        _1662 = !_1658;
+        _1667 = !_1663;
     }
     else
     {
-        _1662 = _1651;
+        _1667 = _1656;
     }
-    if (_1662)
+    if (_1667)
     {
         return fallback;
     }
     st.y = 1.0f - st.y;
     if (filtertype == 1)
     {
-        uint _1676_dummy_parameter;
-        float2 size = float2(int2(spvTextureSize(image, uint(0), _1676_dummy_parameter)));
+        uint _1681_dummy_parameter;
+        float2 size = float2(int2(spvTextureSize(image, uint(0), _1681_dummy_parameter)));
         return image.SampleLevel(_image_sampler, (min(floor(st * size), size - 1.0f.xx) + 0.5f.xx) / size, 0.0f);
     }
     return image.SampleGrad(_image_sampler, st, dx, dy);
@@ -304,10 +308,10 @@ float3 mxc_hsv_to_rgb(float3 hsv)
 float3 mxc_normalmap(float3 sampleValue, float2 scale, float3 N, float3 T, float3 B)
 {
     float3 v = (sampleValue * 2.0f) - 1.0f.xxx;
-    float3 _1554 = v;
-    float2 _1556 = _1554.xy * scale;
-    v.x = _1556.x;
-    v.y = _1556.y;
+    float3 _1559 = v;
+    float2 _1561 = _1559.xy * scale;
+    v.x = _1561.x;
+    v.y = _1561.y;
     float3 param = ((T * v.x) + (B * v.y)) + (N * v.z);
     float3 param_1 = N;
     return mxc_safe_normalize(param, param_1);
@@ -330,17 +334,17 @@ bool mxc_index_matched(MxcLobe l)
 
 bool mxc_dielectric_walk_split(MxcLobe l, float3 wo)
 {
-    bool _2155 = wo.z <= 0.0f;
-    bool _2162;
-    if (!_2155)
+    bool _2160 = wo.z <= 0.0f;
+    bool _2167;
+    if (!_2160)
     {
-        _2162 = l.eta < 1.0f;
+        _2167 = l.eta < 1.0f;
     }
     else
     {
-        _2162 = _2155;
+        _2167 = _2160;
     }
-    if (_2162)
+    if (_2167)
     {
         return false;
     }
@@ -371,16 +375,16 @@ float4 mxc_dielectric_table(float mu, float alpha, float e)
 
 float mxc_dielectric_albedo(float mu, float alpha, float eta)
 {
-    float _1801;
+    float _1806;
     if (eta >= 1.0f)
     {
-        _1801 = eta;
+        _1806 = eta;
     }
     else
     {
-        _1801 = 1.0f / max(eta, 0.001000000047497451305389404296875f);
+        _1806 = 1.0f / max(eta, 0.001000000047497451305389404296875f);
     }
-    float e = _1801;
+    float e = _1806;
     float param = mu;
     float param_1 = alpha;
     float param_2 = e;
@@ -417,16 +421,16 @@ float mxc_walk_reflectance(float mu, float alpha, float eta)
 
 float mxc_lobe_eta(MxcLobe l, bool above)
 {
-    float _1929;
+    float _1934;
     if (above)
     {
-        _1929 = l.eta;
+        _1934 = l.eta;
     }
     else
     {
-        _1929 = 1.0f / l.eta;
+        _1934 = 1.0f / l.eta;
     }
-    return _1929;
+    return _1934;
 }
 
 float mxc_dielectric_albedo_rt(float mu, float alpha, float eta)
@@ -492,68 +496,68 @@ float3 mxc_lobe_fresnel(MxcLobe l, float _cosh, bool above)
 
 float3 mxc_lobe_ms_scale(MxcLobe l, float3 wo)
 {
-    bool _2286 = l.kind == 1;
-    bool _2293;
-    if (!_2286)
+    bool _2291 = l.kind == 1;
+    bool _2298;
+    if (!_2291)
     {
-        _2293 = l.kind == 2;
+        _2298 = l.kind == 2;
     }
     else
     {
-        _2293 = _2286;
+        _2298 = _2291;
     }
-    bool _2300;
-    if (!_2293)
+    bool _2305;
+    if (!_2298)
     {
-        _2300 = l.kind == 3;
+        _2305 = l.kind == 3;
     }
     else
     {
-        _2300 = _2293;
+        _2305 = _2298;
     }
-    bool microfacet = _2300;
-    bool _2302 = !microfacet;
-    bool _2309;
-    if (!_2302)
+    bool microfacet = _2305;
+    bool _2307 = !microfacet;
+    bool _2314;
+    if (!_2307)
     {
         float2 param = l.alpha;
-        _2309 = mxc_is_delta(param);
+        _2314 = mxc_is_delta(param);
     }
     else
     {
-        _2309 = _2302;
+        _2314 = _2307;
     }
-    if (_2309)
+    if (_2314)
     {
         return 1.0f.xxx;
     }
     float alpha = sqrt(l.alpha.x * l.alpha.y);
-    bool _2320 = l.kind == 1;
-    bool _2325;
-    if (_2320)
+    bool _2325 = l.kind == 1;
+    bool _2330;
+    if (_2325)
     {
         MxcLobe param_1 = l;
-        _2325 = mxc_index_matched(param_1);
+        _2330 = mxc_index_matched(param_1);
     }
     else
     {
-        _2325 = _2320;
+        _2330 = _2325;
     }
-    if (_2325)
+    if (_2330)
     {
         return 1.0f.xxx;
     }
-    bool _2330 = l.kind == 1;
-    bool _2337;
-    if (_2330)
+    bool _2335 = l.kind == 1;
+    bool _2342;
+    if (_2335)
     {
-        _2337 = (l.mode & 4) == 0;
+        _2342 = (l.mode & 4) == 0;
     }
     else
     {
-        _2337 = _2330;
+        _2342 = _2335;
     }
-    if (_2337)
+    if (_2342)
     {
         MxcLobe param_2 = l;
         float3 param_3 = wo;
@@ -599,16 +603,16 @@ float mxc_fon_albedo(float sigma, float mu)
     float param = 1.0f - (c * c);
     float s = mxc_safe_sqrt(param);
     float theta = acos(c);
-    float _2095;
+    float _2100;
     if (c > 9.9999997473787516355514526367188e-05f)
     {
-        _2095 = (1.0f - ((s * s) * s)) / c;
+        _2100 = (1.0f - ((s * s) * s)) / c;
     }
     else
     {
-        _2095 = 1.5f * c;
+        _2100 = 1.5f * c;
     }
-    float tail = _2095;
+    float tail = _2100;
     float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875f * s) * tail)) - (0.666666686534881591796875f * s);
     return a + (((sigma * a) * g) * 0.3183098733425140380859375f);
 }
@@ -616,40 +620,40 @@ float mxc_fon_albedo(float sigma, float mu)
 float3 mxc_lobe_albedo_scaled(MxcLobe l, float3 wo, float3 ms)
 {
     float mu = clamp(wo.z, 0.0f, 1.0f);
-    bool _2434 = l.kind == 1;
-    bool _2441;
-    if (!_2434)
+    bool _2536 = l.kind == 1;
+    bool _2543;
+    if (!_2536)
     {
-        _2441 = l.kind == 2;
+        _2543 = l.kind == 2;
     }
     else
     {
-        _2441 = _2434;
+        _2543 = _2536;
     }
-    bool _2448;
-    if (!_2441)
+    bool _2550;
+    if (!_2543)
     {
-        _2448 = l.kind == 3;
+        _2550 = l.kind == 3;
     }
     else
     {
-        _2448 = _2441;
+        _2550 = _2543;
     }
-    if (_2448)
+    if (_2550)
     {
         float alpha = sqrt(l.alpha.x * l.alpha.y);
-        bool _2459 = l.kind == 1;
-        bool _2466;
-        if (_2459)
+        bool _2561 = l.kind == 1;
+        bool _2568;
+        if (_2561)
         {
             float2 param = l.alpha;
-            _2466 = !mxc_is_delta(param);
+            _2568 = !mxc_is_delta(param);
         }
         else
         {
-            _2466 = _2459;
+            _2568 = _2561;
         }
-        if (_2466)
+        if (_2568)
         {
             float param_1 = mu;
             float param_2 = alpha;
@@ -668,16 +672,16 @@ float3 mxc_lobe_albedo_scaled(MxcLobe l, float3 wo, float3 ms)
         float param_10 = 0.0f;
         bool param_11 = true;
         float3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
-        float3 _2422;
+        float3 _2524;
         if (l.kind == 1)
         {
-            _2422 = l.c0;
+            _2524 = l.c0;
         }
         else
         {
-            _2422 = 1.0f.xxx;
+            _2524 = 1.0f.xxx;
         }
-        float3 tint = _2422;
+        float3 tint = _2524;
         float2 param_12 = l.alpha;
         if (mxc_is_delta(param_12))
         {
@@ -713,17 +717,17 @@ float3 mxc_lobe_albedo(MxcLobe l, float3 wo)
 
 float3 mxc_lobe_layer_albedo(MxcLobe l, float3 wo)
 {
-    bool _2573 = l.kind == 9;
-    bool _2580;
-    if (!_2573)
+    bool _2675 = l.kind == 9;
+    bool _2682;
+    if (!_2675)
     {
-        _2580 = l.kind == 10;
+        _2682 = l.kind == 10;
     }
     else
     {
-        _2580 = _2573;
+        _2682 = _2675;
     }
-    if (_2580)
+    if (_2682)
     {
         MxcLobe white = l;
         white.c0 = 1.0f.xxx;
@@ -738,48 +742,48 @@ float3 mxc_lobe_layer_albedo(MxcLobe l, float3 wo)
 
 float mxc_lobe_ms_transmit(MxcLobe l, float3 wo, float3 ms)
 {
-    bool _2188 = l.kind != 1;
-    bool _2195;
-    if (!_2188)
+    bool _2193 = l.kind != 1;
+    bool _2200;
+    if (!_2193)
     {
         float2 param = l.alpha;
-        _2195 = mxc_is_delta(param);
+        _2200 = mxc_is_delta(param);
     }
     else
     {
-        _2195 = _2188;
+        _2200 = _2193;
     }
-    bool _2201;
-    if (!_2195)
+    bool _2206;
+    if (!_2200)
     {
         MxcLobe param_1 = l;
-        _2201 = mxc_index_matched(param_1);
+        _2206 = mxc_index_matched(param_1);
     }
     else
     {
-        _2201 = _2195;
+        _2206 = _2200;
     }
-    bool _2209;
-    if (!_2201)
+    bool _2214;
+    if (!_2206)
     {
-        _2209 = (l.mode & 4) != 0;
+        _2214 = (l.mode & 4) != 0;
     }
     else
     {
-        _2209 = _2201;
+        _2214 = _2206;
     }
-    bool _2217;
-    if (!_2209)
+    bool _2222;
+    if (!_2214)
     {
         MxcLobe param_2 = l;
         float3 param_3 = wo;
-        _2217 = !mxc_dielectric_walk_split(param_2, param_3);
+        _2222 = !mxc_dielectric_walk_split(param_2, param_3);
     }
     else
     {
-        _2217 = _2209;
+        _2222 = _2214;
     }
-    if (_2217)
+    if (_2222)
     {
         return ms.x;
     }
@@ -816,14 +820,114 @@ float mxc_lobe_choice(MxcLobe l, float3 woLocal, float3 ms)
     return max(mxc_luminance(param_3), 0.0f) + 9.9999997473787516355514526367188e-05f;
 }
 
+bool mxc_lobe_ms_shaped(MxcLobe l, float3 wo)
+{
+    bool _2413 = wo.z <= 0.0f;
+    bool _2420;
+    if (!_2413)
+    {
+        float2 param = l.alpha;
+        _2420 = mxc_is_delta(param);
+    }
+    else
+    {
+        _2420 = _2413;
+    }
+    if (_2420)
+    {
+        return false;
+    }
+    if (l.kind == 2)
+    {
+        return true;
+    }
+    if (l.kind == 3)
+    {
+        return (l.mode & 1) != 0;
+    }
+    bool _2439 = l.kind == 1;
+    bool _2446;
+    if (_2439)
+    {
+        _2446 = (l.mode & 1) != 0;
+    }
+    else
+    {
+        _2446 = _2439;
+    }
+    bool _2453;
+    if (_2446)
+    {
+        _2453 = (l.mode & 4) == 0;
+    }
+    else
+    {
+        _2453 = _2446;
+    }
+    bool _2459;
+    if (_2453)
+    {
+        MxcLobe param_1 = l;
+        _2459 = !mxc_index_matched(param_1);
+    }
+    else
+    {
+        _2459 = _2453;
+    }
+    bool _2465;
+    if (_2459)
+    {
+        MxcLobe param_2 = l;
+        float3 param_3 = wo;
+        _2465 = mxc_dielectric_walk_split(param_2, param_3);
+    }
+    else
+    {
+        _2465 = _2459;
+    }
+    return _2465;
+}
+
+bool mxc_lobe_transmits(MxcLobe l)
+{
+    return false;
+}
+
+MxcLobe mxc_ms_lobe(MxcLobe l, bool transmitted)
+{
+    MxcLobe m = l;
+    m.alpha = min(l.alpha * (transmitted ? 3.0f : 1.5f), 1.0f.xx);
+    int _2471;
+    if (transmitted)
+    {
+        _2471 = l.mode & (-2);
+    }
+    else
+    {
+        _2471 = l.mode & (-3);
+    }
+    m.mode = _2471;
+    if (l.kind == 1)
+    {
+        m.c0 = 1.0f.xxx;
+        m.c1 = 1.0f.xxx;
+    }
+    return m;
+}
+
 void mxc_closure_prepare(inout MxcClosure c, float3 wo)
 {
     c.choiceTotal = 0.0f;
+    float _3243;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
         c.ms[k] = 1.0f.xxx;
         c.msT[k] = 1.0f;
+        c.msLobe[k] = 0.0f.xxx;
+        c.msLobeT[k] = 0.0f.xxx;
+        c.msPick[k] = 0.0f;
+        c.msSplit[k] = 1.0f;
         c.choice[k] = 0.0f;
         if (all(bool3(l.weight.x == 0.0f.xxx.x, l.weight.y == 0.0f.xxx.y, l.weight.z == 0.0f.xxx.z)))
         {
@@ -836,16 +940,110 @@ void mxc_closure_prepare(inout MxcClosure c, float3 wo)
         float3 o = mxc_to_local(param_2, param_3);
         MxcLobe param_4 = l;
         float3 param_5 = o;
-        c.ms[k] = mxc_lobe_ms_scale(param_4, param_5);
+        float3 ms = mxc_lobe_ms_scale(param_4, param_5);
         MxcLobe param_6 = l;
         float3 param_7 = o;
-        float3 param_8 = c.ms[k];
+        float3 param_8 = ms;
         c.msT[k] = mxc_lobe_ms_transmit(param_6, param_7, param_8);
         MxcLobe param_9 = l;
         float3 param_10 = o;
-        float3 param_11 = c.ms[k];
+        float3 param_11 = ms;
         c.choice[k] = mxc_lobe_choice(param_9, param_10, param_11);
         c.choiceTotal += c.choice[k];
+        MxcLobe param_12 = l;
+        float3 param_13 = o;
+        if (mxc_lobe_ms_shaped(param_12, param_13))
+        {
+            float alpha = sqrt(l.alpha.x * l.alpha.y);
+            MxcLobe param_14 = l;
+            float3 param_15 = o;
+            float3 param_16 = 1.0f.xxx;
+            float3 reflected = mxc_lobe_albedo_scaled(param_14, param_15, param_16);
+            MxcLobe param_17 = l;
+            float3 param_18 = o;
+            float3 param_19 = ms;
+            float3 addedR = max(mxc_lobe_albedo_scaled(param_17, param_18, param_19) - reflected, 0.0f.xxx);
+            float3 transmitted = 0.0f.xxx;
+            float3 addedT = 0.0f.xxx;
+            bool _3331 = l.kind == 1;
+            bool _3336;
+            if (_3331)
+            {
+                MxcLobe param_20 = l;
+                _3336 = mxc_lobe_transmits(param_20);
+            }
+            else
+            {
+                _3336 = _3331;
+            }
+            if (_3336)
+            {
+                float param_21 = o.z;
+                float param_22 = alpha;
+                float param_23 = l.eta;
+                float rss = mxc_dielectric_albedo(param_21, param_22, param_23);
+                float param_24 = o.z;
+                float param_25 = alpha;
+                float param_26 = l.eta;
+                transmitted = l.c1 * max(mxc_dielectric_albedo_rt(param_24, param_25, param_26) - rss, 0.0f);
+                addedT = transmitted * max(c.msT[k] - 1.0f, 0.0f);
+            }
+            MxcLobe param_27 = l;
+            bool param_28 = false;
+            MxcLobe mr = mxc_ms_lobe(param_27, param_28);
+            MxcLobe param_29 = mr;
+            float3 param_30 = o;
+            float3 param_31 = 1.0f.xxx;
+            float3 broadR = mxc_lobe_albedo_scaled(param_29, param_30, param_31);
+            float broadT = 1.0f;
+            bool _3371 = l.kind == 1;
+            bool _3376;
+            if (_3371)
+            {
+                MxcLobe param_32 = l;
+                _3376 = mxc_lobe_transmits(param_32);
+            }
+            else
+            {
+                _3376 = _3371;
+            }
+            if (_3376)
+            {
+                MxcLobe param_33 = l;
+                bool param_34 = true;
+                MxcLobe mt = mxc_ms_lobe(param_33, param_34);
+                float at = sqrt(mt.alpha.x * mt.alpha.y);
+                float param_35 = o.z;
+                float param_36 = at;
+                float param_37 = l.eta;
+                float param_38 = o.z;
+                float param_39 = at;
+                float param_40 = l.eta;
+                broadT = mxc_dielectric_albedo_rt(param_35, param_36, param_37) - mxc_dielectric_albedo(param_38, param_39, param_40);
+            }
+            c.msLobe[k] = addedR / max(broadR, 9.9999997473787516355514526367188e-05f.xxx);
+            c.msLobeT[k] = addedT / max(broadT, 9.9999997473787516355514526367188e-05f).xxx;
+            float3 param_41 = ((reflected + addedR) + transmitted) + addedT;
+            float total = max(mxc_luminance(param_41), 9.9999999747524270787835121154785e-07f);
+            float3 param_42 = addedR + addedT;
+            float added = mxc_luminance(param_42);
+            c.msPick[k] = 0.999000012874603271484375f * min(added / total, 1.0f);
+            if (added > 0.0f)
+            {
+                float3 param_43 = addedR;
+                _3243 = mxc_luminance(param_43) / added;
+            }
+            else
+            {
+                _3243 = 1.0f;
+            }
+            c.msSplit[k] = _3243;
+            c.msT[k] = 1.0f;
+        }
+        else
+        {
+            c.ms[k] = ms;
+        }
     }
 }
 
@@ -984,35 +1182,35 @@ void mxc_material_closure(MxcGeometry g, float3 wo, inout MxcClosure c)
 
 int mxc_light_count()
 {
-    int _4031;
-    if (_247)
+    int _4485;
+    if (_252)
     {
-        _4031 = MXC_LIGHT_COUNT;
+        _4485 = MXC_LIGHT_COUNT;
     }
     else
     {
-        _4031 = mxc_view_counts.x;
+        _4485 = mxc_view_counts.x;
     }
-    return min(_4031, 8);
+    return min(_4485, 8);
 }
 
 int mxc_light_kinds()
 {
-    return _250;
+    return _255;
 }
 
 int mxc_environment_code()
 {
-    int _4023;
-    if (_245)
+    int _4477;
+    if (_250)
     {
-        _4023 = MXC_ENVIRONMENT;
+        _4477 = MXC_ENVIRONMENT;
     }
     else
     {
-        _4023 = mxc_view_counts.y;
+        _4477 = mxc_view_counts.y;
     }
-    return _4023;
+    return _4477;
 }
 
 float mxc_uniform(inout uint seed)
@@ -1089,36 +1287,36 @@ float mxc_ggx_g2(float3 wo, float3 wi, float2 alpha)
 {
     float3 param = wo;
     float2 param_1 = alpha;
-    float _1290 = mxc_ggx_lambda(param, param_1);
+    float _1295 = mxc_ggx_lambda(param, param_1);
     float3 param_2 = wi;
     float2 param_3 = alpha;
-    float _1294 = mxc_ggx_lambda(param_2, param_3);
-    return 1.0f / ((1.0f + _1290) + _1294);
+    float _1299 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0f / ((1.0f + _1295) + _1299);
 }
 
 float3 mxc_microfacet_reflect(MxcLobe l, float3 wo, float3 wi)
 {
-    bool _1988 = wo.z <= 0.0f;
-    bool _1995;
-    if (!_1988)
+    bool _1993 = wo.z <= 0.0f;
+    bool _2000;
+    if (!_1993)
     {
-        _1995 = wi.z <= 0.0f;
+        _2000 = wi.z <= 0.0f;
     }
     else
     {
-        _1995 = _1988;
+        _2000 = _1993;
     }
-    bool _2002;
-    if (!_1995)
+    bool _2007;
+    if (!_2000)
     {
         float2 param = l.alpha;
-        _2002 = mxc_is_delta(param);
+        _2007 = mxc_is_delta(param);
     }
     else
     {
-        _2002 = _1995;
+        _2007 = _2000;
     }
-    if (_2002)
+    if (_2007)
     {
         return 0.0f.xxx;
     }
@@ -1133,27 +1331,27 @@ float3 mxc_microfacet_reflect(MxcLobe l, float3 wo, float3 wi)
     }
     float3 param_4 = h;
     float2 param_5 = l.alpha;
-    float _2028 = mxc_ggx_d(param_4, param_5);
+    float _2033 = mxc_ggx_d(param_4, param_5);
     float3 param_6 = wo;
     float3 param_7 = wi;
     float2 param_8 = l.alpha;
-    return ((f * _2028) * mxc_ggx_g2(param_6, param_7, param_8)) / (4.0f * wo.z).xxx;
+    return ((f * _2033) * mxc_ggx_g2(param_6, param_7, param_8)) / (4.0f * wo.z).xxx;
 }
 
 float mxc_fon(float sigma, float3 wo, float3 wi)
 {
     float a = 1.0f / (1.0f + (0.2877933979034423828125f * sigma));
     float s = dot(wi, wo) - (wi.z * wo.z);
-    float _2049;
+    float _2054;
     if (s > 0.0f)
     {
-        _2049 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07f);
+        _2054 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07f);
     }
     else
     {
-        _2049 = 1.0f;
+        _2054 = 1.0f;
     }
-    float t = _2049;
+    float t = _2054;
     return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375f;
 }
 
@@ -1189,17 +1387,17 @@ float3 mxc_lobe_eval(MxcLobe l, float3 wo, float3 wi)
         case 2:
         case 3:
         {
-            bool _2654 = l.kind == 3;
-            bool _2661;
-            if (_2654)
+            bool _2756 = l.kind == 3;
+            bool _2763;
+            if (_2756)
             {
-                _2661 = (l.mode & 1) == 0;
+                _2763 = (l.mode & 1) == 0;
             }
             else
             {
-                _2661 = _2654;
+                _2763 = _2756;
             }
-            if (_2661)
+            if (_2763)
             {
                 return 0.0f.xxx;
             }
@@ -1210,29 +1408,29 @@ float3 mxc_lobe_eval(MxcLobe l, float3 wo, float3 wi)
         }
         case 4:
         {
-            bool _2670 = wo.z > 0.0f;
-            bool _2676;
-            if (_2670)
+            bool _2772 = wo.z > 0.0f;
+            bool _2778;
+            if (_2772)
             {
-                _2676 = wi.z > 0.0f;
+                _2778 = wi.z > 0.0f;
             }
             else
             {
-                _2676 = _2670;
+                _2778 = _2772;
             }
-            float3 _2606;
-            if (_2676)
+            float3 _2708;
+            if (_2778)
             {
                 float param_9 = l.p0;
                 float3 param_10 = wo;
                 float3 param_11 = wi;
-                _2606 = (l.c0 * mxc_fon(param_9, param_10, param_11)) * wi.z;
+                _2708 = (l.c0 * mxc_fon(param_9, param_10, param_11)) * wi.z;
             }
             else
             {
-                _2606 = 0.0f.xxx;
+                _2708 = 0.0f.xxx;
             }
-            return _2606;
+            return _2708;
         }
         default:
         {
@@ -1245,8 +1443,8 @@ float mxc_ggx_g1(float3 v, float2 alpha)
 {
     float3 param = v;
     float2 param_1 = alpha;
-    float _1276 = mxc_ggx_lambda(param, param_1);
-    return 1.0f / (1.0f + _1276);
+    float _1281 = mxc_ggx_lambda(param, param_1);
+    return 1.0f / (1.0f + _1281);
 }
 
 float mxc_ggx_pdf_vndf(float3 wo, float3 m, float2 alpha)
@@ -1259,18 +1457,13 @@ float mxc_ggx_pdf_vndf(float3 wo, float3 m, float2 alpha)
     float2 param_1 = alpha;
     float3 param_2 = m;
     float2 param_3 = alpha;
-    float _1449 = mxc_ggx_d(param_2, param_3);
-    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0f)) * _1449) / wo.z;
+    float _1454 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0f)) * _1454) / wo.z;
 }
 
 float mxc_mean(float3 c)
 {
     return ((c.x + c.y) + c.z) * 0.3333333432674407958984375f;
-}
-
-bool mxc_lobe_transmits(MxcLobe l)
-{
-    return false;
 }
 
 float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
@@ -1287,26 +1480,26 @@ float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
                 return 0.0f;
             }
             bool above = wo.z > 0.0f;
-            float3 _2700;
+            float3 _2802;
             if (above)
             {
-                _2700 = wo;
+                _2802 = wo;
             }
             else
             {
-                _2700 = -wo;
+                _2802 = -wo;
             }
-            float3 o = _2700;
-            float3 _2702;
+            float3 o = _2802;
+            float3 _2804;
             if (above)
             {
-                _2702 = wi;
+                _2804 = wi;
             }
             else
             {
-                _2702 = -wi;
+                _2804 = -wi;
             }
-            float3 i = _2702;
+            float3 i = _2804;
             if (i.z > 0.0f)
             {
                 float3 h = normalize(o + i);
@@ -1328,42 +1521,42 @@ float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
                 float3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
                 float fr = mxc_mean(param_7);
                 MxcLobe param_8 = l;
-                bool _2802 = mxc_lobe_transmits(param_8);
-                bool _2809;
-                if (_2802)
+                bool _2904 = mxc_lobe_transmits(param_8);
+                bool _2911;
+                if (_2904)
                 {
-                    _2809 = (l.mode & 1) != 0;
+                    _2911 = (l.mode & 1) != 0;
                 }
                 else
                 {
-                    _2809 = _2802;
+                    _2911 = _2904;
                 }
-                return p * (_2809 ? fr : 1.0f);
+                return p * (_2911 ? fr : 1.0f);
             }
             return 0.0f;
         }
         default:
         {
-            bool _2722 = wo.z > 0.0f;
-            bool _2728;
-            if (_2722)
+            bool _2824 = wo.z > 0.0f;
+            bool _2830;
+            if (_2824)
             {
-                _2728 = wi.z > 0.0f;
+                _2830 = wi.z > 0.0f;
             }
             else
             {
-                _2728 = _2722;
+                _2830 = _2824;
             }
-            float _2714;
-            if (_2728)
+            float _2816;
+            if (_2830)
             {
-                _2714 = wi.z * 0.3183098733425140380859375f;
+                _2816 = wi.z * 0.3183098733425140380859375f;
             }
             else
             {
-                _2714 = 0.0f;
+                _2816 = 0.0f;
             }
-            return _2714;
+            return _2816;
         }
     }
 }
@@ -1374,16 +1567,16 @@ float3 mxc_ggx_sample_vndf(float3 wo, inout float2 alpha, float2 u)
     alpha = mxc_rough_alpha(param);
     float3 vh = normalize(float3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lensq = (vh.x * vh.x) + (vh.y * vh.y);
-    float3 _1306;
+    float3 _1311;
     if (lensq > 0.0f)
     {
-        _1306 = float3(-vh.y, vh.x, 0.0f) * rsqrt(lensq);
+        _1311 = float3(-vh.y, vh.x, 0.0f) * rsqrt(lensq);
     }
     else
     {
-        _1306 = float3(1.0f, 0.0f, 0.0f);
+        _1311 = float3(1.0f, 0.0f, 0.0f);
     }
-    float3 t1 = _1306;
+    float3 t1 = _1311;
     float3 t2 = cross(vh, t1);
     float r = sqrt(u.x);
     float phi = 6.283185482025146484375f * u.y;
@@ -1412,94 +1605,94 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, float3 wo, float3 u)
         case 3:
         {
             bool above = wo.z > 0.0f;
-            float3 _2821;
+            float3 _2923;
             if (above)
             {
-                _2821 = wo;
+                _2923 = wo;
             }
             else
             {
-                _2821 = -wo;
+                _2923 = -wo;
             }
-            float3 o = _2821;
+            float3 o = _2923;
             if (o.z <= 0.0f)
             {
                 return s;
             }
             float2 param = l.alpha;
             bool delta = mxc_is_delta(param);
-            float3 _2825;
+            float3 _2927;
             if (delta)
             {
-                _2825 = float3(0.0f, 0.0f, 1.0f);
+                _2927 = float3(0.0f, 0.0f, 1.0f);
             }
             else
             {
                 float3 param_1 = o;
                 float2 param_2 = l.alpha;
                 float2 param_3 = u.xy;
-                float3 _2926 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
-                _2825 = _2926;
+                float3 _3028 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2927 = _3028;
             }
-            float3 m = _2825;
+            float3 m = _2927;
             float hm = dot(o, m);
-            bool _2933 = l.kind == 1;
-            bool _2940;
-            if (!_2933)
+            bool _3035 = l.kind == 1;
+            bool _3042;
+            if (!_3035)
             {
-                _2940 = l.kind == 3;
+                _3042 = l.kind == 3;
             }
             else
             {
-                _2940 = _2933;
+                _3042 = _3035;
             }
-            bool _2945;
-            if (_2940)
+            bool _3047;
+            if (_3042)
             {
                 MxcLobe param_4 = l;
-                _2945 = mxc_lobe_transmits(param_4);
+                _3047 = mxc_lobe_transmits(param_4);
             }
             else
             {
-                _2945 = _2940;
+                _3047 = _3042;
             }
-            bool transmits = _2945;
-            bool _2948 = l.kind == 2;
-            bool _2956;
-            if (!_2948)
+            bool transmits = _3047;
+            bool _3050 = l.kind == 2;
+            bool _3058;
+            if (!_3050)
             {
-                _2956 = (l.mode & 1) != 0;
+                _3058 = (l.mode & 1) != 0;
             }
             else
             {
-                _2956 = _2948;
+                _3058 = _3050;
             }
-            bool reflects = _2956;
+            bool reflects = _3058;
             MxcLobe param_5 = l;
             float param_6 = max(hm, 0.0f);
             bool param_7 = above;
             float3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
-            float _2838;
+            float _2940;
             if (transmits)
             {
                 float3 param_8 = f;
-                _2838 = mxc_mean(param_8);
+                _2940 = mxc_mean(param_8);
             }
             else
             {
-                _2838 = 1.0f;
+                _2940 = 1.0f;
             }
-            float fr = _2838;
-            float _2841;
+            float fr = _2940;
+            float _2943;
             if (transmits)
             {
-                _2841 = reflects ? fr : 0.0f;
+                _2943 = reflects ? fr : 0.0f;
             }
             else
             {
-                _2841 = 1.0f;
+                _2943 = 1.0f;
             }
-            float pReflect = _2841;
+            float pReflect = _2943;
             if (u.z < pReflect)
             {
                 float3 i = reflect(-o, m);
@@ -1507,38 +1700,38 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, float3 wo, float3 u)
                 {
                     return s;
                 }
-                float3 _2843;
+                float3 _2945;
                 if (above)
                 {
-                    _2843 = i;
+                    _2945 = i;
                 }
                 else
                 {
-                    _2843 = -i;
+                    _2945 = -i;
                 }
-                s.wi = _2843;
+                s.wi = _2945;
                 s.delta = delta;
                 if (delta)
                 {
-                    float3 _2845;
+                    float3 _2947;
                     if (l.kind == 1)
                     {
-                        float3 _2846;
+                        float3 _2948;
                         if (above)
                         {
-                            _2846 = l.c0;
+                            _2948 = l.c0;
                         }
                         else
                         {
-                            _2846 = 1.0f.xxx;
+                            _2948 = 1.0f.xxx;
                         }
-                        _2845 = _2846;
+                        _2947 = _2948;
                     }
                     else
                     {
-                        _2845 = 1.0f.xxx;
+                        _2947 = 1.0f.xxx;
                     }
-                    float3 tint = _2845;
+                    float3 tint = _2947;
                     s.value = f * tint;
                     s.pdf = pReflect;
                 }
@@ -1645,24 +1838,59 @@ MxcSample mxc_closure_sample_direction(MxcClosure c, float3 wo, float3 u)
     float3x3 param_2 = frame;
     float3 param_3 = wo;
     float3 o = mxc_to_local(param_2, param_3);
-    MxcLobe param_4 = l;
-    float3 param_5 = o;
-    float3 param_6 = float3(u.xy, uz);
-    MxcLobeSample ls = mxc_lobe_sample(param_4, param_5, param_6);
+    float q = c.msPick[chosen];
+    bool shaped = uz < q;
+    bool reflected = true;
+    if (shaped)
+    {
+        float v = uz / q;
+        float split = c.msSplit[chosen];
+        reflected = v < split;
+        float _3697;
+        if (reflected)
+        {
+            _3697 = v / max(split, 9.9999999747524270787835121154785e-07f);
+        }
+        else
+        {
+            _3697 = (v - split) / max(1.0f - split, 9.9999999747524270787835121154785e-07f);
+        }
+        uz = _3697;
+    }
+    else
+    {
+        uz = (uz - q) / (1.0f - q);
+    }
+    MxcLobe _3699;
+    if (shaped)
+    {
+        MxcLobe param_4 = l;
+        bool param_5 = !reflected;
+        _3699 = mxc_ms_lobe(param_4, param_5);
+    }
+    else
+    {
+        _3699 = l;
+    }
+    MxcLobe m = _3699;
+    MxcLobe param_6 = m;
+    float3 param_7 = o;
+    float3 param_8 = float3(u.xy, min(uz, 0.999999940395355224609375f));
+    MxcLobeSample ls = mxc_lobe_sample(param_6, param_7, param_8);
     if (!ls.valid)
     {
         return s;
     }
-    float3x3 param_7 = frame;
-    float3 param_8 = ls.wi;
-    s.wi = mxc_to_world(param_7, param_8);
+    float3x3 param_9 = frame;
+    float3 param_10 = ls.wi;
+    s.wi = mxc_to_world(param_9, param_10);
     if (ls.delta)
     {
         s.delta = true;
         s.pdf = (ls.pdf * p) / total;
-        MxcLobe param_9 = l;
-        float param_10 = abs(ls.wi.z);
-        s.weight = (((l.weight * c.ms[chosen]) * mxc_lobe_absorption(param_9, param_10)) * ls.value) / s.pdf.xxx;
+        MxcLobe param_11 = l;
+        float param_12 = abs(ls.wi.z);
+        s.weight = (((l.weight * c.ms[chosen]) * mxc_lobe_absorption(param_11, param_12)) * ls.value) / s.pdf.xxx;
         s.valid = s.pdf > 0.0f;
         return s;
     }
@@ -1706,16 +1934,16 @@ float3 mxc_env_to_map(float3 w, float angle)
 
 float2 mxc_env_uv(float3 d)
 {
-    float _3733;
+    float _4187;
     if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13f)
     {
-        _3733 = 0.5f + (atan2(d.x, -d.z) * 0.15915493667125701904296875f);
+        _4187 = 0.5f + (atan2(d.x, -d.z) * 0.15915493667125701904296875f);
     }
     else
     {
-        _3733 = 0.5f;
+        _4187 = 0.5f;
     }
-    float u = _3733;
+    float u = _4187;
     float v = atan2(length(d.xz), d.y) * 0.3183098733425140380859375f;
     return float2(u, v);
 }
@@ -1752,7 +1980,7 @@ uint mxc_env_cell(float3 d)
 {
     float3 param = d;
     float2 uv = mxc_env_uv(param);
-    uint2 size = max(_228.Load4(0).xy, uint2(1u, 1u));
+    uint2 size = max(_233.Load4(0).xy, uint2(1u, 1u));
     uint i = min(uint(max(uv.x, 0.0f) * float(size.x)), (size.x - 1u));
     uint j = min(uint(max(uv.y, 0.0f) * float(size.y)), (size.y - 1u));
     return (j * size.x) + i;
@@ -1761,36 +1989,36 @@ uint mxc_env_cell(float3 d)
 float mxc_env_pdf(float3 d)
 {
     float3 param = d;
-    return asfloat(_228.Load(mxc_env_cell(param) * 16 + 24));
+    return asfloat(_233.Load(mxc_env_cell(param) * 16 + 24));
 }
 
 float mxc_power_heuristic(float a, float b)
 {
     float a2 = a * a;
     float b2 = b * b;
-    float _4123;
+    float _4577;
     if ((a2 + b2) > 0.0f)
     {
-        _4123 = a2 / (a2 + b2);
+        _4577 = a2 / (a2 + b2);
     }
     else
     {
-        _4123 = 0.0f;
+        _4577 = 0.0f;
     }
-    return _4123;
+    return _4577;
 }
 
 float3 mxc_env_sample(float4 u, out float pdf)
 {
-    uint2 size = max(_228.Load4(0).xy, uint2(1u, 1u));
+    uint2 size = max(_233.Load4(0).xy, uint2(1u, 1u));
     uint n = size.x * size.y;
     uint k = min(uint(u.x * float(n)), (n - 1u));
-    float4 cell = asfloat(_228.Load4(k * 16 + 16));
+    float4 cell = asfloat(_233.Load4(k * 16 + 16));
     if (u.y >= cell.x)
     {
         k = min(asuint(cell.y), (n - 1u));
     }
-    pdf = asfloat(_228.Load(k * 16 + 24));
+    pdf = asfloat(_233.Load(k * 16 + 24));
     uint i = k % size.x;
     uint j = k / size.x;
     float phi = 6.283185482025146484375f * (((float(i) + u.z) / float(size.x)) - 0.5f);
@@ -1813,7 +2041,12 @@ float3 mxc_closure_eval_pdf(MxcClosure c, float3 wo, float3 wi, bool wantPdf, in
 {
     float3 f = 0.0f.xxx;
     float p = 0.0f;
-    float3 _3178;
+    MxcLobe _3477;
+    float3 _3481;
+    float3 _3482;
+    float3 _3483;
+    float _3488;
+    float _3489;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
@@ -1830,39 +2063,95 @@ float3 mxc_closure_eval_pdf(MxcClosure c, float3 wo, float3 wi, bool wantPdf, in
         float3x3 param_4 = frame;
         float3 param_5 = wi;
         float3 i = mxc_to_local(param_4, param_5);
-        if ((o.z * i.z) < 0.0f)
+        float3 fk = 0.0f.xxx;
+        float pk = 0.0f;
+        int passes = (c.msPick[k] > 0.0f) ? 2 : 1;
+        for (int _pass = 0; _pass < passes; _pass++)
         {
-            _3178 = c.msT[k].xxx;
+            bool shaped = _pass == 1;
+            if (shaped)
+            {
+                MxcLobe param_6 = l;
+                bool param_7 = i.z < 0.0f;
+                _3477 = mxc_ms_lobe(param_6, param_7);
+            }
+            else
+            {
+                _3477 = l;
+            }
+            MxcLobe m = _3477;
+            if (shaped)
+            {
+                if (i.z > 0.0f)
+                {
+                    _3482 = c.msLobe[k];
+                }
+                else
+                {
+                    _3482 = c.msLobeT[k];
+                }
+                _3481 = _3482;
+            }
+            else
+            {
+                if ((o.z * i.z) < 0.0f)
+                {
+                    _3483 = c.msT[k].xxx;
+                }
+                else
+                {
+                    _3483 = c.ms[k];
+                }
+                _3481 = _3483;
+            }
+            float3 scale = _3481;
+            MxcLobe param_8 = m;
+            float3 param_9 = o;
+            float3 param_10 = i;
+            fk += (scale * mxc_lobe_eval(param_8, param_9, param_10));
+            if (wantPdf)
+            {
+                if (shaped)
+                {
+                    if (i.z > 0.0f)
+                    {
+                        _3489 = c.msSplit[k];
+                    }
+                    else
+                    {
+                        _3489 = 1.0f - c.msSplit[k];
+                    }
+                    _3488 = c.msPick[k] * _3489;
+                }
+                else
+                {
+                    _3488 = 1.0f - c.msPick[k];
+                }
+                float share = _3488;
+                MxcLobe param_11 = m;
+                float3 param_12 = o;
+                float3 param_13 = i;
+                pk += (share * mxc_lobe_pdf(param_11, param_12, param_13));
+            }
         }
-        else
-        {
-            _3178 = c.ms[k];
-        }
-        float3 ms = _3178;
-        MxcLobe param_6 = l;
-        float param_7 = abs(i.z);
-        MxcLobe param_8 = l;
-        float3 param_9 = o;
-        float3 param_10 = i;
-        f += (((l.weight * ms) * mxc_lobe_absorption(param_6, param_7)) * mxc_lobe_eval(param_8, param_9, param_10));
+        MxcLobe param_14 = l;
+        float param_15 = abs(i.z);
+        f += ((l.weight * mxc_lobe_absorption(param_14, param_15)) * fk);
         if (wantPdf)
         {
-            MxcLobe param_11 = l;
-            float3 param_12 = o;
-            float3 param_13 = i;
-            p += (c.choice[k] * mxc_lobe_pdf(param_11, param_12, param_13));
+            p += (c.choice[k] * pk);
         }
     }
-    float _3187;
+    float _3495;
     if (c.choiceTotal > 0.0f)
     {
-        _3187 = p / c.choiceTotal;
+        _3495 = p / c.choiceTotal;
     }
     else
     {
-        _3187 = 0.0f;
+        _3495 = 0.0f;
     }
-    pdf = _3187;
+    pdf = _3495;
     return f;
 }
 
@@ -1926,16 +2215,16 @@ void frag_main()
     int lights = mxc_light_count();
     int kinds = mxc_light_kinds();
     bool image = mxc_environment_code() == 3;
-    int _284;
+    int _289;
     if (mxc_environment_code() != 0)
     {
-        _284 = max(mxc_view_counts.w, 1);
+        _289 = max(mxc_view_counts.w, 1);
     }
     else
     {
-        _284 = 0;
+        _289 = 0;
     }
-    int n = _284;
+    int n = _289;
     uint param_17 = uint(mxc_view_counts.z);
     uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
     uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
@@ -1944,54 +2233,54 @@ void frag_main()
     uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
     uint pixel = mxc_pcg(param_21);
     uint param_22 = pixel;
-    float _532 = mxc_uniform(param_22);
+    float _537 = mxc_uniform(param_22);
     pixel = param_22;
     uint param_23 = pixel;
-    float _536 = mxc_uniform(param_23);
+    float _541 = mxc_uniform(param_23);
     pixel = param_23;
     uint param_24 = pixel;
-    float _539 = mxc_uniform(param_24);
+    float _544 = mxc_uniform(param_24);
     pixel = param_24;
     uint param_25 = pixel;
-    float _542 = mxc_uniform(param_25);
+    float _547 = mxc_uniform(param_25);
     pixel = param_25;
-    float4 shift = float4(_532, _536, _539, _542);
+    float4 shift = float4(_537, _541, _544, _547);
     float3 sum = 0.0f.xxx;
-    int _301;
+    int _306;
     MxcSample smp;
-    float3 _318;
-    float3 _319;
-    float _324;
+    float3 _323;
+    float3 _324;
+    float _329;
     float param_49;
-    int _348;
+    int _353;
     float param_59;
-    float _364;
+    float _369;
     for (int b = 0; b < max(n, int(lights > 0)); b++)
     {
         int batchLights = (b == 0) ? lights : 0;
         if (b < n)
         {
-            _301 = 1 + int(image);
+            _306 = 1 + int(image);
         }
         else
         {
-            _301 = 0;
+            _306 = 0;
         }
-        int batchSamples = _301;
+        int batchSamples = _306;
         uint index = (uint(mxc_view_counts.z) * uint(max(n, 1))) + uint(b);
         uint param_26 = index;
         uint param_27 = 2u;
-        float _582 = mxc_radical_inverse(param_26, param_27);
+        float _587 = mxc_radical_inverse(param_26, param_27);
         uint param_28 = index;
         uint param_29 = 3u;
-        float _585 = mxc_radical_inverse(param_28, param_29);
+        float _590 = mxc_radical_inverse(param_28, param_29);
         uint param_30 = index;
         uint param_31 = 5u;
-        float _587 = mxc_radical_inverse(param_30, param_31);
+        float _592 = mxc_radical_inverse(param_30, param_31);
         uint param_32 = index;
         uint param_33 = 7u;
-        float _589 = mxc_radical_inverse(param_32, param_33);
-        float4 choice = frac(float4(_582, _585, _587, _589) + shift);
+        float _594 = mxc_radical_inverse(param_32, param_33);
+        float4 choice = frac(float4(_587, _590, _592, _594) + shift);
         smp.valid = false;
         smp.evaluate = false;
         smp.delta = false;
@@ -2010,58 +2299,58 @@ void frag_main()
         {
             if (above)
             {
-                _319 = smp.wi;
+                _324 = smp.wi;
             }
             else
             {
                 float3 param_37 = -wo;
                 float3 param_38 = smp.wi;
-                _319 = mxc_exit_direction(param_37, param_38);
+                _324 = mxc_exit_direction(param_37, param_38);
             }
-            float3 param_39 = _319;
-            _318 = mxc_environment(param_39);
+            float3 param_39 = _324;
+            _323 = mxc_environment(param_39);
         }
         else
         {
-            _318 = 0.0f.xxx;
+            _323 = 0.0f.xxx;
         }
-        float3 seen = _318;
-        bool _647 = (b < n) && smp.valid;
-        bool _653;
-        if (_647)
+        float3 seen = _323;
+        bool _652 = (b < n) && smp.valid;
+        bool _658;
+        if (_652)
         {
-            _653 = !smp.evaluate;
+            _658 = !smp.evaluate;
         }
         else
         {
-            _653 = _647;
+            _658 = _652;
         }
-        if (_653)
+        if (_658)
         {
-            bool _658 = image && above;
-            bool _664;
-            if (_658)
+            bool _663 = image && above;
+            bool _669;
+            if (_663)
             {
-                _664 = !smp.delta;
+                _669 = !smp.delta;
             }
             else
             {
-                _664 = _658;
+                _669 = _663;
             }
-            if (_664)
+            if (_669)
             {
                 float3 param_40 = smp.wi;
                 float param_41 = mxc_view_environment.z;
                 float3 param_42 = mxc_env_to_map(param_40, param_41);
                 float param_43 = smp.pdf;
                 float param_44 = mxc_env_pdf(param_42);
-                _324 = mxc_power_heuristic(param_43, param_44);
+                _329 = mxc_power_heuristic(param_43, param_44);
             }
             else
             {
-                _324 = 1.0f;
+                _329 = 1.0f;
             }
-            float w = _324;
+            float w = _329;
             sum += ((smp.weight * w) * seen);
         }
         float3 m = 0.0f.xxx;
@@ -2071,33 +2360,33 @@ void frag_main()
         if (image && (b < n))
         {
             uint param_45 = seed;
-            float _700 = mxc_uniform(param_45);
+            float _705 = mxc_uniform(param_45);
             seed = param_45;
             uint param_46 = seed;
-            float _703 = mxc_uniform(param_46);
+            float _708 = mxc_uniform(param_46);
             seed = param_46;
             uint param_47 = seed;
-            float _706 = mxc_uniform(param_47);
+            float _711 = mxc_uniform(param_47);
             seed = param_47;
-            float4 v = float4(choice.y, _700, _703, _706);
+            float4 v = float4(choice.y, _705, _708, _711);
             float4 param_48 = v;
-            float3 _710 = mxc_env_sample(param_48, param_49);
+            float3 _715 = mxc_env_sample(param_48, param_49);
             lightPdf = param_49;
-            m = _710;
+            m = _715;
             float3 param_50 = m;
             float param_51 = mxc_view_environment.z;
             imageWi = mxc_env_to_world(param_50, param_51);
-            bool _719 = lightPdf > 0.0f;
-            bool _726;
-            if (_719)
+            bool _724 = lightPdf > 0.0f;
+            bool _731;
+            if (_724)
             {
-                _726 = dot(imageWi, N) > 0.0f;
+                _731 = dot(imageWi, N) > 0.0f;
             }
             else
             {
-                _726 = _719;
+                _731 = _724;
             }
-            if (_726)
+            if (_731)
             {
                 float3 param_52 = imageWi;
                 imageSeen = mxc_environment(param_52);
@@ -2110,38 +2399,38 @@ void frag_main()
             bool use = true;
             if ((n == 0) || (j < batchLights))
             {
-                _348 = 0;
+                _353 = 0;
             }
             else
             {
-                _348 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+                _353 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
             }
-            int strategy = _348;
+            int strategy = _353;
             if (strategy == 0)
             {
                 float4 light = mxc_view_lightVector[j];
                 incoming = mxc_view_lightRadiance[j].xyz;
-                bool _771 = kinds == 1;
-                bool _784;
-                if (!_771)
+                bool _776 = kinds == 1;
+                bool _789;
+                if (!_776)
                 {
-                    bool _777 = (kinds & 1) != 0;
-                    bool _783;
-                    if (_777)
+                    bool _782 = (kinds & 1) != 0;
+                    bool _788;
+                    if (_782)
                     {
-                        _783 = light.w == 0.0f;
+                        _788 = light.w == 0.0f;
                     }
                     else
                     {
-                        _783 = _777;
+                        _788 = _782;
                     }
-                    _784 = _783;
+                    _789 = _788;
                 }
                 else
                 {
-                    _784 = _771;
+                    _789 = _776;
                 }
-                bool directional = _784;
+                bool directional = _789;
                 if (directional)
                 {
                     float3 param_53 = light.xyz;
@@ -2154,17 +2443,17 @@ void frag_main()
                     float d2 = max(dot(d, d), 9.9999999392252902907785028219223e-09f);
                     wi = d * rsqrt(d2);
                     incoming /= d2.xxx;
-                    bool _811 = (kinds & 4) != 0;
-                    bool _817;
-                    if (_811)
+                    bool _816 = (kinds & 4) != 0;
+                    bool _822;
+                    if (_816)
                     {
-                        _817 = light.w == 2.0f;
+                        _822 = light.w == 2.0f;
                     }
                     else
                     {
-                        _817 = _811;
+                        _822 = _816;
                     }
-                    if (_817)
+                    if (_822)
                     {
                         float4 spot = mxc_view_lightSpot[j];
                         incoming *= smoothstep(spot.w, mxc_view_lightRadiance[j].w, dot(-wi, spot.xyz));
@@ -2183,26 +2472,26 @@ void frag_main()
                 {
                     wi = imageWi;
                     incoming = imageSeen;
-                    bool _852 = lightPdf > 0.0f;
-                    bool _859;
-                    if (_852)
+                    bool _857 = lightPdf > 0.0f;
+                    bool _864;
+                    if (_857)
                     {
-                        _859 = dot(imageWi, N) > 0.0f;
+                        _864 = dot(imageWi, N) > 0.0f;
                     }
                     else
                     {
-                        _859 = _852;
+                        _864 = _857;
                     }
-                    use = _859;
+                    use = _864;
                 }
             }
             MxcClosure param_55 = c;
             float3 param_56 = wo;
             float3 param_57 = wi;
             bool param_58 = strategy != 0;
-            float3 _865 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            float3 _870 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
             float pdf = param_59;
-            float3 f = _865;
+            float3 f = _870;
             if (strategy == 0)
             {
                 radiance += (f * incoming);
@@ -2220,13 +2509,13 @@ void frag_main()
                             float3 param_62 = mxc_env_to_map(param_60, param_61);
                             float param_63 = pdf;
                             float param_64 = mxc_env_pdf(param_62);
-                            _364 = mxc_power_heuristic(param_63, param_64);
+                            _369 = mxc_power_heuristic(param_63, param_64);
                         }
                         else
                         {
-                            _364 = 1.0f;
+                            _369 = 1.0f;
                         }
-                        float w_1 = _364;
+                        float w_1 = _369;
                         sum += (((f * w_1) / pdf.xxx) * incoming);
                     }
                 }

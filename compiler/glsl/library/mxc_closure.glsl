@@ -13,6 +13,14 @@ struct MxcClosure {
   float choiceTotal;
   vec3 ms[MXC_MAX_LOBES];       // each lobe's multiple-scattering factor for this wo (mxc_lobe_ms_scale)
   float msT[MXC_MAX_LOBES];     // and on its refraction (mxc_lobe_ms_transmit)
+  // A lobe whose multiple scattering is shaped (mxc_lobe_ms_shaped): its f_ms cos is that of
+  // the broader lobes mxc_ms_lobe times msLobe in reflection and msLobeT in refraction, and a
+  // sample of the lobe is one of the broader lobes with probability msPick (0: none), of the
+  // reflecting one with probability msSplit among those.
+  vec3 msLobe[MXC_MAX_LOBES];
+  vec3 msLobeT[MXC_MAX_LOBES];
+  float msPick[MXC_MAX_LOBES];
+  float msSplit[MXC_MAX_LOBES];
   vec3 emission;      // radiance leaving towards wo
   vec3 transparency;  // weight of light passing straight through (opacity < 1)
 };
@@ -73,13 +81,56 @@ void mxc_closure_prepare(inout MxcClosure c, vec3 wo) {
     // its factor and its tables' lookups are not needed.
     c.ms[k] = vec3(1.0);
     c.msT[k] = 1.0;
+    c.msLobe[k] = vec3(0.0);
+    c.msLobeT[k] = vec3(0.0);
+    c.msPick[k] = 0.0;
+    c.msSplit[k] = 1.0;
     c.choice[k] = 0.0;
     if (l.weight == vec3(0.0)) continue;
     vec3 o = mxc_to_local(mxc_frame(l.N, l.T), wo);
-    c.ms[k] = mxc_lobe_ms_scale(l, o);
-    c.msT[k] = mxc_lobe_ms_transmit(l, o, c.ms[k]);
-    c.choice[k] = mxc_lobe_choice(l, o, c.ms[k]);
+    vec3 ms = mxc_lobe_ms_scale(l, o);
+    c.msT[k] = mxc_lobe_ms_transmit(l, o, ms);
+    c.choice[k] = mxc_lobe_choice(l, o, ms);
     c.choiceTotal += c.choice[k];
+    if (mxc_lobe_ms_shaped(l, o)) {
+      // The compensation's energy at wo, in reflection and (a dielectric that transmits) in
+      // refraction, as lobes of their own; the single scattering unscaled.
+      float alpha = sqrt(l.alpha.x * l.alpha.y);  // the tables' isotropic alpha: geometric mean
+      vec3 reflected = mxc_lobe_albedo_scaled(l, o, vec3(1.0));
+      vec3 addedR = max(mxc_lobe_albedo_scaled(l, o, ms) - reflected, vec3(0.0));
+      vec3 transmitted = vec3(0.0);
+      vec3 addedT = vec3(0.0);
+#ifndef MXC_ACCURACY_FAST  // (fast has no shaped lobe: mxc_lobe_ms_shaped)
+      if (l.kind == MXC_LOBE_DIELECTRIC && mxc_lobe_transmits(l)) {
+        float rss = mxc_dielectric_albedo(o.z, alpha, l.eta);
+        transmitted = max(mxc_dielectric_albedo_rt(o.z, alpha, l.eta) - rss, 0.0) * l.c1;
+        addedT = max(c.msT[k] - 1.0, 0.0) * transmitted;  // msT >= 1: (1 - R_ms) / T_ss
+      }
+#endif
+      // Over wi, the broader lobe's f cos integrates to its albedo: divided by it, each part
+      // returns exactly the energy added (floors: a lobe that reflects or refracts nothing).
+      MxcLobe mr = mxc_ms_lobe(l, false);
+      vec3 broadR = mxc_lobe_albedo_scaled(mr, o, vec3(1.0));
+      float broadT = 1.0;
+#ifndef MXC_ACCURACY_FAST
+      if (l.kind == MXC_LOBE_DIELECTRIC && mxc_lobe_transmits(l)) {
+        MxcLobe mt = mxc_ms_lobe(l, true);
+        float at = sqrt(mt.alpha.x * mt.alpha.y);
+        broadT = mxc_dielectric_albedo_rt(o.z, at, l.eta) - mxc_dielectric_albedo(o.z, at, l.eta);
+      }
+#endif
+      c.msLobe[k] = addedR / max(broadR, vec3(1e-4));
+      c.msLobeT[k] = addedT / max(broadT, 1e-4);
+      // In proportion to the energy; below 1 so that the lobe's own sampler keeps a share (the
+      // mixture's pdf is then > 0 wherever the single scattering is).
+      float total = max(mxc_luminance(reflected + addedR + transmitted + addedT), 1e-6);
+      float added = mxc_luminance(addedR + addedT);
+      c.msPick[k] = 0.999 * min(added / total, 1.0);
+      c.msSplit[k] = added > 0.0 ? mxc_luminance(addedR) / added : 1.0;
+      c.msT[k] = 1.0;
+    } else {
+      c.ms[k] = ms;
+    }
   }
 }
 
@@ -95,9 +146,26 @@ vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, out floa
     mat3 frame = mxc_frame(l.N, l.T);
     vec3 o = mxc_to_local(frame, wo);
     vec3 i = mxc_to_local(frame, wi);
-    vec3 ms = o.z * i.z < 0.0 ? vec3(c.msT[k]) : c.ms[k];  // refraction or reflection
-    f += l.weight * ms * mxc_lobe_absorption(l, abs(i.z)) * mxc_lobe_eval(l, o, i);
-    if (wantPdf) p += c.choice[k] * mxc_lobe_pdf(l, o, i);
+    vec3 fk = vec3(0.0);
+    float pk = 0.0;
+    // Pass 0: the lobe; pass 1 (a lobe whose multiple scattering is shaped, seen from above:
+    // mxc_lobe_ms_shaped): its multiple scattering, the broader lobe on wi's side, sampled with
+    // probability msPick, its reflecting part msSplit of that. A loop with a bound known only
+    // at run time keeps one inlined copy of the lobe code (lavapipe compiles each copy).
+    int passes = c.msPick[k] > 0.0 ? 2 : 1;
+    for (int pass = 0; pass < passes; ++pass) {
+      bool shaped = pass == 1;
+      MxcLobe m = shaped ? mxc_ms_lobe(l, i.z < 0.0) : l;
+      vec3 scale = shaped ? (i.z > 0.0 ? c.msLobe[k] : c.msLobeT[k])
+                          : (o.z * i.z < 0.0 ? vec3(c.msT[k]) : c.ms[k]);  // refraction or reflection
+      fk += scale * mxc_lobe_eval(m, o, i);
+      if (wantPdf) {
+        float share = shaped ? c.msPick[k] * (i.z > 0.0 ? c.msSplit[k] : 1.0 - c.msSplit[k]) : 1.0 - c.msPick[k];
+        pk += share * mxc_lobe_pdf(m, o, i);
+      }
+    }
+    f += l.weight * mxc_lobe_absorption(l, abs(i.z)) * fk;
+    if (wantPdf) p += c.choice[k] * pk;
   }
   pdf = c.choiceTotal > 0.0 ? p / c.choiceTotal : 0.0;
   return f;
@@ -149,7 +217,22 @@ MxcSample mxc_closure_sample_direction(MxcClosure c, vec3 wo, vec3 u) {
   MxcLobe l = c.lobes[chosen];
   mat3 frame = mxc_frame(l.N, l.T);
   vec3 o = mxc_to_local(frame, wo);
-  MxcLobeSample ls = mxc_lobe_sample(l, o, vec3(u.xy, uz));
+  // The lobe's shaped multiple scattering with probability q: a sample of the broader lobe,
+  // reflecting with probability msSplit; the mixture's pdf has it (mxc_closure_eval_pdf). One
+  // call of the sampler for either (one inlined copy).
+  float q = c.msPick[chosen];
+  bool shaped = uz < q;
+  bool reflected = true;
+  if (shaped) {
+    float v = uz / q;  // q > 0
+    float split = c.msSplit[chosen];
+    reflected = v < split;
+    uz = reflected ? v / max(split, 1e-6) : (v - split) / max(1.0 - split, 1e-6);
+  } else {
+    uz = (uz - q) / (1.0 - q);  // q <= 0.999
+  }
+  MxcLobe m = shaped ? mxc_ms_lobe(l, !reflected) : l;
+  MxcLobeSample ls = mxc_lobe_sample(m, o, vec3(u.xy, min(uz, 0.99999994)));
   if (!ls.valid) return s;
   s.wi = mxc_to_world(frame, ls.wi);
   if (ls.delta) {
