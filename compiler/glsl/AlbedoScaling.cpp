@@ -106,6 +106,8 @@ class Walk {
     } recycle;  // set when a coat darkens what is under it
     const Id floor = v_.constant(1e-3f);  // IORs that divide are kept >= 1e-3
     const ir::Interface* top = n.top != ir::kNone ? &m_.interfaces[n.top] : nullptr;
+    Id applied = v_.vec3(1.0f);     // the darkening it applies to what is under it
+    Id darkeningControl = v_.constant(0.0f);
     if (top) {
       int mode = 0;
       const bool dielectric = top->kind == InterfaceKind::Dielectric || top->kind == InterfaceKind::Schlick;
@@ -165,12 +167,18 @@ class Walk {
           auto [factor, newFactor] = darkening_.try_emplace(l, std::string());
           if (newFactor) {
             factor->second = var("dark");
-            out_.lines.add(fmt::format("  vec3 {} = mxc_coat_darkening({}, {}, {}, {}, dot(wo, {}.N));", factor->second,
-                                       v_.glsl(v_.max(topIor, floor)), v_.glsl(v_.asVec3(baseAlbedo->value)),
+            // The base's IOR: the coat's own when the lowering gives none (K_r as the spec has it).
+            const ir::Param* baseIorParam = top->slots.find(Slot::BaseIor);
+            const Id baseIor = baseIorParam ? v_.param(*baseIorParam, topIor) : topIor;
+            out_.lines.add(fmt::format("  vec3 {} = mxc_coat_darkening({}, {}, {}, {}, {}, dot(wo, {}.N));", factor->second,
+                                       v_.glsl(v_.max(topIor, floor)), v_.glsl(v_.max(baseIor, floor)),
+                                       v_.glsl(v_.asVec3(baseAlbedo->value)),
                                        v_.glsl(baseRoughness->value), v_.glsl(delta), l),
                            darkening->origin.location);
           }
-          through = v_.mul(through, v_.local(factor->second, Type::Vec3));
+          applied = v_.local(factor->second, Type::Vec3);
+          darkeningControl = delta;
+          through = v_.mul(through, applied);
         }
       }
       normal = l + ".N";
@@ -205,9 +213,15 @@ class Walk {
       }
       throughEmitted = v_.mul(throughEmitted, v_.local(recycled->second, Type::Vec3));
     }
+    if (top && top->kind == InterfaceKind::Dielectric) {
+      under.interfaceIor = topIor;
+      under.interfaceCoverage = cov;
+    }
     if (top && top->kind == InterfaceKind::Dielectric && top->iorReference == ir::IorReference::MediumAbove) {
       under.coatIor = topIor;
       under.coatCoverage = cov;
+      under.darkening = applied;
+      under.darkeningControl = darkeningControl;
     }
     if (subsurface) {
       // Under the interface, a dense scattering bulk seen from outside: a diffuse lobe of the
@@ -224,7 +238,21 @@ class Walk {
         fields.set("kind", fmt::format("MXC_LOBE_{}", ir::lobeKindName(ir::LobeKind::EON)));
         fields.set("N", normal);
         fields.set("T", tangent);
-        fields.set("c0", v_.glsl(mediumSlot(Slot::ObservedAlbedo, v_.vec3(0.8f))));
+        const Id observed = v_.asVec3(mediumSlot(Slot::ObservedAlbedo, v_.vec3(0.8f)));
+        // The half-space's own angular dependence and coat darkening (mxc_subsurface.glsl),
+        // under its interface, or the nearest dielectric above it (partly covering: its IOR
+        // ratio mixed towards 1 by the coverage, exact at 0 and 1) as the reference walk meets
+        // it. The same with an IR that keeps the two apart (a general shader) or merges them.
+        const bool ownInterface = top && top->kind == InterfaceKind::Dielectric;
+        const Id ior = ownInterface ? topIor : v_.mix(v_.constant(1.0f), above.interfaceIor, above.interfaceCoverage);
+        if (ownInterface || !v_.isZero(above.interfaceCoverage)) {
+          fields.set("c0", fmt::format("{0} * mxc_subsurface_factor({0}, {1}, dot(wo, {2}), {3}, {4}, {5}, {6})",
+                                       v_.glsl(observed), v_.glsl(v_.max(ior, floor)), normal, v_.glsl(above.coatIor),
+                                       v_.glsl(above.coatCoverage), v_.glsl(above.darkeningControl),
+                                       v_.glsl(above.darkening)));
+        } else {
+          fields.set("c0", v_.glsl(observed));
+        }
         fields.set("tau", v_.glsl(above.tau));
         fields.set("tauEta", v_.glsl(v_.max(above.tauEta, floor)));
         out_.modes |= kModeReflect;

@@ -35,8 +35,19 @@ struct Above {
   ClosureValues::Id coatCoverage;
   ClosureValues::Id tau;
   ClosureValues::Id tauEta;
+  /// The darkening the coat's layering applies to what is under it (vec3; 1 without one) and
+  /// its coat_darkening control (mxc_coat_darkening), for a layer that darkens otherwise.
+  ClosureValues::Id darkening;
+  ClosureValues::Id darkeningControl;
+  /// The nearest dielectric interface above (its IOR and coverage; coverage 0: none), for a
+  /// medium under it without an interface of its own (Standard Surface's subsurface).
+  ClosureValues::Id interfaceIor;
+  ClosureValues::Id interfaceCoverage;
   /// The ambient medium: IOR 1, no coat, no absorption.
-  static Above ambient(ClosureValues& v) { return {v.constant(1.0f), v.constant(0.0f), v.vec3(0.0f), v.constant(1.0f)}; }
+  static Above ambient(ClosureValues& v) {
+    return {v.constant(1.0f), v.constant(0.0f), v.vec3(0.0f), v.constant(1.0f),
+            v.vec3(1.0f),     v.constant(0.0f), v.constant(1.0f), v.constant(0.0f)};
+  }
 };
 
 /// An MxcLobe for an interface of `material`.

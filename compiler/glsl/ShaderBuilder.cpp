@@ -328,6 +328,7 @@ MaterialShader buildMaterialShader(const ir::Material& material, ShaderKind kind
   w.file("library/mxc_geometry.glsl");
   if (exprs.usesProcedural()) w.file("library/mxc_procedural.glsl");
   w.file("library/mxc_lobes.glsl");
+  w.file("library/mxc_subsurface.glsl");
   w.file(options.accuracy == Accuracy::Reference ? "library/mxc_walk.glsl" : "library/mxc_closure.glsl");
   w.file("library/mxc_closure_sample.glsl");
 

@@ -10,7 +10,7 @@ std::string_view slotName(Slot slot) {
       "tangent",    "color",         "roughness",       "f0",                "f82",        "f90",
       "exponent",   "extinction",    "complex_ior",     "anisotropy",        "absorption", "scattering",
       "thickness",  "observed_albedo", "abbe_number",   "darkening",         "base_albedo",
-      "base_roughness", "weight",   "luminance",       "inner_angle",       "outer_angle",
+      "base_roughness", "base_ior", "weight",   "luminance",       "inner_angle",       "outer_angle",
       "internal_reflection_tint", "fibre_roughness_r", "fibre_roughness_tt", "fibre_roughness_trt", "cuticle_tilt"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<size_t>(Slot::Count), "every slot has a name");
   return names[static_cast<size_t>(slot)];

@@ -66,6 +66,7 @@ enum class Slot : uint8_t {
   Darkening,         ///< float: coat darkening control (OpenPBR "Darkening")
   BaseAlbedo,        ///< vec3: a coat's or fuzz's estimate of the albedo under it, E_b (OpenPBR "Darkening")
   BaseRoughness,     ///< float: a coat's estimate of the roughness under it, r_b (OpenPBR eq. base_roughness_estimate)
+  BaseIor,           ///< float: a coat's estimate of the IOR of the medium its base's diffuse light starts in (specular_ior)
   Weight,            ///< float: a lobe scale MaterialX gives but physics does not (pbrlib `weight`)
   Luminance,         ///< float: emission luminance (nits)
   InnerAngle,        ///< float: conical emission, full inside this half-angle (degrees)

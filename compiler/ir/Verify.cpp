@@ -18,7 +18,8 @@ constexpr SlotSpec kDielectric[] = {
     {Slot::Ior, kFloat},         {Slot::FresnelScale, kFloat},  {Slot::ReflectionTint, kVec3},
     {Slot::TransmissionTint, kVec3}, {Slot::Alpha, kVec2},      {Slot::Normal, kVec3},
     {Slot::Tangent, kVec3},      {Slot::AbbeNumber, kFloat},    {Slot::Darkening, kFloat},
-    {Slot::BaseAlbedo, kVec3},   {Slot::BaseRoughness, kFloat}, {Slot::Weight, kColor},
+    {Slot::BaseAlbedo, kVec3},   {Slot::BaseRoughness, kFloat}, {Slot::BaseIor, kFloat},
+    {Slot::Weight, kColor},
 };
 constexpr SlotSpec kConductor[] = {
     {Slot::ComplexIor, kVec3}, {Slot::Extinction, kVec3}, {Slot::Alpha, kVec2},

@@ -59,6 +59,26 @@ struct OpenPbr : ShadingModelInputs {
     return b.lerp(rd, r, clamped("base_metalness", 0.0f, 1.0f).value);
   }
 
+  /// The IOR of the medium in which the light the base returns into the coat starts: the
+  /// dielectric base's (its diffuse lobe and subsurface lie under that interface), the coat's own
+  /// for a metal (which returns its light into the coat directly), mixed by base_metalness. A
+  /// base less dense than the coat fills only part of the coat's hemisphere with its light
+  /// (mxc_coat_darkening). The dielectric's IOR is specular_ior modulated by specular_weight, as
+  /// the interface's Fresnel is (eq. modulated_ior: F0 scaled by xi_s, the IOR ratio to the coat
+  /// that has that F0, on the same side of 1): specular_weight 0 is index-matched to the coat.
+  ExprId darkeningBaseIor() {
+    const ExprId coat = b.max(p("coat_ior").value, b.f(1e-3f));
+    const ExprId ratio = b.div(b.max(p("specular_ior").value, b.f(1e-3f)), coat);  // both >= 1e-3
+    const ExprId eta = b.max(ratio, b.div(b.f(1.0f), ratio));                         // >= 1
+    const ExprId amplitude = b.div(b.sub(eta, b.f(1.0f)), b.add(eta, b.f(1.0f)));    // eta + 1 >= 2
+    const ExprId f0 = b.clamp(b.mul(b.nonNegative(p("specular_weight").value), b.mul(amplitude, amplitude)), b.f(0.0f),
+                              b.f(0.99f));
+    const ExprId root = b.sqrt(f0);                                                  // f0 >= 0
+    const ExprId modulated = b.div(b.add(b.f(1.0f), root), b.sub(b.f(1.0f), root));  // 1 - root >= 0.005
+    const ExprId modulatedRatio = b.select(b.greater(ratio, b.f(1.0f)), modulated, b.div(b.f(1.0f), modulated));
+    return b.lerp(b.mul(modulatedRatio, coat), coat, clamped("base_metalness", 0.0f, 1.0f).value);
+  }
+
   /// The thin film of the base interfaces (OpenPBR "Thin-film iridescence"): thickness is given
   /// in micrometres; the IR keeps nanometres.
   ir::ThinFilm thinFilm() {
@@ -259,6 +279,7 @@ struct OpenPbr : ShadingModelInputs {
     coat.slots.set(Slot::Darkening, clamped("coat_darkening", 0.0f, 1.0f));
     coat.slots.set(Slot::BaseAlbedo, {darkeningBaseAlbedo(), at("coat_darkening")});
     coat.slots.set(Slot::BaseRoughness, {darkeningBaseRoughness(), at("coat_darkening")});
+    coat.slots.set(Slot::BaseIor, {darkeningBaseIor(), at("coat_darkening")});
     Index coatMediumIndex = coatMedium(c, clamped("coat_color", 0.0f, 1.0f), at("coat_color"));
     Index coated = c.material.slab(c.material.addInterface(std::move(coat)), coatMediumIndex, emitting,
                                    clamped("coat_weight", 0.0f, 1.0f), at("coat_weight"));

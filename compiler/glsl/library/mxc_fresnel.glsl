@@ -224,9 +224,24 @@ float mxc_fresnel_average(float eta) {
 // (delta = 0: the base boosted by exactly 1 / Delta, eq. boost_factor) to Delta (delta = 1).
 // A coat less dense than outside (eta_c < 1) traps nothing by total internal reflection: it is
 // taken as index-matched (K = 0).
-vec3 mxc_coat_darkening(float eta_c, vec3 Eb, float rb, float delta, float mu_o) {
+//
+// K_r is the share of a Lambertian in the coat that the coat's top returns, by reciprocity
+// 1 minus its hemispherical transmittance (1 - E_F) / eta_c^2. A dielectric base's diffuse light
+// starts in the base's medium (eta_b, specular_ior): refracted into a denser coat it fills only
+// the cone sin theta < eta_b / eta_c, and n sin theta is kept across the parallel interfaces,
+// so what leaves is what a Lambertian in a medium of eta_b would let out, (1 - E_F) / eta_b^2 of
+// it (the Fresnel of the coat's top is the same function of the angle outside):
+// K_r = 1 - (1 - E_F(eta_c)) / min(eta_c, eta_b)^2. The spec's K_r assumes the coat's whole
+// hemisphere; it darkened the default base under a coat of 1.6 by 0.03 more than the reference
+// walk (issue 39). A metal base returns its light into the coat directly (eta_b = eta_c).
+vec3 mxc_coat_darkening(float eta_c, float eta_b, vec3 Eb, float rb, float delta, float mu_o) {
   float eta = max(eta_c, 1.0);
-  float Kr = 1.0 - (1.0 - mxc_fresnel_average(eta)) / (eta * eta);  // eta >= 1
+#ifdef MXC_ACCURACY_FAST
+  float cone = eta;  // the fast tier keeps the spec's K_r
+#else
+  float cone = min(eta, max(eta_b, 1.0));  // >= 1
+#endif
+  float Kr = 1.0 - (1.0 - mxc_fresnel_average(eta)) / (cone * cone);
   float Ks = mxc_fresnel_dielectric(clamp(mu_o, 0.0, 1.0), eta);
   // K < 1 keeps Delta defined: with Eb = 1 it is then exactly (1 - K) / (1 - K) = 1.
   float K = min(mix(Ks, Kr, clamp(rb, 0.0, 1.0)), 0.999);

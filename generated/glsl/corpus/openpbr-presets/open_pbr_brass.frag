@@ -29,6 +29,7 @@
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----

@@ -30,6 +30,7 @@
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -68,7 +69,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe2.T = lobe0.T;
   lobe2.alpha = vec2(0.0);
   lobe2.eta = 1.5;
-  lobe2.c0 = vec3(0.8152099, 0.8125722, 0.68193907);
+  lobe2.c0 = vec3(0.8152099, 0.8125722, 0.68193907) * mxc_subsurface_factor(vec3(0.8152099, 0.8125722, 0.68193907), 1.35, dot(wo, lobe0.N), 1.0, 0.0, 0.0, vec3(1.0));
   lobe2.c1 = vec3(1.0);
   lobe2.c2 = vec3(1.0);
   lobe2.p0 = 0.0;

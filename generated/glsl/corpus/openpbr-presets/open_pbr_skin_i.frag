@@ -30,6 +30,7 @@
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -68,7 +69,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe2.T = lobe0.T;
   lobe2.alpha = vec2(0.0);
   lobe2.eta = 1.5;
-  lobe2.c0 = vec3(0.84654933, 0.63855785, 0.55250996);
+  lobe2.c0 = vec3(0.84654933, 0.63855785, 0.55250996) * mxc_subsurface_factor(vec3(0.84654933, 0.63855785, 0.55250996), 1.4, dot(wo, lobe0.N), 1.0, 0.0, 0.0, vec3(1.0));
   lobe2.c1 = vec3(1.0);
   lobe2.c2 = vec3(1.0);
   lobe2.p0 = 0.0;

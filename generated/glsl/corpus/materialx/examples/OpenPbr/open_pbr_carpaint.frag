@@ -30,6 +30,7 @@
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -61,7 +62,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
-  vec3 dark2 = mxc_coat_darkening(1.6, vec3(0.1, 0.6, 0.9), 1.0, 1.0, dot(wo, lobe0.N));
+  vec3 dark2 = mxc_coat_darkening(1.6, 1.6, vec3(0.1, 0.6, 0.9), 1.0, 1.0, dot(wo, lobe0.N));
   vec3 w3 = ((vec3(1.0) - e1) * dark2);
   MxcLobe lobe4;
   lobe4.kind = MXC_LOBE_DIELECTRIC;

@@ -31,6 +31,7 @@
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -62,7 +63,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.tau = vec3(0.0);
   lobe0.tauEta = 1.0;
   vec3 e1 = mxc_lobe_layer_albedo(lobe0, mxc_to_local(mxc_frame(lobe0.N, lobe0.T), wo));
-  vec3 dark2 = mxc_coat_darkening(1.68, vec3(0.8, 0.75, 0.7), 0.9979174, 1.0, dot(wo, lobe0.N));
+  vec3 dark2 = mxc_coat_darkening(1.68, 1.5000001, vec3(0.8, 0.75, 0.7), 0.9979174, 1.0, dot(wo, lobe0.N));
   vec3 w3 = ((vec3(1.0) - e1) * dark2);
   MxcLobe lobe4;
   lobe4.kind = MXC_LOBE_DIELECTRIC;
@@ -87,7 +88,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe6.T = lobe4.T;
   lobe6.alpha = vec2(0.0);
   lobe6.eta = 1.5;
-  lobe6.c0 = vec3(0.8, 0.75, 0.7);
+  lobe6.c0 = vec3(0.8, 0.75, 0.7) * mxc_subsurface_factor(vec3(0.8, 0.75, 0.7), 1.5, dot(wo, lobe4.N), 1.68, 1.0, 1.0, dark2);
   lobe6.c1 = vec3(1.0);
   lobe6.c2 = vec3(1.0);
   lobe6.p0 = 0.0;

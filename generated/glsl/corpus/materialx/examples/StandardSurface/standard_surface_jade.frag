@@ -31,6 +31,7 @@
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -86,7 +87,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe5.T = lobe1.T;
   lobe5.alpha = vec2(0.0);
   lobe5.eta = 1.5;
-  lobe5.c0 = vec3(0.0603, 0.4398, 0.1916);
+  lobe5.c0 = vec3(0.0603, 0.4398, 0.1916) * mxc_subsurface_factor(vec3(0.0603, 0.4398, 0.1916), 2.418, dot(wo, lobe1.N), 1.0, 0.0, 0.0, vec3(1.0));
   lobe5.c1 = vec3(1.0);
   lobe5.c2 = vec3(1.0);
   lobe5.p0 = 0.0;

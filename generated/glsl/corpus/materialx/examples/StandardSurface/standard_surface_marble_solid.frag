@@ -32,6 +32,7 @@
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_procedural.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -113,7 +114,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe5.T = lobe1.T;
   lobe5.alpha = vec2(0.0);
   lobe5.eta = 1.5;
-  lobe5.c0 = v26;
+  lobe5.c0 = v26 * mxc_subsurface_factor(v26, 1.5, dot(wo, lobe1.N), 1.0, 0.0, 0.0, vec3(1.0));
   lobe5.c1 = vec3(1.0);
   lobe5.c2 = vec3(1.0);
   lobe5.p0 = 0.0;

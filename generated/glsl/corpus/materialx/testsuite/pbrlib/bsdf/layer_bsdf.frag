@@ -32,6 +32,7 @@
 #include "library/mxc_sheen.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -161,6 +162,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----

@@ -30,6 +30,7 @@
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -103,6 +104,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -195,6 +197,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -286,6 +289,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -377,6 +381,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -467,6 +472,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -540,6 +546,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
@@ -612,6 +619,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
 #include "library/mxc_fresnel.glsl"
 #include "library/mxc_geometry.glsl"
 #include "library/mxc_lobes.glsl"
+#include "library/mxc_subsurface.glsl"
 #include "library/mxc_closure.glsl"
 #include "library/mxc_closure_sample.glsl"
 // ---- the material's parameters ----
