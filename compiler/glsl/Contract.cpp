@@ -19,6 +19,10 @@ constexpr Member kLobe[] = {
     {"vec3", "T", 0, "tangent", "g.T"},
     {"vec2", "alpha", 0, "GGX alphas (tangent, bitangent); hair: R's (v, s)", "vec2(0.0)"},
     {"float", "eta", 0, "dielectric: relative IOR (below / above); hair: the fibre's IOR", "1.5"},
+    {"float", "etaAbove", 0,
+     "dielectric under a coat: the coat's IOR over the ambient's, mixed to 1 by its coverage (balanced refracts "
+     "the Fresnel's cosine into it)",
+     "1.0"},
     {"vec3", "c0", 0, "dielectric: reflection tint; conductor: n; schlick: f0; hair: R tint; others: colour", "vec3(1.0)"},
     {"vec3", "c1", 0, "dielectric: transmission tint; conductor: k; schlick: f82 tint; hair: TT tint", "vec3(1.0)"},
     {"vec3", "c2", 0, "schlick: f90; hair: TRT tint", "vec3(1.0)"},

@@ -61,6 +61,9 @@ LobeFields mapInterface(ClosureValues& v, const ir::Material& m, const ir::Inter
       ClosureValues::Id eta = nb;
       if (f.iorReference == ir::IorReference::MediumAbove && !v.isZero(above.coatCoverage)) {
         eta = v.mix(nb, v.iorRatio(nb, v.max(above.coatIor, floor)), above.coatCoverage);
+        // The view reaches the base refracted by the coat (OpenPBR eq. refracted_coat_dir);
+        // mixed to 1 by the coverage like the ratio, exact at 0 and 1.
+        fields.set("etaAbove", v.glsl(v.mix(v.constant(1.0f), v.max(above.coatIor, floor), above.coatCoverage)));
       }
       std::string etaGlsl = v.glsl(eta);
       // OpenPBR eq. modulated_ior: specular_weight scales F0, a library function of eta.

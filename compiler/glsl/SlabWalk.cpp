@@ -108,6 +108,7 @@ class Walk {
       layer.etaBare = eta(f, ir::kNoExpr);
       if (coat.index >= 0 && !coat.always) layer.coat = coat.index;
       layer.lobe.set("eta", layer.etaCovered);
+      layer.lobe.set("etaAbove", "1.0");  // the walk refracts its directions through the coat itself
     }
     if (f.kind == InterfaceKind::Hair) {
       // A fibre: its IOR is its own, not a ratio to a layer above, and what passes through it

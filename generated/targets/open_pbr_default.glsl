@@ -33,6 +33,7 @@ struct MxcLobe
     vec3 T;
     vec2 alpha;
     float eta;
+    float etaAbove;
     vec3 c0;
     vec3 c1;
     vec3 c2;
@@ -82,18 +83,18 @@ struct MxcLobeSample
 #define SPIRV_CROSS_CONSTANT_ID_0 -1
 #endif
 const int MXC_ENVIRONMENT = SPIRV_CROSS_CONSTANT_ID_0;
-const bool _223 = (MXC_ENVIRONMENT != (-1));
+const bool _225 = (MXC_ENVIRONMENT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_1
 #define SPIRV_CROSS_CONSTANT_ID_1 -1
 #endif
 const int MXC_LIGHT_COUNT = SPIRV_CROSS_CONSTANT_ID_1;
-const bool _225 = (MXC_LIGHT_COUNT != (-1));
+const bool _227 = (MXC_LIGHT_COUNT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_2
 #define SPIRV_CROSS_CONSTANT_ID_2 -1
 #endif
 const int MXC_LIGHT_KINDS = SPIRV_CROSS_CONSTANT_ID_2;
-const bool _227 = (MXC_LIGHT_KINDS != (-1));
-const int _228 = _227 ? MXC_LIGHT_KINDS : 7;
+const bool _229 = (MXC_LIGHT_KINDS != (-1));
+const int _230 = _229 ? MXC_LIGHT_KINDS : 7;
 
 layout(binding = 0, std140) uniform MxcView
 {
@@ -120,7 +121,7 @@ layout(binding = 1, std430) readonly buffer MxcEnvDistribution
 {
     uvec4 mxc_env_size;
     vec4 mxc_env_cells[];
-} _206;
+} _208;
 
 layout(binding = 0) uniform sampler2D mxc_tables;
 layout(binding = 1) uniform sampler2D mxc_env_radiance;
@@ -137,16 +138,16 @@ layout(location = 0) out vec4 outColor;
 vec3 mxc_safe_normalize(vec3 v, vec3 fallback)
 {
     float l2 = dot(v, v);
-    vec3 _957;
+    vec3 _959;
     if (l2 > 9.9999996826552253889678874634872e-21)
     {
-        _957 = v * inversesqrt(l2);
+        _959 = v * inversesqrt(l2);
     }
     else
     {
-        _957 = fallback;
+        _959 = fallback;
     }
-    return _957;
+    return _959;
 }
 
 mat3 mxc_frame(vec3 N, vec3 T)
@@ -195,17 +196,17 @@ bool mxc_index_matched(MxcLobe l)
 
 bool mxc_dielectric_walk_split(MxcLobe l, vec3 wo)
 {
-    bool _2011 = wo.z <= 0.0;
-    bool _2018;
-    if (!_2011)
+    bool _2050 = wo.z <= 0.0;
+    bool _2057;
+    if (!_2050)
     {
-        _2018 = l.eta < 1.0;
+        _2057 = l.eta < 1.0;
     }
     else
     {
-        _2018 = _2011;
+        _2057 = _2050;
     }
-    if (_2018)
+    if (_2057)
     {
         return false;
     }
@@ -236,16 +237,16 @@ vec4 mxc_dielectric_table(float mu, float alpha, float e)
 
 float mxc_dielectric_albedo(float mu, float alpha, float eta)
 {
-    float _1588;
+    float _1590;
     if (eta >= 1.0)
     {
-        _1588 = eta;
+        _1590 = eta;
     }
     else
     {
-        _1588 = 1.0 / max(eta, 0.001000000047497451305389404296875);
+        _1590 = 1.0 / max(eta, 0.001000000047497451305389404296875);
     }
-    float e = _1588;
+    float e = _1590;
     float param = mu;
     float param_1 = alpha;
     float param_2 = e;
@@ -282,16 +283,16 @@ float mxc_walk_reflectance(float mu, float alpha, float eta)
 
 float mxc_lobe_eta(MxcLobe l, bool above)
 {
-    float _1716;
+    float _1718;
     if (above)
     {
-        _1716 = l.eta;
+        _1718 = l.eta;
     }
     else
     {
-        _1716 = 1.0 / l.eta;
+        _1718 = 1.0 / l.eta;
     }
-    return _1716;
+    return _1718;
 }
 
 float mxc_dielectric_albedo_rt(float mu, float alpha, float eta)
@@ -324,6 +325,25 @@ vec2 mxc_split_sum(float mu, float alpha)
     return mxc_table(param, param_1).xy;
 }
 
+float mxc_lobe_cosine_below_coat(MxcLobe l, float mu)
+{
+    bool _1743 = l.kind == 1;
+    bool _1749;
+    if (_1743)
+    {
+        _1749 = l.etaAbove > 1.0;
+    }
+    else
+    {
+        _1749 = _1743;
+    }
+    if (_1749)
+    {
+        return sqrt(1.0 - ((1.0 - (mu * mu)) / (l.etaAbove * l.etaAbove)));
+    }
+    return mu;
+}
+
 float mxc_fresnel_dielectric(float cosi, float eta)
 {
     if (abs(eta - 1.0) < 9.9999999747524270787835121154785e-07)
@@ -341,84 +361,90 @@ float mxc_fresnel_dielectric(float cosi, float eta)
     return 0.5 * ((rs * rs) + (rp * rp));
 }
 
-vec3 mxc_lobe_fresnel(MxcLobe l, float _cosh, bool above)
+vec3 mxc_lobe_fresnel(MxcLobe l, inout float _cosh, bool above)
 {
     vec3 f = vec3(1.0);
-    if (l.kind == 1)
+    if (above)
     {
         MxcLobe param = l;
-        bool param_1 = above;
-        float param_2 = _cosh;
-        float param_3 = mxc_lobe_eta(param, param_1);
-        f = vec3(mxc_fresnel_dielectric(param_2, param_3));
+        float param_1 = clamp(_cosh, 0.0, 1.0);
+        _cosh = mxc_lobe_cosine_below_coat(param, param_1);
+    }
+    if (l.kind == 1)
+    {
+        MxcLobe param_2 = l;
+        bool param_3 = above;
+        float param_4 = _cosh;
+        float param_5 = mxc_lobe_eta(param_2, param_3);
+        f = vec3(mxc_fresnel_dielectric(param_4, param_5));
     }
     return f;
 }
 
 vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo)
 {
-    bool _2142 = l.kind == 1;
-    bool _2149;
-    if (!_2142)
+    bool _2181 = l.kind == 1;
+    bool _2188;
+    if (!_2181)
     {
-        _2149 = l.kind == 2;
+        _2188 = l.kind == 2;
     }
     else
     {
-        _2149 = _2142;
+        _2188 = _2181;
     }
-    bool _2156;
-    if (!_2149)
+    bool _2195;
+    if (!_2188)
     {
-        _2156 = l.kind == 3;
+        _2195 = l.kind == 3;
     }
     else
     {
-        _2156 = _2149;
+        _2195 = _2188;
     }
-    bool microfacet = _2156;
-    bool _2158 = !microfacet;
-    bool _2165;
-    if (!_2158)
+    bool microfacet = _2195;
+    bool _2197 = !microfacet;
+    bool _2204;
+    if (!_2197)
     {
         vec2 param = l.alpha;
-        _2165 = mxc_is_delta(param);
+        _2204 = mxc_is_delta(param);
     }
     else
     {
-        _2165 = _2158;
+        _2204 = _2197;
     }
-    if (_2165)
+    if (_2204)
     {
         return vec3(1.0);
     }
     float alpha = sqrt(l.alpha.x * l.alpha.y);
-    bool _2176 = l.kind == 1;
-    bool _2181;
-    if (_2176)
+    bool _2215 = l.kind == 1;
+    bool _2220;
+    if (_2215)
     {
         MxcLobe param_1 = l;
-        _2181 = mxc_index_matched(param_1);
+        _2220 = mxc_index_matched(param_1);
     }
     else
     {
-        _2181 = _2176;
+        _2220 = _2215;
     }
-    if (_2181)
+    if (_2220)
     {
         return vec3(1.0);
     }
-    bool _2186 = l.kind == 1;
-    bool _2193;
-    if (_2186)
+    bool _2225 = l.kind == 1;
+    bool _2232;
+    if (_2225)
     {
-        _2193 = (l.mode & 4) == 0;
+        _2232 = (l.mode & 4) == 0;
     }
     else
     {
-        _2193 = _2186;
+        _2232 = _2225;
     }
-    if (_2193)
+    if (_2232)
     {
         MxcLobe param_2 = l;
         vec3 param_3 = wo;
@@ -449,81 +475,87 @@ vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo)
     MxcLobe param_17 = l;
     float param_18 = 1.0;
     bool param_19 = true;
-    return vec3(1.0) + ((mxc_lobe_fresnel(param_17, param_18, param_19) * (1.0 - e_1)) / vec3(max(e_1, 0.0500000007450580596923828125)));
+    vec3 _2283 = mxc_lobe_fresnel(param_17, param_18, param_19);
+    return vec3(1.0) + ((_2283 * (1.0 - e_1)) / vec3(max(e_1, 0.0500000007450580596923828125)));
 }
 
 vec3 mxc_lobe_albedo_scaled(MxcLobe l, vec3 wo, vec3 ms)
 {
     float mu = clamp(wo.z, 0.0, 1.0);
-    bool _2385 = l.kind == 1;
-    bool _2392;
-    if (!_2385)
+    bool _2426 = l.kind == 1;
+    bool _2433;
+    if (!_2426)
     {
-        _2392 = l.kind == 2;
+        _2433 = l.kind == 2;
     }
     else
     {
-        _2392 = _2385;
+        _2433 = _2426;
     }
-    bool _2399;
-    if (!_2392)
+    bool _2440;
+    if (!_2433)
     {
-        _2399 = l.kind == 3;
+        _2440 = l.kind == 3;
     }
     else
     {
-        _2399 = _2392;
+        _2440 = _2433;
     }
-    if (_2399)
+    if (_2440)
     {
         float alpha = sqrt(l.alpha.x * l.alpha.y);
-        bool _2410 = l.kind == 1;
-        bool _2417;
-        if (_2410)
+        bool _2451 = l.kind == 1;
+        bool _2458;
+        if (_2451)
         {
             vec2 param = l.alpha;
-            _2417 = !mxc_is_delta(param);
+            _2458 = !mxc_is_delta(param);
         }
         else
         {
-            _2417 = _2410;
+            _2458 = _2451;
         }
-        if (_2417)
+        if (_2458)
         {
-            float param_1 = mu;
-            float param_2 = alpha;
-            float param_3 = l.eta;
-            vec3 e = vec3(mxc_dielectric_albedo(param_1, param_2, param_3));
+            MxcLobe param_1 = l;
+            float param_2 = mu;
+            float param_3 = mxc_lobe_cosine_below_coat(param_1, param_2);
+            float param_4 = alpha;
+            float param_5 = l.eta;
+            vec3 e = vec3(mxc_dielectric_albedo(param_3, param_4, param_5));
             return clamp((e * l.c0) * ms, vec3(0.0), vec3(1.0));
         }
-        float param_4 = mu;
-        float param_5 = alpha;
-        vec2 ab = mxc_split_sum(param_4, param_5);
-        MxcLobe param_6 = l;
-        float param_7 = 1.0;
-        bool param_8 = true;
-        vec3 f0 = mxc_lobe_fresnel(param_6, param_7, param_8);
-        MxcLobe param_9 = l;
-        float param_10 = 0.0;
-        bool param_11 = true;
-        vec3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
-        vec3 _2375;
+        float param_6 = mu;
+        float param_7 = alpha;
+        vec2 ab = mxc_split_sum(param_6, param_7);
+        MxcLobe param_8 = l;
+        float param_9 = 1.0;
+        bool param_10 = true;
+        vec3 _2482 = mxc_lobe_fresnel(param_8, param_9, param_10);
+        vec3 f0 = _2482;
+        MxcLobe param_11 = l;
+        float param_12 = 0.0;
+        bool param_13 = true;
+        vec3 _2484 = mxc_lobe_fresnel(param_11, param_12, param_13);
+        vec3 f90 = _2484;
+        vec3 _2416;
         if (l.kind == 1)
         {
-            _2375 = l.c0;
+            _2416 = l.c0;
         }
         else
         {
-            _2375 = vec3(1.0);
+            _2416 = vec3(1.0);
         }
-        vec3 tint = _2375;
-        vec2 param_12 = l.alpha;
-        if (mxc_is_delta(param_12))
+        vec3 tint = _2416;
+        vec2 param_14 = l.alpha;
+        if (mxc_is_delta(param_14))
         {
-            MxcLobe param_13 = l;
-            float param_14 = mu;
-            bool param_15 = true;
-            return mxc_lobe_fresnel(param_13, param_14, param_15) * tint;
+            MxcLobe param_15 = l;
+            float param_16 = mu;
+            bool param_17 = true;
+            vec3 _2501 = mxc_lobe_fresnel(param_15, param_16, param_17);
+            return _2501 * tint;
         }
         return clamp((((f0 * ab.x) + (f90 * ab.y)) * tint) * ms, vec3(0.0), vec3(1.0));
     }
@@ -546,17 +578,17 @@ vec3 mxc_lobe_albedo(MxcLobe l, vec3 wo)
 
 vec3 mxc_lobe_layer_albedo(MxcLobe l, vec3 wo)
 {
-    bool _2512 = l.kind == 9;
-    bool _2519;
-    if (!_2512)
+    bool _2555 = l.kind == 9;
+    bool _2562;
+    if (!_2555)
     {
-        _2519 = l.kind == 10;
+        _2562 = l.kind == 10;
     }
     else
     {
-        _2519 = _2512;
+        _2562 = _2555;
     }
-    if (_2519)
+    if (_2562)
     {
         MxcLobe white = l;
         white.c0 = vec3(1.0);
@@ -571,48 +603,48 @@ vec3 mxc_lobe_layer_albedo(MxcLobe l, vec3 wo)
 
 float mxc_lobe_ms_transmit(MxcLobe l, vec3 wo, vec3 ms)
 {
-    bool _2044 = l.kind != 1;
-    bool _2051;
-    if (!_2044)
+    bool _2083 = l.kind != 1;
+    bool _2090;
+    if (!_2083)
     {
         vec2 param = l.alpha;
-        _2051 = mxc_is_delta(param);
+        _2090 = mxc_is_delta(param);
     }
     else
     {
-        _2051 = _2044;
+        _2090 = _2083;
     }
-    bool _2057;
-    if (!_2051)
+    bool _2096;
+    if (!_2090)
     {
         MxcLobe param_1 = l;
-        _2057 = mxc_index_matched(param_1);
+        _2096 = mxc_index_matched(param_1);
     }
     else
     {
-        _2057 = _2051;
+        _2096 = _2090;
     }
-    bool _2065;
-    if (!_2057)
+    bool _2104;
+    if (!_2096)
     {
-        _2065 = (l.mode & 4) != 0;
+        _2104 = (l.mode & 4) != 0;
     }
     else
     {
-        _2065 = _2057;
+        _2104 = _2096;
     }
-    bool _2073;
-    if (!_2065)
+    bool _2112;
+    if (!_2104)
     {
         MxcLobe param_2 = l;
         vec3 param_3 = wo;
-        _2073 = !mxc_dielectric_walk_split(param_2, param_3);
+        _2112 = !mxc_dielectric_walk_split(param_2, param_3);
     }
     else
     {
-        _2073 = _2065;
+        _2112 = _2104;
     }
-    if (_2073)
+    if (_2112)
     {
         return ms.x;
     }
@@ -651,18 +683,18 @@ float mxc_lobe_choice(MxcLobe l, vec3 woLocal, vec3 ms)
 
 bool mxc_lobe_ms_shaped(MxcLobe l, vec3 wo)
 {
-    bool _2264 = wo.z <= 0.0;
-    bool _2271;
-    if (!_2264)
+    bool _2303 = wo.z <= 0.0;
+    bool _2310;
+    if (!_2303)
     {
         vec2 param = l.alpha;
-        _2271 = mxc_is_delta(param);
+        _2310 = mxc_is_delta(param);
     }
     else
     {
-        _2271 = _2264;
+        _2310 = _2303;
     }
-    if (_2271)
+    if (_2310)
     {
         return false;
     }
@@ -674,47 +706,47 @@ bool mxc_lobe_ms_shaped(MxcLobe l, vec3 wo)
     {
         return (l.mode & 1) != 0;
     }
-    bool _2290 = l.kind == 1;
-    bool _2297;
-    if (_2290)
+    bool _2329 = l.kind == 1;
+    bool _2336;
+    if (_2329)
     {
-        _2297 = (l.mode & 1) != 0;
+        _2336 = (l.mode & 1) != 0;
     }
     else
     {
-        _2297 = _2290;
+        _2336 = _2329;
     }
-    bool _2304;
-    if (_2297)
+    bool _2343;
+    if (_2336)
     {
-        _2304 = (l.mode & 4) == 0;
+        _2343 = (l.mode & 4) == 0;
     }
     else
     {
-        _2304 = _2297;
+        _2343 = _2336;
     }
-    bool _2310;
-    if (_2304)
+    bool _2349;
+    if (_2343)
     {
         MxcLobe param_1 = l;
-        _2310 = !mxc_index_matched(param_1);
+        _2349 = !mxc_index_matched(param_1);
     }
     else
     {
-        _2310 = _2304;
+        _2349 = _2343;
     }
-    bool _2316;
-    if (_2310)
+    bool _2355;
+    if (_2349)
     {
         MxcLobe param_2 = l;
         vec3 param_3 = wo;
-        _2316 = mxc_dielectric_walk_split(param_2, param_3);
+        _2355 = mxc_dielectric_walk_split(param_2, param_3);
     }
     else
     {
-        _2316 = _2310;
+        _2355 = _2349;
     }
-    return _2316;
+    return _2355;
 }
 
 bool mxc_lobe_transmits(MxcLobe l)
@@ -726,16 +758,16 @@ MxcLobe mxc_ms_lobe(MxcLobe l, bool transmitted)
 {
     MxcLobe m = l;
     m.alpha = min(l.alpha * (transmitted ? 3.0 : 1.5), vec2(1.0));
-    int _2322;
+    int _2361;
     if (transmitted)
     {
-        _2322 = l.mode & (-2);
+        _2361 = l.mode & (-2);
     }
     else
     {
-        _2322 = l.mode & (-3);
+        _2361 = l.mode & (-3);
     }
-    m.mode = _2322;
+    m.mode = _2361;
     if (l.kind == 1)
     {
         m.c0 = vec3(1.0);
@@ -747,7 +779,7 @@ MxcLobe mxc_ms_lobe(MxcLobe l, bool transmitted)
 void mxc_closure_prepare(inout MxcClosure c, vec3 wo)
 {
     c.choiceTotal = 0.0;
-    float _3080;
+    float _3123;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
@@ -794,18 +826,18 @@ void mxc_closure_prepare(inout MxcClosure c, vec3 wo)
             vec3 addedR = max(mxc_lobe_albedo_scaled(param_17, param_18, param_19) - reflected, vec3(0.0));
             vec3 transmitted = vec3(0.0);
             vec3 addedT = vec3(0.0);
-            bool _3168 = l.kind == 1;
-            bool _3173;
-            if (_3168)
+            bool _3211 = l.kind == 1;
+            bool _3216;
+            if (_3211)
             {
                 MxcLobe param_20 = l;
-                _3173 = mxc_lobe_transmits(param_20);
+                _3216 = mxc_lobe_transmits(param_20);
             }
             else
             {
-                _3173 = _3168;
+                _3216 = _3211;
             }
-            if (_3173)
+            if (_3216)
             {
                 float param_21 = o.z;
                 float param_22 = alpha;
@@ -825,18 +857,18 @@ void mxc_closure_prepare(inout MxcClosure c, vec3 wo)
             vec3 param_31 = vec3(1.0);
             vec3 broadR = mxc_lobe_albedo_scaled(param_29, param_30, param_31);
             float broadT = 1.0;
-            bool _3208 = l.kind == 1;
-            bool _3213;
-            if (_3208)
+            bool _3251 = l.kind == 1;
+            bool _3256;
+            if (_3251)
             {
                 MxcLobe param_32 = l;
-                _3213 = mxc_lobe_transmits(param_32);
+                _3256 = mxc_lobe_transmits(param_32);
             }
             else
             {
-                _3213 = _3208;
+                _3256 = _3251;
             }
-            if (_3213)
+            if (_3256)
             {
                 MxcLobe param_33 = l;
                 bool param_34 = true;
@@ -860,13 +892,13 @@ void mxc_closure_prepare(inout MxcClosure c, vec3 wo)
             if (added > 0.0)
             {
                 vec3 param_43 = addedR;
-                _3080 = mxc_luminance(param_43) / added;
+                _3123 = mxc_luminance(param_43) / added;
             }
             else
             {
-                _3080 = 1.0;
+                _3123 = 1.0;
             }
-            c.msSplit[k] = _3080;
+            c.msSplit[k] = _3123;
             c.msT[k] = 1.0;
         }
         else
@@ -889,6 +921,7 @@ void mxc_material_closure(MxcGeometry g, vec3 wo, inout MxcClosure c)
     lobe0.T = v6;
     lobe0.alpha = vec2(0.0900000035762786865234375);
     lobe0.eta = 1.5;
+    lobe0.etaAbove = 1.0;
     lobe0.c0 = vec3(1.0);
     lobe0.c1 = vec3(1.0);
     lobe0.c2 = vec3(1.0);
@@ -912,6 +945,7 @@ void mxc_material_closure(MxcGeometry g, vec3 wo, inout MxcClosure c)
     lobe3.T = g.T;
     lobe3.alpha = vec2(0.0);
     lobe3.eta = 1.5;
+    lobe3.etaAbove = 1.0;
     lobe3.c0 = vec3(0.800000011920928955078125);
     lobe3.c1 = vec3(1.0);
     lobe3.c2 = vec3(1.0);
@@ -933,35 +967,35 @@ void mxc_material_closure(MxcGeometry g, vec3 wo, inout MxcClosure c)
 
 int mxc_light_count()
 {
-    int _4127;
-    if (_225)
+    int _4172;
+    if (_227)
     {
-        _4127 = MXC_LIGHT_COUNT;
+        _4172 = MXC_LIGHT_COUNT;
     }
     else
     {
-        _4127 = mxc_view.counts.x;
+        _4172 = mxc_view.counts.x;
     }
-    return min(_4127, 8);
+    return min(_4172, 8);
 }
 
 int mxc_light_kinds()
 {
-    return _228;
+    return _230;
 }
 
 int mxc_environment_code()
 {
-    int _4119;
-    if (_223)
+    int _4164;
+    if (_225)
     {
-        _4119 = MXC_ENVIRONMENT;
+        _4164 = MXC_ENVIRONMENT;
     }
     else
     {
-        _4119 = mxc_view.counts.y;
+        _4164 = mxc_view.counts.y;
     }
-    return _4119;
+    return _4164;
 }
 
 float mxc_uniform(inout uint seed)
@@ -1043,36 +1077,36 @@ float mxc_ggx_g2(vec3 wo, vec3 wi, vec2 alpha)
 {
     vec3 param = wo;
     vec2 param_1 = alpha;
-    float _1261 = mxc_ggx_lambda(param, param_1);
+    float _1263 = mxc_ggx_lambda(param, param_1);
     vec3 param_2 = wi;
     vec2 param_3 = alpha;
-    float _1265 = mxc_ggx_lambda(param_2, param_3);
-    return 1.0 / ((1.0 + _1261) + _1265);
+    float _1267 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0 / ((1.0 + _1263) + _1267);
 }
 
 vec3 mxc_microfacet_reflect(MxcLobe l, vec3 wo, vec3 wi)
 {
-    bool _1775 = wo.z <= 0.0;
-    bool _1782;
-    if (!_1775)
+    bool _1814 = wo.z <= 0.0;
+    bool _1821;
+    if (!_1814)
     {
-        _1782 = wi.z <= 0.0;
+        _1821 = wi.z <= 0.0;
     }
     else
     {
-        _1782 = _1775;
+        _1821 = _1814;
     }
-    bool _1789;
-    if (!_1782)
+    bool _1828;
+    if (!_1821)
     {
         vec2 param = l.alpha;
-        _1789 = mxc_is_delta(param);
+        _1828 = mxc_is_delta(param);
     }
     else
     {
-        _1789 = _1782;
+        _1828 = _1821;
     }
-    if (_1789)
+    if (_1828)
     {
         return vec3(0.0);
     }
@@ -1080,34 +1114,35 @@ vec3 mxc_microfacet_reflect(MxcLobe l, vec3 wo, vec3 wi)
     MxcLobe param_1 = l;
     float param_2 = max(dot(wo, h), 0.0);
     bool param_3 = true;
-    vec3 f = mxc_lobe_fresnel(param_1, param_2, param_3);
+    vec3 _1840 = mxc_lobe_fresnel(param_1, param_2, param_3);
+    vec3 f = _1840;
     if (l.kind == 1)
     {
         f *= l.c0;
     }
     vec3 param_4 = h;
     vec2 param_5 = l.alpha;
-    float _1815 = mxc_ggx_d(param_4, param_5);
+    float _1854 = mxc_ggx_d(param_4, param_5);
     vec3 param_6 = wo;
     vec3 param_7 = wi;
     vec2 param_8 = l.alpha;
-    return ((f * _1815) * mxc_ggx_g2(param_6, param_7, param_8)) / vec3(4.0 * wo.z);
+    return ((f * _1854) * mxc_ggx_g2(param_6, param_7, param_8)) / vec3(4.0 * wo.z);
 }
 
 float mxc_fon(float sigma, vec3 wo, vec3 wi)
 {
     float a = 1.0 / (1.0 + (0.2877933979034423828125 * sigma));
     float s = dot(wi, wo) - (wi.z * wo.z);
-    float _1836;
+    float _1875;
     if (s > 0.0)
     {
-        _1836 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
+        _1875 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
     }
     else
     {
-        _1836 = 1.0;
+        _1875 = 1.0;
     }
-    float t = _1836;
+    float t = _1875;
     return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375;
 }
 
@@ -1118,16 +1153,16 @@ float mxc_fon_albedo(float sigma, float mu)
     float param = 1.0 - (c * c);
     float s = mxc_safe_sqrt(param);
     float theta = acos(c);
-    float _1882;
+    float _1921;
     if (c > 9.9999997473787516355514526367188e-05)
     {
-        _1882 = (1.0 - ((s * s) * s)) / c;
+        _1921 = (1.0 - ((s * s) * s)) / c;
     }
     else
     {
-        _1882 = 1.5 * c;
+        _1921 = 1.5 * c;
     }
-    float tail = _1882;
+    float tail = _1921;
     float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875 * s) * tail)) - (0.666666686534881591796875 * s);
     return a + (((sigma * a) * g) * 0.3183098733425140380859375);
 }
@@ -1184,17 +1219,17 @@ vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi)
         case 2:
         case 3:
         {
-            bool _2594 = l.kind == 3;
-            bool _2601;
-            if (_2594)
+            bool _2637 = l.kind == 3;
+            bool _2644;
+            if (_2637)
             {
-                _2601 = (l.mode & 1) == 0;
+                _2644 = (l.mode & 1) == 0;
             }
             else
             {
-                _2601 = _2594;
+                _2644 = _2637;
             }
-            if (_2601)
+            if (_2644)
             {
                 return vec3(0.0);
             }
@@ -1205,30 +1240,30 @@ vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi)
         }
         case 5:
         {
-            bool _2610 = wo.z > 0.0;
-            bool _2616;
-            if (_2610)
+            bool _2653 = wo.z > 0.0;
+            bool _2659;
+            if (_2653)
             {
-                _2616 = wi.z > 0.0;
+                _2659 = wi.z > 0.0;
             }
             else
             {
-                _2616 = _2610;
+                _2659 = _2653;
             }
-            vec3 _2545;
-            if (_2616)
+            vec3 _2588;
+            if (_2659)
             {
                 vec3 param_9 = l.c0;
                 float param_10 = l.p0;
                 vec3 param_11 = wo;
                 vec3 param_12 = wi;
-                _2545 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
+                _2588 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
             }
             else
             {
-                _2545 = vec3(0.0);
+                _2588 = vec3(0.0);
             }
-            return _2545;
+            return _2588;
         }
         default:
         {
@@ -1241,8 +1276,8 @@ float mxc_ggx_g1(vec3 v, vec2 alpha)
 {
     vec3 param = v;
     vec2 param_1 = alpha;
-    float _1247 = mxc_ggx_lambda(param, param_1);
-    return 1.0 / (1.0 + _1247);
+    float _1249 = mxc_ggx_lambda(param, param_1);
+    return 1.0 / (1.0 + _1249);
 }
 
 float mxc_ggx_pdf_vndf(vec3 wo, vec3 m, vec2 alpha)
@@ -1255,8 +1290,8 @@ float mxc_ggx_pdf_vndf(vec3 wo, vec3 m, vec2 alpha)
     vec2 param_1 = alpha;
     vec3 param_2 = m;
     vec2 param_3 = alpha;
-    float _1420 = mxc_ggx_d(param_2, param_3);
-    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0)) * _1420) / wo.z;
+    float _1422 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0)) * _1422) / wo.z;
 }
 
 float mxc_mean(vec3 c)
@@ -1278,26 +1313,26 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi)
                 return 0.0;
             }
             bool above = wo.z > 0.0;
-            vec3 _2639;
+            vec3 _2682;
             if (above)
             {
-                _2639 = wo;
+                _2682 = wo;
             }
             else
             {
-                _2639 = -wo;
+                _2682 = -wo;
             }
-            vec3 o = _2639;
-            vec3 _2641;
+            vec3 o = _2682;
+            vec3 _2684;
             if (above)
             {
-                _2641 = wi;
+                _2684 = wi;
             }
             else
             {
-                _2641 = -wi;
+                _2684 = -wi;
             }
-            vec3 i = _2641;
+            vec3 i = _2684;
             if (i.z > 0.0)
             {
                 vec3 h = normalize(o + i);
@@ -1316,45 +1351,46 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi)
                 MxcLobe param_4 = l;
                 float param_5 = max(dot(o, h), 0.0);
                 bool param_6 = above;
-                vec3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
+                vec3 _2780 = mxc_lobe_fresnel(param_4, param_5, param_6);
+                vec3 param_7 = _2780;
                 float fr = mxc_mean(param_7);
                 MxcLobe param_8 = l;
-                bool _2741 = mxc_lobe_transmits(param_8);
-                bool _2748;
-                if (_2741)
+                bool _2784 = mxc_lobe_transmits(param_8);
+                bool _2791;
+                if (_2784)
                 {
-                    _2748 = (l.mode & 1) != 0;
+                    _2791 = (l.mode & 1) != 0;
                 }
                 else
                 {
-                    _2748 = _2741;
+                    _2791 = _2784;
                 }
-                return p * (_2748 ? fr : 1.0);
+                return p * (_2791 ? fr : 1.0);
             }
             return 0.0;
         }
         default:
         {
-            bool _2661 = wo.z > 0.0;
-            bool _2667;
-            if (_2661)
+            bool _2704 = wo.z > 0.0;
+            bool _2710;
+            if (_2704)
             {
-                _2667 = wi.z > 0.0;
+                _2710 = wi.z > 0.0;
             }
             else
             {
-                _2667 = _2661;
+                _2710 = _2704;
             }
-            float _2653;
-            if (_2667)
+            float _2696;
+            if (_2710)
             {
-                _2653 = wi.z * 0.3183098733425140380859375;
+                _2696 = wi.z * 0.3183098733425140380859375;
             }
             else
             {
-                _2653 = 0.0;
+                _2696 = 0.0;
             }
-            return _2653;
+            return _2696;
         }
     }
 }
@@ -1365,16 +1401,16 @@ vec3 mxc_ggx_sample_vndf(vec3 wo, inout vec2 alpha, vec2 u)
     alpha = mxc_rough_alpha(param);
     vec3 vh = normalize(vec3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lensq = (vh.x * vh.x) + (vh.y * vh.y);
-    vec3 _1277;
+    vec3 _1279;
     if (lensq > 0.0)
     {
-        _1277 = vec3(-vh.y, vh.x, 0.0) * inversesqrt(lensq);
+        _1279 = vec3(-vh.y, vh.x, 0.0) * inversesqrt(lensq);
     }
     else
     {
-        _1277 = vec3(1.0, 0.0, 0.0);
+        _1279 = vec3(1.0, 0.0, 0.0);
     }
-    vec3 t1 = _1277;
+    vec3 t1 = _1279;
     vec3 t2 = cross(vh, t1);
     float r = sqrt(u.x);
     float phi = 6.283185482025146484375 * u.y;
@@ -1403,94 +1439,95 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u)
         case 3:
         {
             bool above = wo.z > 0.0;
-            vec3 _2760;
+            vec3 _2803;
             if (above)
             {
-                _2760 = wo;
+                _2803 = wo;
             }
             else
             {
-                _2760 = -wo;
+                _2803 = -wo;
             }
-            vec3 o = _2760;
+            vec3 o = _2803;
             if (o.z <= 0.0)
             {
                 return s;
             }
             vec2 param = l.alpha;
             bool delta = mxc_is_delta(param);
-            vec3 _2764;
+            vec3 _2807;
             if (delta)
             {
-                _2764 = vec3(0.0, 0.0, 1.0);
+                _2807 = vec3(0.0, 0.0, 1.0);
             }
             else
             {
                 vec3 param_1 = o;
                 vec2 param_2 = l.alpha;
                 vec2 param_3 = u.xy;
-                vec3 _2865 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
-                _2764 = _2865;
+                vec3 _2908 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2807 = _2908;
             }
-            vec3 m = _2764;
+            vec3 m = _2807;
             float hm = dot(o, m);
-            bool _2872 = l.kind == 1;
-            bool _2879;
-            if (!_2872)
+            bool _2915 = l.kind == 1;
+            bool _2922;
+            if (!_2915)
             {
-                _2879 = l.kind == 3;
+                _2922 = l.kind == 3;
             }
             else
             {
-                _2879 = _2872;
+                _2922 = _2915;
             }
-            bool _2884;
-            if (_2879)
+            bool _2927;
+            if (_2922)
             {
                 MxcLobe param_4 = l;
-                _2884 = mxc_lobe_transmits(param_4);
+                _2927 = mxc_lobe_transmits(param_4);
             }
             else
             {
-                _2884 = _2879;
+                _2927 = _2922;
             }
-            bool transmits = _2884;
-            bool _2887 = l.kind == 2;
-            bool _2895;
-            if (!_2887)
+            bool transmits = _2927;
+            bool _2930 = l.kind == 2;
+            bool _2938;
+            if (!_2930)
             {
-                _2895 = (l.mode & 1) != 0;
+                _2938 = (l.mode & 1) != 0;
             }
             else
             {
-                _2895 = _2887;
+                _2938 = _2930;
             }
-            bool reflects = _2895;
+            bool reflects = _2938;
             MxcLobe param_5 = l;
             float param_6 = max(hm, 0.0);
             bool param_7 = above;
-            vec3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
-            float _2777;
+            vec3 _2943 = mxc_lobe_fresnel(param_5, param_6, param_7);
+            vec3 f = _2943;
+            float _2820;
             if (transmits)
             {
                 vec3 param_8 = f;
-                _2777 = mxc_mean(param_8);
+                _2820 = mxc_mean(param_8);
             }
             else
             {
-                _2777 = 1.0;
+                _2820 = 1.0;
             }
-            float fr = _2777;
-            float _2780;
+            float fr = _2820;
+            float _2823;
             if (transmits)
             {
-                _2780 = reflects ? fr : 0.0;
+                _2823 = reflects ? fr : 0.0;
             }
             else
             {
-                _2780 = 1.0;
+                _2823 = 1.0;
             }
-            float pReflect = _2780;
+            float pReflect = _2823;
             if (u.z < pReflect)
             {
                 vec3 i = reflect(-o, m);
@@ -1498,38 +1535,38 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u)
                 {
                     return s;
                 }
-                vec3 _2782;
+                vec3 _2825;
                 if (above)
                 {
-                    _2782 = i;
+                    _2825 = i;
                 }
                 else
                 {
-                    _2782 = -i;
+                    _2825 = -i;
                 }
-                s.wi = _2782;
+                s.wi = _2825;
                 s.delta = delta;
                 if (delta)
                 {
-                    vec3 _2784;
+                    vec3 _2827;
                     if (l.kind == 1)
                     {
-                        vec3 _2785;
+                        vec3 _2828;
                         if (above)
                         {
-                            _2785 = l.c0;
+                            _2828 = l.c0;
                         }
                         else
                         {
-                            _2785 = vec3(1.0);
+                            _2828 = vec3(1.0);
                         }
-                        _2784 = _2785;
+                        _2827 = _2828;
                     }
                     else
                     {
-                        _2784 = vec3(1.0);
+                        _2827 = vec3(1.0);
                     }
-                    vec3 tint = _2784;
+                    vec3 tint = _2827;
                     s.value = f * tint;
                     s.pdf = pReflect;
                 }
@@ -1644,33 +1681,33 @@ MxcSample mxc_closure_sample_direction(MxcClosure c, vec3 wo, vec3 u)
         float v = uz / q;
         float split = c.msSplit[chosen];
         reflected = v < split;
-        float _3534;
+        float _3577;
         if (reflected)
         {
-            _3534 = v / max(split, 9.9999999747524270787835121154785e-07);
+            _3577 = v / max(split, 9.9999999747524270787835121154785e-07);
         }
         else
         {
-            _3534 = (v - split) / max(1.0 - split, 9.9999999747524270787835121154785e-07);
+            _3577 = (v - split) / max(1.0 - split, 9.9999999747524270787835121154785e-07);
         }
-        uz = _3534;
+        uz = _3577;
     }
     else
     {
         uz = (uz - q) / (1.0 - q);
     }
-    MxcLobe _3536;
+    MxcLobe _3579;
     if (shaped)
     {
         MxcLobe param_4 = l;
         bool param_5 = !reflected;
-        _3536 = mxc_ms_lobe(param_4, param_5);
+        _3579 = mxc_ms_lobe(param_4, param_5);
     }
     else
     {
-        _3536 = l;
+        _3579 = l;
     }
-    MxcLobe m = _3536;
+    MxcLobe m = _3579;
     MxcLobe param_6 = m;
     vec3 param_7 = o;
     vec3 param_8 = vec3(u.xy, min(uz, 0.999999940395355224609375));
@@ -1732,16 +1769,16 @@ vec3 mxc_env_to_map(vec3 w, float angle)
 
 vec2 mxc_env_uv(vec3 d)
 {
-    float _3829;
+    float _3874;
     if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13)
     {
-        _3829 = 0.5 + (atan(d.x, -d.z) * 0.15915493667125701904296875);
+        _3874 = 0.5 + (atan(d.x, -d.z) * 0.15915493667125701904296875);
     }
     else
     {
-        _3829 = 0.5;
+        _3874 = 0.5;
     }
-    float u = _3829;
+    float u = _3874;
     float v = atan(length(d.xz), d.y) * 0.3183098733425140380859375;
     return vec2(u, v);
 }
@@ -1778,7 +1815,7 @@ uint mxc_env_cell(vec3 d)
 {
     vec3 param = d;
     vec2 uv = mxc_env_uv(param);
-    uvec2 size = max(_206.mxc_env_size.xy, uvec2(1u));
+    uvec2 size = max(_208.mxc_env_size.xy, uvec2(1u));
     uint i = min(uint(max(uv.x, 0.0) * float(size.x)), (size.x - 1u));
     uint j = min(uint(max(uv.y, 0.0) * float(size.y)), (size.y - 1u));
     return (j * size.x) + i;
@@ -1787,36 +1824,36 @@ uint mxc_env_cell(vec3 d)
 float mxc_env_pdf(vec3 d)
 {
     vec3 param = d;
-    return _206.mxc_env_cells[mxc_env_cell(param)].z;
+    return _208.mxc_env_cells[mxc_env_cell(param)].z;
 }
 
 float mxc_power_heuristic(float a, float b)
 {
     float a2 = a * a;
     float b2 = b * b;
-    float _4219;
+    float _4264;
     if ((a2 + b2) > 0.0)
     {
-        _4219 = a2 / (a2 + b2);
+        _4264 = a2 / (a2 + b2);
     }
     else
     {
-        _4219 = 0.0;
+        _4264 = 0.0;
     }
-    return _4219;
+    return _4264;
 }
 
 vec3 mxc_env_sample(vec4 u, out float pdf)
 {
-    uvec2 size = max(_206.mxc_env_size.xy, uvec2(1u));
+    uvec2 size = max(_208.mxc_env_size.xy, uvec2(1u));
     uint n = size.x * size.y;
     uint k = min(uint(u.x * float(n)), (n - 1u));
-    vec4 cell = _206.mxc_env_cells[k];
+    vec4 cell = _208.mxc_env_cells[k];
     if (u.y >= cell.x)
     {
         k = min(floatBitsToUint(cell.y), (n - 1u));
     }
-    pdf = _206.mxc_env_cells[k].z;
+    pdf = _208.mxc_env_cells[k].z;
     uint i = k % size.x;
     uint j = k / size.x;
     float phi = 6.283185482025146484375 * (((float(i) + u.z) / float(size.x)) - 0.5);
@@ -1839,12 +1876,12 @@ vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, inout fl
 {
     vec3 f = vec3(0.0);
     float p = 0.0;
-    MxcLobe _3314;
-    vec3 _3318;
-    vec3 _3319;
-    vec3 _3320;
-    float _3325;
-    float _3326;
+    MxcLobe _3357;
+    vec3 _3361;
+    vec3 _3362;
+    vec3 _3363;
+    float _3368;
+    float _3369;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
@@ -1871,38 +1908,38 @@ vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, inout fl
             {
                 MxcLobe param_6 = l;
                 bool param_7 = i.z < 0.0;
-                _3314 = mxc_ms_lobe(param_6, param_7);
+                _3357 = mxc_ms_lobe(param_6, param_7);
             }
             else
             {
-                _3314 = l;
+                _3357 = l;
             }
-            MxcLobe m = _3314;
+            MxcLobe m = _3357;
             if (shaped)
             {
                 if (i.z > 0.0)
                 {
-                    _3319 = c.msLobe[k];
+                    _3362 = c.msLobe[k];
                 }
                 else
                 {
-                    _3319 = c.msLobeT[k];
+                    _3362 = c.msLobeT[k];
                 }
-                _3318 = _3319;
+                _3361 = _3362;
             }
             else
             {
                 if ((o.z * i.z) < 0.0)
                 {
-                    _3320 = vec3(c.msT[k]);
+                    _3363 = vec3(c.msT[k]);
                 }
                 else
                 {
-                    _3320 = c.ms[k];
+                    _3363 = c.ms[k];
                 }
-                _3318 = _3320;
+                _3361 = _3363;
             }
-            vec3 scale = _3318;
+            vec3 scale = _3361;
             MxcLobe param_8 = m;
             vec3 param_9 = o;
             vec3 param_10 = i;
@@ -1913,19 +1950,19 @@ vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, inout fl
                 {
                     if (i.z > 0.0)
                     {
-                        _3326 = c.msSplit[k];
+                        _3369 = c.msSplit[k];
                     }
                     else
                     {
-                        _3326 = 1.0 - c.msSplit[k];
+                        _3369 = 1.0 - c.msSplit[k];
                     }
-                    _3325 = c.msPick[k] * _3326;
+                    _3368 = c.msPick[k] * _3369;
                 }
                 else
                 {
-                    _3325 = 1.0 - c.msPick[k];
+                    _3368 = 1.0 - c.msPick[k];
                 }
-                float share = _3325;
+                float share = _3368;
                 MxcLobe param_11 = m;
                 vec3 param_12 = o;
                 vec3 param_13 = i;
@@ -1940,16 +1977,16 @@ vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, inout fl
             p += (c.choice[k] * pk);
         }
     }
-    float _3332;
+    float _3375;
     if (c.choiceTotal > 0.0)
     {
-        _3332 = p / c.choiceTotal;
+        _3375 = p / c.choiceTotal;
     }
     else
     {
-        _3332 = 0.0;
+        _3375 = 0.0;
     }
-    pdf = _3332;
+    pdf = _3375;
     return f;
 }
 
@@ -2007,16 +2044,16 @@ void main()
     int lights = mxc_light_count();
     int kinds = mxc_light_kinds();
     bool image = mxc_environment_code() == 3;
-    int _262;
+    int _264;
     if (mxc_environment_code() != 0)
     {
-        _262 = max(mxc_view.counts.w, 1);
+        _264 = max(mxc_view.counts.w, 1);
     }
     else
     {
-        _262 = 0;
+        _264 = 0;
     }
-    int n = _262;
+    int n = _264;
     uint param_17 = uint(mxc_view.counts.z);
     uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
     uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
@@ -2025,54 +2062,54 @@ void main()
     uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
     uint pixel = mxc_pcg(param_21);
     uint param_22 = pixel;
-    float _503 = mxc_uniform(param_22);
+    float _505 = mxc_uniform(param_22);
     pixel = param_22;
     uint param_23 = pixel;
-    float _507 = mxc_uniform(param_23);
+    float _509 = mxc_uniform(param_23);
     pixel = param_23;
     uint param_24 = pixel;
-    float _510 = mxc_uniform(param_24);
+    float _512 = mxc_uniform(param_24);
     pixel = param_24;
     uint param_25 = pixel;
-    float _513 = mxc_uniform(param_25);
+    float _515 = mxc_uniform(param_25);
     pixel = param_25;
-    vec4 shift = vec4(_503, _507, _510, _513);
+    vec4 shift = vec4(_505, _509, _512, _515);
     vec3 sum = vec3(0.0);
-    int _279;
+    int _281;
     MxcSample smp;
-    vec3 _296;
-    vec3 _297;
-    float _302;
+    vec3 _298;
+    vec3 _299;
+    float _304;
     float param_49;
-    int _326;
+    int _328;
     float param_59;
-    float _342;
+    float _344;
     for (int b = 0; b < max(n, int(lights > 0)); b++)
     {
         int batchLights = (b == 0) ? lights : 0;
         if (b < n)
         {
-            _279 = 1 + int(image);
+            _281 = 1 + int(image);
         }
         else
         {
-            _279 = 0;
+            _281 = 0;
         }
-        int batchSamples = _279;
+        int batchSamples = _281;
         uint index = (uint(mxc_view.counts.z) * uint(max(n, 1))) + uint(b);
         uint param_26 = index;
         uint param_27 = 2u;
-        float _553 = mxc_radical_inverse(param_26, param_27);
+        float _555 = mxc_radical_inverse(param_26, param_27);
         uint param_28 = index;
         uint param_29 = 3u;
-        float _556 = mxc_radical_inverse(param_28, param_29);
+        float _558 = mxc_radical_inverse(param_28, param_29);
         uint param_30 = index;
         uint param_31 = 5u;
-        float _558 = mxc_radical_inverse(param_30, param_31);
+        float _560 = mxc_radical_inverse(param_30, param_31);
         uint param_32 = index;
         uint param_33 = 7u;
-        float _560 = mxc_radical_inverse(param_32, param_33);
-        vec4 choice = fract(vec4(_553, _556, _558, _560) + shift);
+        float _562 = mxc_radical_inverse(param_32, param_33);
+        vec4 choice = fract(vec4(_555, _558, _560, _562) + shift);
         smp.valid = false;
         smp.evaluate = false;
         smp.delta = false;
@@ -2091,58 +2128,58 @@ void main()
         {
             if (above)
             {
-                _297 = smp.wi;
+                _299 = smp.wi;
             }
             else
             {
                 vec3 param_37 = -wo;
                 vec3 param_38 = smp.wi;
-                _297 = mxc_exit_direction(param_37, param_38);
+                _299 = mxc_exit_direction(param_37, param_38);
             }
-            vec3 param_39 = _297;
-            _296 = mxc_environment(param_39);
+            vec3 param_39 = _299;
+            _298 = mxc_environment(param_39);
         }
         else
         {
-            _296 = vec3(0.0);
+            _298 = vec3(0.0);
         }
-        vec3 seen = _296;
-        bool _618 = (b < n) && smp.valid;
-        bool _624;
-        if (_618)
+        vec3 seen = _298;
+        bool _620 = (b < n) && smp.valid;
+        bool _626;
+        if (_620)
         {
-            _624 = !smp.evaluate;
+            _626 = !smp.evaluate;
         }
         else
         {
-            _624 = _618;
+            _626 = _620;
         }
-        if (_624)
+        if (_626)
         {
-            bool _629 = image && above;
-            bool _635;
-            if (_629)
+            bool _631 = image && above;
+            bool _637;
+            if (_631)
             {
-                _635 = !smp.delta;
+                _637 = !smp.delta;
             }
             else
             {
-                _635 = _629;
+                _637 = _631;
             }
-            if (_635)
+            if (_637)
             {
                 vec3 param_40 = smp.wi;
                 float param_41 = mxc_view.environment.z;
                 vec3 param_42 = mxc_env_to_map(param_40, param_41);
                 float param_43 = smp.pdf;
                 float param_44 = mxc_env_pdf(param_42);
-                _302 = mxc_power_heuristic(param_43, param_44);
+                _304 = mxc_power_heuristic(param_43, param_44);
             }
             else
             {
-                _302 = 1.0;
+                _304 = 1.0;
             }
-            float w = _302;
+            float w = _304;
             sum += ((smp.weight * w) * seen);
         }
         vec3 m = vec3(0.0);
@@ -2152,33 +2189,33 @@ void main()
         if (image && (b < n))
         {
             uint param_45 = seed;
-            float _671 = mxc_uniform(param_45);
+            float _673 = mxc_uniform(param_45);
             seed = param_45;
             uint param_46 = seed;
-            float _674 = mxc_uniform(param_46);
+            float _676 = mxc_uniform(param_46);
             seed = param_46;
             uint param_47 = seed;
-            float _677 = mxc_uniform(param_47);
+            float _679 = mxc_uniform(param_47);
             seed = param_47;
-            vec4 v = vec4(choice.y, _671, _674, _677);
+            vec4 v = vec4(choice.y, _673, _676, _679);
             vec4 param_48 = v;
-            vec3 _681 = mxc_env_sample(param_48, param_49);
+            vec3 _683 = mxc_env_sample(param_48, param_49);
             lightPdf = param_49;
-            m = _681;
+            m = _683;
             vec3 param_50 = m;
             float param_51 = mxc_view.environment.z;
             imageWi = mxc_env_to_world(param_50, param_51);
-            bool _690 = lightPdf > 0.0;
-            bool _697;
-            if (_690)
+            bool _692 = lightPdf > 0.0;
+            bool _699;
+            if (_692)
             {
-                _697 = dot(imageWi, N) > 0.0;
+                _699 = dot(imageWi, N) > 0.0;
             }
             else
             {
-                _697 = _690;
+                _699 = _692;
             }
-            if (_697)
+            if (_699)
             {
                 vec3 param_52 = imageWi;
                 imageSeen = mxc_environment(param_52);
@@ -2191,38 +2228,38 @@ void main()
             bool use = true;
             if ((n == 0) || (j < batchLights))
             {
-                _326 = 0;
+                _328 = 0;
             }
             else
             {
-                _326 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+                _328 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
             }
-            int strategy = _326;
+            int strategy = _328;
             if (strategy == 0)
             {
                 vec4 light = mxc_view.lightVector[j];
                 incoming = mxc_view.lightRadiance[j].xyz;
-                bool _742 = kinds == 1;
-                bool _755;
-                if (!_742)
+                bool _744 = kinds == 1;
+                bool _757;
+                if (!_744)
                 {
-                    bool _748 = (kinds & 1) != 0;
-                    bool _754;
-                    if (_748)
+                    bool _750 = (kinds & 1) != 0;
+                    bool _756;
+                    if (_750)
                     {
-                        _754 = light.w == 0.0;
+                        _756 = light.w == 0.0;
                     }
                     else
                     {
-                        _754 = _748;
+                        _756 = _750;
                     }
-                    _755 = _754;
+                    _757 = _756;
                 }
                 else
                 {
-                    _755 = _742;
+                    _757 = _744;
                 }
-                bool directional = _755;
+                bool directional = _757;
                 if (directional)
                 {
                     vec3 param_53 = light.xyz;
@@ -2235,17 +2272,17 @@ void main()
                     float d2 = max(dot(d, d), 9.9999999392252902907785028219223e-09);
                     wi = d * inversesqrt(d2);
                     incoming /= vec3(d2);
-                    bool _782 = (kinds & 4) != 0;
-                    bool _788;
-                    if (_782)
+                    bool _784 = (kinds & 4) != 0;
+                    bool _790;
+                    if (_784)
                     {
-                        _788 = light.w == 2.0;
+                        _790 = light.w == 2.0;
                     }
                     else
                     {
-                        _788 = _782;
+                        _790 = _784;
                     }
-                    if (_788)
+                    if (_790)
                     {
                         vec4 spot = mxc_view.lightSpot[j];
                         incoming *= smoothstep(spot.w, mxc_view.lightRadiance[j].w, dot(-wi, spot.xyz));
@@ -2264,26 +2301,26 @@ void main()
                 {
                     wi = imageWi;
                     incoming = imageSeen;
-                    bool _823 = lightPdf > 0.0;
-                    bool _830;
-                    if (_823)
+                    bool _825 = lightPdf > 0.0;
+                    bool _832;
+                    if (_825)
                     {
-                        _830 = dot(imageWi, N) > 0.0;
+                        _832 = dot(imageWi, N) > 0.0;
                     }
                     else
                     {
-                        _830 = _823;
+                        _832 = _825;
                     }
-                    use = _830;
+                    use = _832;
                 }
             }
             MxcClosure param_55 = c;
             vec3 param_56 = wo;
             vec3 param_57 = wi;
             bool param_58 = strategy != 0;
-            vec3 _836 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            vec3 _838 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
             float pdf = param_59;
-            vec3 f = _836;
+            vec3 f = _838;
             if (strategy == 0)
             {
                 radiance += (f * incoming);
@@ -2301,13 +2338,13 @@ void main()
                             vec3 param_62 = mxc_env_to_map(param_60, param_61);
                             float param_63 = pdf;
                             float param_64 = mxc_env_pdf(param_62);
-                            _342 = mxc_power_heuristic(param_63, param_64);
+                            _344 = mxc_power_heuristic(param_63, param_64);
                         }
                         else
                         {
-                            _342 = 1.0;
+                            _344 = 1.0;
                         }
-                        float w_1 = _342;
+                        float w_1 = _344;
                         sum += (((f * w_1) / vec3(pdf)) * incoming);
                     }
                 }

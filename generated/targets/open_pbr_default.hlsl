@@ -31,6 +31,7 @@ struct MxcLobe
     float3 T;
     float2 alpha;
     float eta;
+    float etaAbove;
     float3 c0;
     float3 c1;
     float3 c2;
@@ -80,18 +81,18 @@ struct MxcLobeSample
 #define SPIRV_CROSS_CONSTANT_ID_0 -1
 #endif
 static const int MXC_ENVIRONMENT = SPIRV_CROSS_CONSTANT_ID_0;
-static const bool _223 = (MXC_ENVIRONMENT != (-1));
+static const bool _225 = (MXC_ENVIRONMENT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_1
 #define SPIRV_CROSS_CONSTANT_ID_1 -1
 #endif
 static const int MXC_LIGHT_COUNT = SPIRV_CROSS_CONSTANT_ID_1;
-static const bool _225 = (MXC_LIGHT_COUNT != (-1));
+static const bool _227 = (MXC_LIGHT_COUNT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_2
 #define SPIRV_CROSS_CONSTANT_ID_2 -1
 #endif
 static const int MXC_LIGHT_KINDS = SPIRV_CROSS_CONSTANT_ID_2;
-static const bool _227 = (MXC_LIGHT_KINDS != (-1));
-static const int _228 = _227 ? MXC_LIGHT_KINDS : 7;
+static const bool _229 = (MXC_LIGHT_KINDS != (-1));
+static const int _230 = _229 ? MXC_LIGHT_KINDS : 7;
 
 cbuffer MxcView : register(b1, space0)
 {
@@ -108,7 +109,7 @@ cbuffer MxcView : register(b1, space0)
 };
 
 ByteAddressBuffer mxc_params : register(t2, space0);
-ByteAddressBuffer _206 : register(t1, space1);
+ByteAddressBuffer _208 : register(t1, space1);
 Texture2D<float4> mxc_tables : register(t0, space0);
 SamplerState _mxc_tables_sampler : register(s0, space0);
 Texture2D<float4> mxc_env_radiance : register(t0, space1);
@@ -146,16 +147,16 @@ struct SPIRV_Cross_Output
 float3 mxc_safe_normalize(float3 v, float3 fallback)
 {
     float l2 = dot(v, v);
-    float3 _957;
+    float3 _959;
     if (l2 > 9.9999996826552253889678874634872e-21f)
     {
-        _957 = v * rsqrt(l2);
+        _959 = v * rsqrt(l2);
     }
     else
     {
-        _957 = fallback;
+        _959 = fallback;
     }
-    return _957;
+    return _959;
 }
 
 float3x3 mxc_frame(float3 N, float3 T)
@@ -204,17 +205,17 @@ bool mxc_index_matched(MxcLobe l)
 
 bool mxc_dielectric_walk_split(MxcLobe l, float3 wo)
 {
-    bool _2011 = wo.z <= 0.0f;
-    bool _2018;
-    if (!_2011)
+    bool _2050 = wo.z <= 0.0f;
+    bool _2057;
+    if (!_2050)
     {
-        _2018 = l.eta < 1.0f;
+        _2057 = l.eta < 1.0f;
     }
     else
     {
-        _2018 = _2011;
+        _2057 = _2050;
     }
-    if (_2018)
+    if (_2057)
     {
         return false;
     }
@@ -245,16 +246,16 @@ float4 mxc_dielectric_table(float mu, float alpha, float e)
 
 float mxc_dielectric_albedo(float mu, float alpha, float eta)
 {
-    float _1588;
+    float _1590;
     if (eta >= 1.0f)
     {
-        _1588 = eta;
+        _1590 = eta;
     }
     else
     {
-        _1588 = 1.0f / max(eta, 0.001000000047497451305389404296875f);
+        _1590 = 1.0f / max(eta, 0.001000000047497451305389404296875f);
     }
-    float e = _1588;
+    float e = _1590;
     float param = mu;
     float param_1 = alpha;
     float param_2 = e;
@@ -291,16 +292,16 @@ float mxc_walk_reflectance(float mu, float alpha, float eta)
 
 float mxc_lobe_eta(MxcLobe l, bool above)
 {
-    float _1716;
+    float _1718;
     if (above)
     {
-        _1716 = l.eta;
+        _1718 = l.eta;
     }
     else
     {
-        _1716 = 1.0f / l.eta;
+        _1718 = 1.0f / l.eta;
     }
-    return _1716;
+    return _1718;
 }
 
 float mxc_dielectric_albedo_rt(float mu, float alpha, float eta)
@@ -333,6 +334,25 @@ float2 mxc_split_sum(float mu, float alpha)
     return mxc_table(param, param_1).xy;
 }
 
+float mxc_lobe_cosine_below_coat(MxcLobe l, float mu)
+{
+    bool _1743 = l.kind == 1;
+    bool _1749;
+    if (_1743)
+    {
+        _1749 = l.etaAbove > 1.0f;
+    }
+    else
+    {
+        _1749 = _1743;
+    }
+    if (_1749)
+    {
+        return sqrt(1.0f - ((1.0f - (mu * mu)) / (l.etaAbove * l.etaAbove)));
+    }
+    return mu;
+}
+
 float mxc_fresnel_dielectric(float cosi, float eta)
 {
     if (abs(eta - 1.0f) < 9.9999999747524270787835121154785e-07f)
@@ -350,84 +370,90 @@ float mxc_fresnel_dielectric(float cosi, float eta)
     return 0.5f * ((rs * rs) + (rp * rp));
 }
 
-float3 mxc_lobe_fresnel(MxcLobe l, float _cosh, bool above)
+float3 mxc_lobe_fresnel(MxcLobe l, inout float _cosh, bool above)
 {
     float3 f = 1.0f.xxx;
-    if (l.kind == 1)
+    if (above)
     {
         MxcLobe param = l;
-        bool param_1 = above;
-        float param_2 = _cosh;
-        float param_3 = mxc_lobe_eta(param, param_1);
-        f = mxc_fresnel_dielectric(param_2, param_3).xxx;
+        float param_1 = clamp(_cosh, 0.0f, 1.0f);
+        _cosh = mxc_lobe_cosine_below_coat(param, param_1);
+    }
+    if (l.kind == 1)
+    {
+        MxcLobe param_2 = l;
+        bool param_3 = above;
+        float param_4 = _cosh;
+        float param_5 = mxc_lobe_eta(param_2, param_3);
+        f = mxc_fresnel_dielectric(param_4, param_5).xxx;
     }
     return f;
 }
 
 float3 mxc_lobe_ms_scale(MxcLobe l, float3 wo)
 {
-    bool _2142 = l.kind == 1;
-    bool _2149;
-    if (!_2142)
+    bool _2181 = l.kind == 1;
+    bool _2188;
+    if (!_2181)
     {
-        _2149 = l.kind == 2;
+        _2188 = l.kind == 2;
     }
     else
     {
-        _2149 = _2142;
+        _2188 = _2181;
     }
-    bool _2156;
-    if (!_2149)
+    bool _2195;
+    if (!_2188)
     {
-        _2156 = l.kind == 3;
+        _2195 = l.kind == 3;
     }
     else
     {
-        _2156 = _2149;
+        _2195 = _2188;
     }
-    bool microfacet = _2156;
-    bool _2158 = !microfacet;
-    bool _2165;
-    if (!_2158)
+    bool microfacet = _2195;
+    bool _2197 = !microfacet;
+    bool _2204;
+    if (!_2197)
     {
         float2 param = l.alpha;
-        _2165 = mxc_is_delta(param);
+        _2204 = mxc_is_delta(param);
     }
     else
     {
-        _2165 = _2158;
+        _2204 = _2197;
     }
-    if (_2165)
+    if (_2204)
     {
         return 1.0f.xxx;
     }
     float alpha = sqrt(l.alpha.x * l.alpha.y);
-    bool _2176 = l.kind == 1;
-    bool _2181;
-    if (_2176)
+    bool _2215 = l.kind == 1;
+    bool _2220;
+    if (_2215)
     {
         MxcLobe param_1 = l;
-        _2181 = mxc_index_matched(param_1);
+        _2220 = mxc_index_matched(param_1);
     }
     else
     {
-        _2181 = _2176;
+        _2220 = _2215;
     }
-    if (_2181)
+    if (_2220)
     {
         return 1.0f.xxx;
     }
-    bool _2186 = l.kind == 1;
-    bool _2193;
-    if (_2186)
+    bool _2225 = l.kind == 1;
+    bool _2232;
+    if (_2225)
     {
-        _2193 = (l.mode & 4) == 0;
+        _2232 = (l.mode & 4) == 0;
     }
     else
     {
-        _2193 = _2186;
+        _2232 = _2225;
     }
-    if (_2193)
+    if (_2232)
     {
         MxcLobe param_2 = l;
         float3 param_3 = wo;
@@ -458,81 +484,87 @@ float3 mxc_lobe_ms_scale(MxcLobe l, float3 wo)
     MxcLobe param_17 = l;
     float param_18 = 1.0f;
     bool param_19 = true;
-    return 1.0f.xxx + ((mxc_lobe_fresnel(param_17, param_18, param_19) * (1.0f - e_1)) / max(e_1, 0.0500000007450580596923828125f).xxx);
+    float3 _2283 = mxc_lobe_fresnel(param_17, param_18, param_19);
+    return 1.0f.xxx + ((_2283 * (1.0f - e_1)) / max(e_1, 0.0500000007450580596923828125f).xxx);
 }
 
 float3 mxc_lobe_albedo_scaled(MxcLobe l, float3 wo, float3 ms)
 {
     float mu = clamp(wo.z, 0.0f, 1.0f);
-    bool _2385 = l.kind == 1;
-    bool _2392;
-    if (!_2385)
+    bool _2426 = l.kind == 1;
+    bool _2433;
+    if (!_2426)
     {
-        _2392 = l.kind == 2;
+        _2433 = l.kind == 2;
     }
     else
     {
-        _2392 = _2385;
+        _2433 = _2426;
     }
-    bool _2399;
-    if (!_2392)
+    bool _2440;
+    if (!_2433)
     {
-        _2399 = l.kind == 3;
+        _2440 = l.kind == 3;
     }
     else
     {
-        _2399 = _2392;
+        _2440 = _2433;
     }
-    if (_2399)
+    if (_2440)
     {
         float alpha = sqrt(l.alpha.x * l.alpha.y);
-        bool _2410 = l.kind == 1;
-        bool _2417;
-        if (_2410)
+        bool _2451 = l.kind == 1;
+        bool _2458;
+        if (_2451)
         {
             float2 param = l.alpha;
-            _2417 = !mxc_is_delta(param);
+            _2458 = !mxc_is_delta(param);
         }
         else
         {
-            _2417 = _2410;
+            _2458 = _2451;
         }
-        if (_2417)
+        if (_2458)
         {
-            float param_1 = mu;
-            float param_2 = alpha;
-            float param_3 = l.eta;
-            float3 e = mxc_dielectric_albedo(param_1, param_2, param_3).xxx;
+            MxcLobe param_1 = l;
+            float param_2 = mu;
+            float param_3 = mxc_lobe_cosine_below_coat(param_1, param_2);
+            float param_4 = alpha;
+            float param_5 = l.eta;
+            float3 e = mxc_dielectric_albedo(param_3, param_4, param_5).xxx;
             return clamp((e * l.c0) * ms, 0.0f.xxx, 1.0f.xxx);
         }
-        float param_4 = mu;
-        float param_5 = alpha;
-        float2 ab = mxc_split_sum(param_4, param_5);
-        MxcLobe param_6 = l;
-        float param_7 = 1.0f;
-        bool param_8 = true;
-        float3 f0 = mxc_lobe_fresnel(param_6, param_7, param_8);
-        MxcLobe param_9 = l;
-        float param_10 = 0.0f;
-        bool param_11 = true;
-        float3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
-        float3 _2375;
+        float param_6 = mu;
+        float param_7 = alpha;
+        float2 ab = mxc_split_sum(param_6, param_7);
+        MxcLobe param_8 = l;
+        float param_9 = 1.0f;
+        bool param_10 = true;
+        float3 _2482 = mxc_lobe_fresnel(param_8, param_9, param_10);
+        float3 f0 = _2482;
+        MxcLobe param_11 = l;
+        float param_12 = 0.0f;
+        bool param_13 = true;
+        float3 _2484 = mxc_lobe_fresnel(param_11, param_12, param_13);
+        float3 f90 = _2484;
+        float3 _2416;
         if (l.kind == 1)
         {
-            _2375 = l.c0;
+            _2416 = l.c0;
         }
         else
         {
-            _2375 = 1.0f.xxx;
+            _2416 = 1.0f.xxx;
         }
-        float3 tint = _2375;
-        float2 param_12 = l.alpha;
-        if (mxc_is_delta(param_12))
+        float3 tint = _2416;
+        float2 param_14 = l.alpha;
+        if (mxc_is_delta(param_14))
         {
-            MxcLobe param_13 = l;
-            float param_14 = mu;
-            bool param_15 = true;
-            return mxc_lobe_fresnel(param_13, param_14, param_15) * tint;
+            MxcLobe param_15 = l;
+            float param_16 = mu;
+            bool param_17 = true;
+            float3 _2501 = mxc_lobe_fresnel(param_15, param_16, param_17);
+            return _2501 * tint;
         }
         return clamp((((f0 * ab.x) + (f90 * ab.y)) * tint) * ms, 0.0f.xxx, 1.0f.xxx);
     }
@@ -555,17 +587,17 @@ float3 mxc_lobe_albedo(MxcLobe l, float3 wo)
 
 float3 mxc_lobe_layer_albedo(MxcLobe l, float3 wo)
 {
-    bool _2512 = l.kind == 9;
-    bool _2519;
-    if (!_2512)
+    bool _2555 = l.kind == 9;
+    bool _2562;
+    if (!_2555)
     {
-        _2519 = l.kind == 10;
+        _2562 = l.kind == 10;
     }
     else
     {
-        _2519 = _2512;
+        _2562 = _2555;
     }
-    if (_2519)
+    if (_2562)
     {
         MxcLobe white = l;
         white.c0 = 1.0f.xxx;
@@ -580,48 +612,48 @@ float3 mxc_lobe_layer_albedo(MxcLobe l, float3 wo)
 
 float mxc_lobe_ms_transmit(MxcLobe l, float3 wo, float3 ms)
 {
-    bool _2044 = l.kind != 1;
-    bool _2051;
-    if (!_2044)
+    bool _2083 = l.kind != 1;
+    bool _2090;
+    if (!_2083)
     {
         float2 param = l.alpha;
-        _2051 = mxc_is_delta(param);
+        _2090 = mxc_is_delta(param);
     }
     else
     {
-        _2051 = _2044;
+        _2090 = _2083;
     }
-    bool _2057;
-    if (!_2051)
+    bool _2096;
+    if (!_2090)
     {
         MxcLobe param_1 = l;
-        _2057 = mxc_index_matched(param_1);
+        _2096 = mxc_index_matched(param_1);
     }
     else
     {
-        _2057 = _2051;
+        _2096 = _2090;
     }
-    bool _2065;
-    if (!_2057)
+    bool _2104;
+    if (!_2096)
     {
-        _2065 = (l.mode & 4) != 0;
+        _2104 = (l.mode & 4) != 0;
     }
     else
     {
-        _2065 = _2057;
+        _2104 = _2096;
     }
-    bool _2073;
-    if (!_2065)
+    bool _2112;
+    if (!_2104)
     {
         MxcLobe param_2 = l;
         float3 param_3 = wo;
-        _2073 = !mxc_dielectric_walk_split(param_2, param_3);
+        _2112 = !mxc_dielectric_walk_split(param_2, param_3);
     }
     else
     {
-        _2073 = _2065;
+        _2112 = _2104;
     }
-    if (_2073)
+    if (_2112)
     {
         return ms.x;
     }
@@ -660,18 +692,18 @@ float mxc_lobe_choice(MxcLobe l, float3 woLocal, float3 ms)
 
 bool mxc_lobe_ms_shaped(MxcLobe l, float3 wo)
 {
-    bool _2264 = wo.z <= 0.0f;
-    bool _2271;
-    if (!_2264)
+    bool _2303 = wo.z <= 0.0f;
+    bool _2310;
+    if (!_2303)
     {
         float2 param = l.alpha;
-        _2271 = mxc_is_delta(param);
+        _2310 = mxc_is_delta(param);
     }
     else
     {
-        _2271 = _2264;
+        _2310 = _2303;
     }
-    if (_2271)
+    if (_2310)
     {
         return false;
     }
@@ -683,47 +715,47 @@ bool mxc_lobe_ms_shaped(MxcLobe l, float3 wo)
     {
         return (l.mode & 1) != 0;
     }
-    bool _2290 = l.kind == 1;
-    bool _2297;
-    if (_2290)
+    bool _2329 = l.kind == 1;
+    bool _2336;
+    if (_2329)
     {
-        _2297 = (l.mode & 1) != 0;
+        _2336 = (l.mode & 1) != 0;
     }
     else
     {
-        _2297 = _2290;
+        _2336 = _2329;
     }
-    bool _2304;
-    if (_2297)
+    bool _2343;
+    if (_2336)
     {
-        _2304 = (l.mode & 4) == 0;
+        _2343 = (l.mode & 4) == 0;
     }
     else
     {
-        _2304 = _2297;
+        _2343 = _2336;
     }
-    bool _2310;
-    if (_2304)
+    bool _2349;
+    if (_2343)
     {
         MxcLobe param_1 = l;
-        _2310 = !mxc_index_matched(param_1);
+        _2349 = !mxc_index_matched(param_1);
     }
     else
     {
-        _2310 = _2304;
+        _2349 = _2343;
     }
-    bool _2316;
-    if (_2310)
+    bool _2355;
+    if (_2349)
     {
         MxcLobe param_2 = l;
         float3 param_3 = wo;
-        _2316 = mxc_dielectric_walk_split(param_2, param_3);
+        _2355 = mxc_dielectric_walk_split(param_2, param_3);
     }
     else
     {
-        _2316 = _2310;
+        _2355 = _2349;
     }
-    return _2316;
+    return _2355;
 }
 
 bool mxc_lobe_transmits(MxcLobe l)
@@ -735,16 +767,16 @@ MxcLobe mxc_ms_lobe(MxcLobe l, bool transmitted)
 {
     MxcLobe m = l;
     m.alpha = min(l.alpha * (transmitted ? 3.0f : 1.5f), 1.0f.xx);
-    int _2322;
+    int _2361;
     if (transmitted)
     {
-        _2322 = l.mode & (-2);
+        _2361 = l.mode & (-2);
     }
     else
     {
-        _2322 = l.mode & (-3);
+        _2361 = l.mode & (-3);
     }
-    m.mode = _2322;
+    m.mode = _2361;
     if (l.kind == 1)
     {
         m.c0 = 1.0f.xxx;
@@ -756,7 +788,7 @@ MxcLobe mxc_ms_lobe(MxcLobe l, bool transmitted)
 void mxc_closure_prepare(inout MxcClosure c, float3 wo)
 {
     c.choiceTotal = 0.0f;
-    float _3080;
+    float _3123;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
@@ -803,18 +835,18 @@ void mxc_closure_prepare(inout MxcClosure c, float3 wo)
             float3 addedR = max(mxc_lobe_albedo_scaled(param_17, param_18, param_19) - reflected, 0.0f.xxx);
             float3 transmitted = 0.0f.xxx;
             float3 addedT = 0.0f.xxx;
-            bool _3168 = l.kind == 1;
-            bool _3173;
-            if (_3168)
+            bool _3211 = l.kind == 1;
+            bool _3216;
+            if (_3211)
             {
                 MxcLobe param_20 = l;
-                _3173 = mxc_lobe_transmits(param_20);
+                _3216 = mxc_lobe_transmits(param_20);
             }
             else
             {
-                _3173 = _3168;
+                _3216 = _3211;
             }
-            if (_3173)
+            if (_3216)
             {
                 float param_21 = o.z;
                 float param_22 = alpha;
@@ -834,18 +866,18 @@ void mxc_closure_prepare(inout MxcClosure c, float3 wo)
             float3 param_31 = 1.0f.xxx;
             float3 broadR = mxc_lobe_albedo_scaled(param_29, param_30, param_31);
             float broadT = 1.0f;
-            bool _3208 = l.kind == 1;
-            bool _3213;
-            if (_3208)
+            bool _3251 = l.kind == 1;
+            bool _3256;
+            if (_3251)
             {
                 MxcLobe param_32 = l;
-                _3213 = mxc_lobe_transmits(param_32);
+                _3256 = mxc_lobe_transmits(param_32);
             }
             else
             {
-                _3213 = _3208;
+                _3256 = _3251;
             }
-            if (_3213)
+            if (_3256)
             {
                 MxcLobe param_33 = l;
                 bool param_34 = true;
@@ -869,13 +901,13 @@ void mxc_closure_prepare(inout MxcClosure c, float3 wo)
             if (added > 0.0f)
             {
                 float3 param_43 = addedR;
-                _3080 = mxc_luminance(param_43) / added;
+                _3123 = mxc_luminance(param_43) / added;
             }
             else
             {
-                _3080 = 1.0f;
+                _3123 = 1.0f;
             }
-            c.msSplit[k] = _3080;
+            c.msSplit[k] = _3123;
             c.msT[k] = 1.0f;
         }
         else
@@ -898,6 +930,7 @@ void mxc_material_closure(MxcGeometry g, float3 wo, inout MxcClosure c)
     lobe0.T = v6;
     lobe0.alpha = 0.0900000035762786865234375f.xx;
     lobe0.eta = 1.5f;
+    lobe0.etaAbove = 1.0f;
     lobe0.c0 = 1.0f.xxx;
     lobe0.c1 = 1.0f.xxx;
     lobe0.c2 = 1.0f.xxx;
@@ -921,6 +954,7 @@ void mxc_material_closure(MxcGeometry g, float3 wo, inout MxcClosure c)
     lobe3.T = g.T;
     lobe3.alpha = 0.0f.xx;
     lobe3.eta = 1.5f;
+    lobe3.etaAbove = 1.0f;
     lobe3.c0 = 0.800000011920928955078125f.xxx;
     lobe3.c1 = 1.0f.xxx;
     lobe3.c2 = 1.0f.xxx;
@@ -942,35 +976,35 @@ void mxc_material_closure(MxcGeometry g, float3 wo, inout MxcClosure c)
 
 int mxc_light_count()
 {
-    int _4127;
-    if (_225)
+    int _4172;
+    if (_227)
     {
-        _4127 = MXC_LIGHT_COUNT;
+        _4172 = MXC_LIGHT_COUNT;
     }
     else
     {
-        _4127 = mxc_view_counts.x;
+        _4172 = mxc_view_counts.x;
     }
-    return min(_4127, 8);
+    return min(_4172, 8);
 }
 
 int mxc_light_kinds()
 {
-    return _228;
+    return _230;
 }
 
 int mxc_environment_code()
 {
-    int _4119;
-    if (_223)
+    int _4164;
+    if (_225)
     {
-        _4119 = MXC_ENVIRONMENT;
+        _4164 = MXC_ENVIRONMENT;
     }
     else
     {
-        _4119 = mxc_view_counts.y;
+        _4164 = mxc_view_counts.y;
     }
-    return _4119;
+    return _4164;
 }
 
 float mxc_uniform(inout uint seed)
@@ -1052,36 +1086,36 @@ float mxc_ggx_g2(float3 wo, float3 wi, float2 alpha)
 {
     float3 param = wo;
     float2 param_1 = alpha;
-    float _1261 = mxc_ggx_lambda(param, param_1);
+    float _1263 = mxc_ggx_lambda(param, param_1);
     float3 param_2 = wi;
     float2 param_3 = alpha;
-    float _1265 = mxc_ggx_lambda(param_2, param_3);
-    return 1.0f / ((1.0f + _1261) + _1265);
+    float _1267 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0f / ((1.0f + _1263) + _1267);
 }
 
 float3 mxc_microfacet_reflect(MxcLobe l, float3 wo, float3 wi)
 {
-    bool _1775 = wo.z <= 0.0f;
-    bool _1782;
-    if (!_1775)
+    bool _1814 = wo.z <= 0.0f;
+    bool _1821;
+    if (!_1814)
     {
-        _1782 = wi.z <= 0.0f;
+        _1821 = wi.z <= 0.0f;
     }
     else
     {
-        _1782 = _1775;
+        _1821 = _1814;
     }
-    bool _1789;
-    if (!_1782)
+    bool _1828;
+    if (!_1821)
     {
         float2 param = l.alpha;
-        _1789 = mxc_is_delta(param);
+        _1828 = mxc_is_delta(param);
     }
     else
     {
-        _1789 = _1782;
+        _1828 = _1821;
     }
-    if (_1789)
+    if (_1828)
     {
         return 0.0f.xxx;
     }
@@ -1089,34 +1123,35 @@ float3 mxc_microfacet_reflect(MxcLobe l, float3 wo, float3 wi)
     MxcLobe param_1 = l;
     float param_2 = max(dot(wo, h), 0.0f);
     bool param_3 = true;
-    float3 f = mxc_lobe_fresnel(param_1, param_2, param_3);
+    float3 _1840 = mxc_lobe_fresnel(param_1, param_2, param_3);
+    float3 f = _1840;
     if (l.kind == 1)
     {
         f *= l.c0;
     }
     float3 param_4 = h;
     float2 param_5 = l.alpha;
-    float _1815 = mxc_ggx_d(param_4, param_5);
+    float _1854 = mxc_ggx_d(param_4, param_5);
     float3 param_6 = wo;
     float3 param_7 = wi;
     float2 param_8 = l.alpha;
-    return ((f * _1815) * mxc_ggx_g2(param_6, param_7, param_8)) / (4.0f * wo.z).xxx;
+    return ((f * _1854) * mxc_ggx_g2(param_6, param_7, param_8)) / (4.0f * wo.z).xxx;
 }
 
 float mxc_fon(float sigma, float3 wo, float3 wi)
 {
     float a = 1.0f / (1.0f + (0.2877933979034423828125f * sigma));
     float s = dot(wi, wo) - (wi.z * wo.z);
-    float _1836;
+    float _1875;
     if (s > 0.0f)
     {
-        _1836 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07f);
+        _1875 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07f);
     }
     else
     {
-        _1836 = 1.0f;
+        _1875 = 1.0f;
     }
-    float t = _1836;
+    float t = _1875;
     return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375f;
 }
 
@@ -1127,16 +1162,16 @@ float mxc_fon_albedo(float sigma, float mu)
     float param = 1.0f - (c * c);
     float s = mxc_safe_sqrt(param);
     float theta = acos(c);
-    float _1882;
+    float _1921;
     if (c > 9.9999997473787516355514526367188e-05f)
     {
-        _1882 = (1.0f - ((s * s) * s)) / c;
+        _1921 = (1.0f - ((s * s) * s)) / c;
     }
     else
     {
-        _1882 = 1.5f * c;
+        _1921 = 1.5f * c;
     }
-    float tail = _1882;
+    float tail = _1921;
     float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875f * s) * tail)) - (0.666666686534881591796875f * s);
     return a + (((sigma * a) * g) * 0.3183098733425140380859375f);
 }
@@ -1193,17 +1228,17 @@ float3 mxc_lobe_eval(MxcLobe l, float3 wo, float3 wi)
         case 2:
         case 3:
         {
-            bool _2594 = l.kind == 3;
-            bool _2601;
-            if (_2594)
+            bool _2637 = l.kind == 3;
+            bool _2644;
+            if (_2637)
             {
-                _2601 = (l.mode & 1) == 0;
+                _2644 = (l.mode & 1) == 0;
             }
             else
             {
-                _2601 = _2594;
+                _2644 = _2637;
             }
-            if (_2601)
+            if (_2644)
             {
                 return 0.0f.xxx;
             }
@@ -1214,30 +1249,30 @@ float3 mxc_lobe_eval(MxcLobe l, float3 wo, float3 wi)
         }
         case 5:
         {
-            bool _2610 = wo.z > 0.0f;
-            bool _2616;
-            if (_2610)
+            bool _2653 = wo.z > 0.0f;
+            bool _2659;
+            if (_2653)
             {
-                _2616 = wi.z > 0.0f;
+                _2659 = wi.z > 0.0f;
             }
             else
             {
-                _2616 = _2610;
+                _2659 = _2653;
             }
-            float3 _2545;
-            if (_2616)
+            float3 _2588;
+            if (_2659)
             {
                 float3 param_9 = l.c0;
                 float param_10 = l.p0;
                 float3 param_11 = wo;
                 float3 param_12 = wi;
-                _2545 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
+                _2588 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
             }
             else
             {
-                _2545 = 0.0f.xxx;
+                _2588 = 0.0f.xxx;
             }
-            return _2545;
+            return _2588;
         }
         default:
         {
@@ -1250,8 +1285,8 @@ float mxc_ggx_g1(float3 v, float2 alpha)
 {
     float3 param = v;
     float2 param_1 = alpha;
-    float _1247 = mxc_ggx_lambda(param, param_1);
-    return 1.0f / (1.0f + _1247);
+    float _1249 = mxc_ggx_lambda(param, param_1);
+    return 1.0f / (1.0f + _1249);
 }
 
 float mxc_ggx_pdf_vndf(float3 wo, float3 m, float2 alpha)
@@ -1264,8 +1299,8 @@ float mxc_ggx_pdf_vndf(float3 wo, float3 m, float2 alpha)
     float2 param_1 = alpha;
     float3 param_2 = m;
     float2 param_3 = alpha;
-    float _1420 = mxc_ggx_d(param_2, param_3);
-    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0f)) * _1420) / wo.z;
+    float _1422 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0f)) * _1422) / wo.z;
 }
 
 float mxc_mean(float3 c)
@@ -1287,26 +1322,26 @@ float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
                 return 0.0f;
             }
             bool above = wo.z > 0.0f;
-            float3 _2639;
+            float3 _2682;
             if (above)
             {
-                _2639 = wo;
+                _2682 = wo;
             }
             else
             {
-                _2639 = -wo;
+                _2682 = -wo;
             }
-            float3 o = _2639;
-            float3 _2641;
+            float3 o = _2682;
+            float3 _2684;
             if (above)
             {
-                _2641 = wi;
+                _2684 = wi;
             }
             else
             {
-                _2641 = -wi;
+                _2684 = -wi;
             }
-            float3 i = _2641;
+            float3 i = _2684;
             if (i.z > 0.0f)
             {
                 float3 h = normalize(o + i);
@@ -1325,45 +1360,46 @@ float mxc_lobe_pdf(MxcLobe l, float3 wo, float3 wi)
                 MxcLobe param_4 = l;
                 float param_5 = max(dot(o, h), 0.0f);
                 bool param_6 = above;
-                float3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
+                float3 _2780 = mxc_lobe_fresnel(param_4, param_5, param_6);
+                float3 param_7 = _2780;
                 float fr = mxc_mean(param_7);
                 MxcLobe param_8 = l;
-                bool _2741 = mxc_lobe_transmits(param_8);
-                bool _2748;
-                if (_2741)
+                bool _2784 = mxc_lobe_transmits(param_8);
+                bool _2791;
+                if (_2784)
                 {
-                    _2748 = (l.mode & 1) != 0;
+                    _2791 = (l.mode & 1) != 0;
                 }
                 else
                 {
-                    _2748 = _2741;
+                    _2791 = _2784;
                 }
-                return p * (_2748 ? fr : 1.0f);
+                return p * (_2791 ? fr : 1.0f);
             }
             return 0.0f;
         }
         default:
         {
-            bool _2661 = wo.z > 0.0f;
-            bool _2667;
-            if (_2661)
+            bool _2704 = wo.z > 0.0f;
+            bool _2710;
+            if (_2704)
             {
-                _2667 = wi.z > 0.0f;
+                _2710 = wi.z > 0.0f;
             }
             else
             {
-                _2667 = _2661;
+                _2710 = _2704;
             }
-            float _2653;
-            if (_2667)
+            float _2696;
+            if (_2710)
             {
-                _2653 = wi.z * 0.3183098733425140380859375f;
+                _2696 = wi.z * 0.3183098733425140380859375f;
             }
             else
             {
-                _2653 = 0.0f;
+                _2696 = 0.0f;
             }
-            return _2653;
+            return _2696;
         }
     }
 }
@@ -1374,16 +1410,16 @@ float3 mxc_ggx_sample_vndf(float3 wo, inout float2 alpha, float2 u)
     alpha = mxc_rough_alpha(param);
     float3 vh = normalize(float3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lensq = (vh.x * vh.x) + (vh.y * vh.y);
-    float3 _1277;
+    float3 _1279;
     if (lensq > 0.0f)
     {
-        _1277 = float3(-vh.y, vh.x, 0.0f) * rsqrt(lensq);
+        _1279 = float3(-vh.y, vh.x, 0.0f) * rsqrt(lensq);
     }
     else
     {
-        _1277 = float3(1.0f, 0.0f, 0.0f);
+        _1279 = float3(1.0f, 0.0f, 0.0f);
     }
-    float3 t1 = _1277;
+    float3 t1 = _1279;
     float3 t2 = cross(vh, t1);
     float r = sqrt(u.x);
     float phi = 6.283185482025146484375f * u.y;
@@ -1412,94 +1448,95 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, float3 wo, float3 u)
         case 3:
         {
             bool above = wo.z > 0.0f;
-            float3 _2760;
+            float3 _2803;
             if (above)
             {
-                _2760 = wo;
+                _2803 = wo;
             }
             else
             {
-                _2760 = -wo;
+                _2803 = -wo;
             }
-            float3 o = _2760;
+            float3 o = _2803;
             if (o.z <= 0.0f)
             {
                 return s;
             }
             float2 param = l.alpha;
             bool delta = mxc_is_delta(param);
-            float3 _2764;
+            float3 _2807;
             if (delta)
             {
-                _2764 = float3(0.0f, 0.0f, 1.0f);
+                _2807 = float3(0.0f, 0.0f, 1.0f);
             }
             else
             {
                 float3 param_1 = o;
                 float2 param_2 = l.alpha;
                 float2 param_3 = u.xy;
-                float3 _2865 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
-                _2764 = _2865;
+                float3 _2908 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2807 = _2908;
             }
-            float3 m = _2764;
+            float3 m = _2807;
             float hm = dot(o, m);
-            bool _2872 = l.kind == 1;
-            bool _2879;
-            if (!_2872)
+            bool _2915 = l.kind == 1;
+            bool _2922;
+            if (!_2915)
             {
-                _2879 = l.kind == 3;
+                _2922 = l.kind == 3;
             }
             else
             {
-                _2879 = _2872;
+                _2922 = _2915;
             }
-            bool _2884;
-            if (_2879)
+            bool _2927;
+            if (_2922)
             {
                 MxcLobe param_4 = l;
-                _2884 = mxc_lobe_transmits(param_4);
+                _2927 = mxc_lobe_transmits(param_4);
             }
             else
             {
-                _2884 = _2879;
+                _2927 = _2922;
             }
-            bool transmits = _2884;
-            bool _2887 = l.kind == 2;
-            bool _2895;
-            if (!_2887)
+            bool transmits = _2927;
+            bool _2930 = l.kind == 2;
+            bool _2938;
+            if (!_2930)
             {
-                _2895 = (l.mode & 1) != 0;
+                _2938 = (l.mode & 1) != 0;
             }
             else
             {
-                _2895 = _2887;
+                _2938 = _2930;
             }
-            bool reflects = _2895;
+            bool reflects = _2938;
             MxcLobe param_5 = l;
             float param_6 = max(hm, 0.0f);
             bool param_7 = above;
-            float3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
-            float _2777;
+            float3 _2943 = mxc_lobe_fresnel(param_5, param_6, param_7);
+            float3 f = _2943;
+            float _2820;
             if (transmits)
             {
                 float3 param_8 = f;
-                _2777 = mxc_mean(param_8);
+                _2820 = mxc_mean(param_8);
             }
             else
             {
-                _2777 = 1.0f;
+                _2820 = 1.0f;
             }
-            float fr = _2777;
-            float _2780;
+            float fr = _2820;
+            float _2823;
             if (transmits)
             {
-                _2780 = reflects ? fr : 0.0f;
+                _2823 = reflects ? fr : 0.0f;
             }
             else
             {
-                _2780 = 1.0f;
+                _2823 = 1.0f;
             }
-            float pReflect = _2780;
+            float pReflect = _2823;
             if (u.z < pReflect)
             {
                 float3 i = reflect(-o, m);
@@ -1507,38 +1544,38 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, float3 wo, float3 u)
                 {
                     return s;
                 }
-                float3 _2782;
+                float3 _2825;
                 if (above)
                 {
-                    _2782 = i;
+                    _2825 = i;
                 }
                 else
                 {
-                    _2782 = -i;
+                    _2825 = -i;
                 }
-                s.wi = _2782;
+                s.wi = _2825;
                 s.delta = delta;
                 if (delta)
                 {
-                    float3 _2784;
+                    float3 _2827;
                     if (l.kind == 1)
                     {
-                        float3 _2785;
+                        float3 _2828;
                         if (above)
                         {
-                            _2785 = l.c0;
+                            _2828 = l.c0;
                         }
                         else
                         {
-                            _2785 = 1.0f.xxx;
+                            _2828 = 1.0f.xxx;
                         }
-                        _2784 = _2785;
+                        _2827 = _2828;
                     }
                     else
                     {
-                        _2784 = 1.0f.xxx;
+                        _2827 = 1.0f.xxx;
                     }
-                    float3 tint = _2784;
+                    float3 tint = _2827;
                     s.value = f * tint;
                     s.pdf = pReflect;
                 }
@@ -1653,33 +1690,33 @@ MxcSample mxc_closure_sample_direction(MxcClosure c, float3 wo, float3 u)
         float v = uz / q;
         float split = c.msSplit[chosen];
         reflected = v < split;
-        float _3534;
+        float _3577;
         if (reflected)
         {
-            _3534 = v / max(split, 9.9999999747524270787835121154785e-07f);
+            _3577 = v / max(split, 9.9999999747524270787835121154785e-07f);
         }
         else
         {
-            _3534 = (v - split) / max(1.0f - split, 9.9999999747524270787835121154785e-07f);
+            _3577 = (v - split) / max(1.0f - split, 9.9999999747524270787835121154785e-07f);
         }
-        uz = _3534;
+        uz = _3577;
     }
     else
     {
         uz = (uz - q) / (1.0f - q);
     }
-    MxcLobe _3536;
+    MxcLobe _3579;
     if (shaped)
     {
         MxcLobe param_4 = l;
         bool param_5 = !reflected;
-        _3536 = mxc_ms_lobe(param_4, param_5);
+        _3579 = mxc_ms_lobe(param_4, param_5);
     }
     else
     {
-        _3536 = l;
+        _3579 = l;
     }
-    MxcLobe m = _3536;
+    MxcLobe m = _3579;
     MxcLobe param_6 = m;
     float3 param_7 = o;
     float3 param_8 = float3(u.xy, min(uz, 0.999999940395355224609375f));
@@ -1741,16 +1778,16 @@ float3 mxc_env_to_map(float3 w, float angle)
 
 float2 mxc_env_uv(float3 d)
 {
-    float _3829;
+    float _3874;
     if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13f)
     {
-        _3829 = 0.5f + (atan2(d.x, -d.z) * 0.15915493667125701904296875f);
+        _3874 = 0.5f + (atan2(d.x, -d.z) * 0.15915493667125701904296875f);
     }
     else
     {
-        _3829 = 0.5f;
+        _3874 = 0.5f;
     }
-    float u = _3829;
+    float u = _3874;
     float v = atan2(length(d.xz), d.y) * 0.3183098733425140380859375f;
     return float2(u, v);
 }
@@ -1787,7 +1824,7 @@ uint mxc_env_cell(float3 d)
 {
     float3 param = d;
     float2 uv = mxc_env_uv(param);
-    uint2 size = max(_206.Load4(0).xy, uint2(1u, 1u));
+    uint2 size = max(_208.Load4(0).xy, uint2(1u, 1u));
     uint i = min(uint(max(uv.x, 0.0f) * float(size.x)), (size.x - 1u));
     uint j = min(uint(max(uv.y, 0.0f) * float(size.y)), (size.y - 1u));
     return (j * size.x) + i;
@@ -1796,36 +1833,36 @@ uint mxc_env_cell(float3 d)
 float mxc_env_pdf(float3 d)
 {
     float3 param = d;
-    return asfloat(_206.Load(mxc_env_cell(param) * 16 + 24));
+    return asfloat(_208.Load(mxc_env_cell(param) * 16 + 24));
 }
 
 float mxc_power_heuristic(float a, float b)
 {
     float a2 = a * a;
     float b2 = b * b;
-    float _4219;
+    float _4264;
     if ((a2 + b2) > 0.0f)
     {
-        _4219 = a2 / (a2 + b2);
+        _4264 = a2 / (a2 + b2);
     }
     else
     {
-        _4219 = 0.0f;
+        _4264 = 0.0f;
     }
-    return _4219;
+    return _4264;
 }
 
 float3 mxc_env_sample(float4 u, out float pdf)
 {
-    uint2 size = max(_206.Load4(0).xy, uint2(1u, 1u));
+    uint2 size = max(_208.Load4(0).xy, uint2(1u, 1u));
     uint n = size.x * size.y;
     uint k = min(uint(u.x * float(n)), (n - 1u));
-    float4 cell = asfloat(_206.Load4(k * 16 + 16));
+    float4 cell = asfloat(_208.Load4(k * 16 + 16));
     if (u.y >= cell.x)
     {
         k = min(asuint(cell.y), (n - 1u));
     }
-    pdf = asfloat(_206.Load(k * 16 + 24));
+    pdf = asfloat(_208.Load(k * 16 + 24));
     uint i = k % size.x;
     uint j = k / size.x;
     float phi = 6.283185482025146484375f * (((float(i) + u.z) / float(size.x)) - 0.5f);
@@ -1848,12 +1885,12 @@ float3 mxc_closure_eval_pdf(MxcClosure c, float3 wo, float3 wi, bool wantPdf, in
 {
     float3 f = 0.0f.xxx;
     float p = 0.0f;
-    MxcLobe _3314;
-    float3 _3318;
-    float3 _3319;
-    float3 _3320;
-    float _3325;
-    float _3326;
+    MxcLobe _3357;
+    float3 _3361;
+    float3 _3362;
+    float3 _3363;
+    float _3368;
+    float _3369;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
@@ -1880,38 +1917,38 @@ float3 mxc_closure_eval_pdf(MxcClosure c, float3 wo, float3 wi, bool wantPdf, in
             {
                 MxcLobe param_6 = l;
                 bool param_7 = i.z < 0.0f;
-                _3314 = mxc_ms_lobe(param_6, param_7);
+                _3357 = mxc_ms_lobe(param_6, param_7);
             }
             else
             {
-                _3314 = l;
+                _3357 = l;
             }
-            MxcLobe m = _3314;
+            MxcLobe m = _3357;
             if (shaped)
             {
                 if (i.z > 0.0f)
                 {
-                    _3319 = c.msLobe[k];
+                    _3362 = c.msLobe[k];
                 }
                 else
                 {
-                    _3319 = c.msLobeT[k];
+                    _3362 = c.msLobeT[k];
                 }
-                _3318 = _3319;
+                _3361 = _3362;
             }
             else
             {
                 if ((o.z * i.z) < 0.0f)
                 {
-                    _3320 = c.msT[k].xxx;
+                    _3363 = c.msT[k].xxx;
                 }
                 else
                 {
-                    _3320 = c.ms[k];
+                    _3363 = c.ms[k];
                 }
-                _3318 = _3320;
+                _3361 = _3363;
             }
-            float3 scale = _3318;
+            float3 scale = _3361;
             MxcLobe param_8 = m;
             float3 param_9 = o;
             float3 param_10 = i;
@@ -1922,19 +1959,19 @@ float3 mxc_closure_eval_pdf(MxcClosure c, float3 wo, float3 wi, bool wantPdf, in
                 {
                     if (i.z > 0.0f)
                     {
-                        _3326 = c.msSplit[k];
+                        _3369 = c.msSplit[k];
                     }
                     else
                     {
-                        _3326 = 1.0f - c.msSplit[k];
+                        _3369 = 1.0f - c.msSplit[k];
                     }
-                    _3325 = c.msPick[k] * _3326;
+                    _3368 = c.msPick[k] * _3369;
                 }
                 else
                 {
-                    _3325 = 1.0f - c.msPick[k];
+                    _3368 = 1.0f - c.msPick[k];
                 }
-                float share = _3325;
+                float share = _3368;
                 MxcLobe param_11 = m;
                 float3 param_12 = o;
                 float3 param_13 = i;
@@ -1949,16 +1986,16 @@ float3 mxc_closure_eval_pdf(MxcClosure c, float3 wo, float3 wi, bool wantPdf, in
             p += (c.choice[k] * pk);
         }
     }
-    float _3332;
+    float _3375;
     if (c.choiceTotal > 0.0f)
     {
-        _3332 = p / c.choiceTotal;
+        _3375 = p / c.choiceTotal;
     }
     else
     {
-        _3332 = 0.0f;
+        _3375 = 0.0f;
     }
-    pdf = _3332;
+    pdf = _3375;
     return f;
 }
 
@@ -2016,16 +2053,16 @@ void frag_main()
     int lights = mxc_light_count();
     int kinds = mxc_light_kinds();
     bool image = mxc_environment_code() == 3;
-    int _262;
+    int _264;
     if (mxc_environment_code() != 0)
     {
-        _262 = max(mxc_view_counts.w, 1);
+        _264 = max(mxc_view_counts.w, 1);
     }
     else
     {
-        _262 = 0;
+        _264 = 0;
     }
-    int n = _262;
+    int n = _264;
     uint param_17 = uint(mxc_view_counts.z);
     uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
     uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
@@ -2034,54 +2071,54 @@ void frag_main()
     uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
     uint pixel = mxc_pcg(param_21);
     uint param_22 = pixel;
-    float _503 = mxc_uniform(param_22);
+    float _505 = mxc_uniform(param_22);
     pixel = param_22;
     uint param_23 = pixel;
-    float _507 = mxc_uniform(param_23);
+    float _509 = mxc_uniform(param_23);
     pixel = param_23;
     uint param_24 = pixel;
-    float _510 = mxc_uniform(param_24);
+    float _512 = mxc_uniform(param_24);
     pixel = param_24;
     uint param_25 = pixel;
-    float _513 = mxc_uniform(param_25);
+    float _515 = mxc_uniform(param_25);
     pixel = param_25;
-    float4 shift = float4(_503, _507, _510, _513);
+    float4 shift = float4(_505, _509, _512, _515);
     float3 sum = 0.0f.xxx;
-    int _279;
+    int _281;
     MxcSample smp;
-    float3 _296;
-    float3 _297;
-    float _302;
+    float3 _298;
+    float3 _299;
+    float _304;
     float param_49;
-    int _326;
+    int _328;
     float param_59;
-    float _342;
+    float _344;
     for (int b = 0; b < max(n, int(lights > 0)); b++)
     {
         int batchLights = (b == 0) ? lights : 0;
         if (b < n)
         {
-            _279 = 1 + int(image);
+            _281 = 1 + int(image);
         }
         else
         {
-            _279 = 0;
+            _281 = 0;
         }
-        int batchSamples = _279;
+        int batchSamples = _281;
         uint index = (uint(mxc_view_counts.z) * uint(max(n, 1))) + uint(b);
         uint param_26 = index;
         uint param_27 = 2u;
-        float _553 = mxc_radical_inverse(param_26, param_27);
+        float _555 = mxc_radical_inverse(param_26, param_27);
         uint param_28 = index;
         uint param_29 = 3u;
-        float _556 = mxc_radical_inverse(param_28, param_29);
+        float _558 = mxc_radical_inverse(param_28, param_29);
         uint param_30 = index;
         uint param_31 = 5u;
-        float _558 = mxc_radical_inverse(param_30, param_31);
+        float _560 = mxc_radical_inverse(param_30, param_31);
         uint param_32 = index;
         uint param_33 = 7u;
-        float _560 = mxc_radical_inverse(param_32, param_33);
-        float4 choice = frac(float4(_553, _556, _558, _560) + shift);
+        float _562 = mxc_radical_inverse(param_32, param_33);
+        float4 choice = frac(float4(_555, _558, _560, _562) + shift);
         smp.valid = false;
         smp.evaluate = false;
         smp.delta = false;
@@ -2100,58 +2137,58 @@ void frag_main()
         {
             if (above)
             {
-                _297 = smp.wi;
+                _299 = smp.wi;
             }
             else
             {
                 float3 param_37 = -wo;
                 float3 param_38 = smp.wi;
-                _297 = mxc_exit_direction(param_37, param_38);
+                _299 = mxc_exit_direction(param_37, param_38);
             }
-            float3 param_39 = _297;
-            _296 = mxc_environment(param_39);
+            float3 param_39 = _299;
+            _298 = mxc_environment(param_39);
         }
         else
         {
-            _296 = 0.0f.xxx;
+            _298 = 0.0f.xxx;
         }
-        float3 seen = _296;
-        bool _618 = (b < n) && smp.valid;
-        bool _624;
-        if (_618)
+        float3 seen = _298;
+        bool _620 = (b < n) && smp.valid;
+        bool _626;
+        if (_620)
         {
-            _624 = !smp.evaluate;
+            _626 = !smp.evaluate;
         }
         else
         {
-            _624 = _618;
+            _626 = _620;
         }
-        if (_624)
+        if (_626)
         {
-            bool _629 = image && above;
-            bool _635;
-            if (_629)
+            bool _631 = image && above;
+            bool _637;
+            if (_631)
             {
-                _635 = !smp.delta;
+                _637 = !smp.delta;
             }
             else
             {
-                _635 = _629;
+                _637 = _631;
             }
-            if (_635)
+            if (_637)
             {
                 float3 param_40 = smp.wi;
                 float param_41 = mxc_view_environment.z;
                 float3 param_42 = mxc_env_to_map(param_40, param_41);
                 float param_43 = smp.pdf;
                 float param_44 = mxc_env_pdf(param_42);
-                _302 = mxc_power_heuristic(param_43, param_44);
+                _304 = mxc_power_heuristic(param_43, param_44);
             }
             else
             {
-                _302 = 1.0f;
+                _304 = 1.0f;
             }
-            float w = _302;
+            float w = _304;
             sum += ((smp.weight * w) * seen);
         }
         float3 m = 0.0f.xxx;
@@ -2161,33 +2198,33 @@ void frag_main()
         if (image && (b < n))
         {
             uint param_45 = seed;
-            float _671 = mxc_uniform(param_45);
+            float _673 = mxc_uniform(param_45);
             seed = param_45;
             uint param_46 = seed;
-            float _674 = mxc_uniform(param_46);
+            float _676 = mxc_uniform(param_46);
             seed = param_46;
             uint param_47 = seed;
-            float _677 = mxc_uniform(param_47);
+            float _679 = mxc_uniform(param_47);
             seed = param_47;
-            float4 v = float4(choice.y, _671, _674, _677);
+            float4 v = float4(choice.y, _673, _676, _679);
             float4 param_48 = v;
-            float3 _681 = mxc_env_sample(param_48, param_49);
+            float3 _683 = mxc_env_sample(param_48, param_49);
             lightPdf = param_49;
-            m = _681;
+            m = _683;
             float3 param_50 = m;
             float param_51 = mxc_view_environment.z;
             imageWi = mxc_env_to_world(param_50, param_51);
-            bool _690 = lightPdf > 0.0f;
-            bool _697;
-            if (_690)
+            bool _692 = lightPdf > 0.0f;
+            bool _699;
+            if (_692)
             {
-                _697 = dot(imageWi, N) > 0.0f;
+                _699 = dot(imageWi, N) > 0.0f;
             }
             else
             {
-                _697 = _690;
+                _699 = _692;
             }
-            if (_697)
+            if (_699)
             {
                 float3 param_52 = imageWi;
                 imageSeen = mxc_environment(param_52);
@@ -2200,38 +2237,38 @@ void frag_main()
             bool use = true;
             if ((n == 0) || (j < batchLights))
             {
-                _326 = 0;
+                _328 = 0;
             }
             else
             {
-                _326 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+                _328 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
             }
-            int strategy = _326;
+            int strategy = _328;
             if (strategy == 0)
             {
                 float4 light = mxc_view_lightVector[j];
                 incoming = mxc_view_lightRadiance[j].xyz;
-                bool _742 = kinds == 1;
-                bool _755;
-                if (!_742)
+                bool _744 = kinds == 1;
+                bool _757;
+                if (!_744)
                 {
-                    bool _748 = (kinds & 1) != 0;
-                    bool _754;
-                    if (_748)
+                    bool _750 = (kinds & 1) != 0;
+                    bool _756;
+                    if (_750)
                     {
-                        _754 = light.w == 0.0f;
+                        _756 = light.w == 0.0f;
                     }
                     else
                     {
-                        _754 = _748;
+                        _756 = _750;
                     }
-                    _755 = _754;
+                    _757 = _756;
                 }
                 else
                 {
-                    _755 = _742;
+                    _757 = _744;
                 }
-                bool directional = _755;
+                bool directional = _757;
                 if (directional)
                 {
                     float3 param_53 = light.xyz;
@@ -2244,17 +2281,17 @@ void frag_main()
                     float d2 = max(dot(d, d), 9.9999999392252902907785028219223e-09f);
                     wi = d * rsqrt(d2);
                     incoming /= d2.xxx;
-                    bool _782 = (kinds & 4) != 0;
-                    bool _788;
-                    if (_782)
+                    bool _784 = (kinds & 4) != 0;
+                    bool _790;
+                    if (_784)
                     {
-                        _788 = light.w == 2.0f;
+                        _790 = light.w == 2.0f;
                     }
                     else
                     {
-                        _788 = _782;
+                        _790 = _784;
                     }
-                    if (_788)
+                    if (_790)
                     {
                         float4 spot = mxc_view_lightSpot[j];
                         incoming *= smoothstep(spot.w, mxc_view_lightRadiance[j].w, dot(-wi, spot.xyz));
@@ -2273,26 +2310,26 @@ void frag_main()
                 {
                     wi = imageWi;
                     incoming = imageSeen;
-                    bool _823 = lightPdf > 0.0f;
-                    bool _830;
-                    if (_823)
+                    bool _825 = lightPdf > 0.0f;
+                    bool _832;
+                    if (_825)
                     {
-                        _830 = dot(imageWi, N) > 0.0f;
+                        _832 = dot(imageWi, N) > 0.0f;
                     }
                     else
                     {
-                        _830 = _823;
+                        _832 = _825;
                     }
-                    use = _830;
+                    use = _832;
                 }
             }
             MxcClosure param_55 = c;
             float3 param_56 = wo;
             float3 param_57 = wi;
             bool param_58 = strategy != 0;
-            float3 _836 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            float3 _838 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
             float pdf = param_59;
-            float3 f = _836;
+            float3 f = _838;
             if (strategy == 0)
             {
                 radiance += (f * incoming);
@@ -2310,13 +2347,13 @@ void frag_main()
                             float3 param_62 = mxc_env_to_map(param_60, param_61);
                             float param_63 = pdf;
                             float param_64 = mxc_env_pdf(param_62);
-                            _342 = mxc_power_heuristic(param_63, param_64);
+                            _344 = mxc_power_heuristic(param_63, param_64);
                         }
                         else
                         {
-                            _342 = 1.0f;
+                            _344 = 1.0f;
                         }
-                        float w_1 = _342;
+                        float w_1 = _344;
                         sum += (((f * w_1) / pdf.xxx) * incoming);
                     }
                 }

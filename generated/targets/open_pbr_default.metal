@@ -77,6 +77,7 @@ struct MxcLobe
     float3 T;
     float2 alpha;
     float eta;
+    float etaAbove;
     float3 c0;
     float3 c1;
     float3 c2;
@@ -151,14 +152,14 @@ struct MxcEnvDistribution
 
 constant int MXC_ENVIRONMENT_tmp [[function_constant(0)]];
 constant int MXC_ENVIRONMENT = is_function_constant_defined(MXC_ENVIRONMENT_tmp) ? MXC_ENVIRONMENT_tmp : -1;
-constant bool _223 = (MXC_ENVIRONMENT != (-1));
+constant bool _225 = (MXC_ENVIRONMENT != (-1));
 constant int MXC_LIGHT_COUNT_tmp [[function_constant(1)]];
 constant int MXC_LIGHT_COUNT = is_function_constant_defined(MXC_LIGHT_COUNT_tmp) ? MXC_LIGHT_COUNT_tmp : -1;
-constant bool _225 = (MXC_LIGHT_COUNT != (-1));
+constant bool _227 = (MXC_LIGHT_COUNT != (-1));
 constant int MXC_LIGHT_KINDS_tmp [[function_constant(2)]];
 constant int MXC_LIGHT_KINDS = is_function_constant_defined(MXC_LIGHT_KINDS_tmp) ? MXC_LIGHT_KINDS_tmp : -1;
-constant bool _227 = (MXC_LIGHT_KINDS != (-1));
-constant int _228 = _227 ? MXC_LIGHT_KINDS : 7;
+constant bool _229 = (MXC_LIGHT_KINDS != (-1));
+constant int _230 = _229 ? MXC_LIGHT_KINDS : 7;
 
 struct main0_out
 {
@@ -180,16 +181,16 @@ static inline __attribute__((always_inline))
 float3 mxc_safe_normalize(thread const float3& v, thread const float3& fallback)
 {
     float l2 = dot(v, v);
-    float3 _957;
+    float3 _959;
     if (l2 > 9.9999996826552253889678874634872e-21)
     {
-        _957 = v * rsqrt(l2);
+        _959 = v * rsqrt(l2);
     }
     else
     {
-        _957 = fallback;
+        _959 = fallback;
     }
-    return _957;
+    return _959;
 }
 
 static inline __attribute__((always_inline))
@@ -245,17 +246,17 @@ bool mxc_index_matched(thread const MxcLobe& l)
 static inline __attribute__((always_inline))
 bool mxc_dielectric_walk_split(thread const MxcLobe& l, thread const float3& wo)
 {
-    bool _2011 = wo.z <= 0.0;
-    bool _2018;
-    if (!_2011)
+    bool _2050 = wo.z <= 0.0;
+    bool _2057;
+    if (!_2050)
     {
-        _2018 = l.eta < 1.0;
+        _2057 = l.eta < 1.0;
     }
     else
     {
-        _2018 = _2011;
+        _2057 = _2050;
     }
-    if (_2018)
+    if (_2057)
     {
         return false;
     }
@@ -289,16 +290,16 @@ float4 mxc_dielectric_table(thread const float& mu, thread const float& alpha, t
 static inline __attribute__((always_inline))
 float mxc_dielectric_albedo(thread const float& mu, thread const float& alpha, thread const float& eta, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
-    float _1588;
+    float _1590;
     if (eta >= 1.0)
     {
-        _1588 = eta;
+        _1590 = eta;
     }
     else
     {
-        _1588 = 1.0 / fast::max(eta, 0.001000000047497451305389404296875);
+        _1590 = 1.0 / fast::max(eta, 0.001000000047497451305389404296875);
     }
-    float e = _1588;
+    float e = _1590;
     float param = mu;
     float param_1 = alpha;
     float param_2 = e;
@@ -339,16 +340,16 @@ float mxc_walk_reflectance(thread const float& mu, thread const float& alpha, th
 static inline __attribute__((always_inline))
 float mxc_lobe_eta(thread const MxcLobe& l, thread const bool& above)
 {
-    float _1716;
+    float _1718;
     if (above)
     {
-        _1716 = l.eta;
+        _1718 = l.eta;
     }
     else
     {
-        _1716 = 1.0 / l.eta;
+        _1718 = 1.0 / l.eta;
     }
-    return _1716;
+    return _1718;
 }
 
 static inline __attribute__((always_inline))
@@ -385,6 +386,26 @@ float2 mxc_split_sum(thread const float& mu, thread const float& alpha, texture2
 }
 
 static inline __attribute__((always_inline))
+float mxc_lobe_cosine_below_coat(thread const MxcLobe& l, thread const float& mu)
+{
+    bool _1743 = l.kind == 1;
+    bool _1749;
+    if (_1743)
+    {
+        _1749 = l.etaAbove > 1.0;
+    }
+    else
+    {
+        _1749 = _1743;
+    }
+    if (_1749)
+    {
+        return sqrt(1.0 - ((1.0 - (mu * mu)) / (l.etaAbove * l.etaAbove)));
+    }
+    return mu;
+}
+
+static inline __attribute__((always_inline))
 float mxc_fresnel_dielectric(thread const float& cosi, thread const float& eta)
 {
     if (abs(eta - 1.0) < 9.9999999747524270787835121154785e-07)
@@ -403,16 +424,22 @@ float mxc_fresnel_dielectric(thread const float& cosi, thread const float& eta)
 }
 
 static inline __attribute__((always_inline))
-float3 mxc_lobe_fresnel(thread const MxcLobe& l, thread const float& _cosh, thread const bool& above)
+float3 mxc_lobe_fresnel(thread const MxcLobe& l, thread float& _cosh, thread const bool& above)
 {
     float3 f = float3(1.0);
-    if (l.kind == 1)
+    if (above)
     {
         MxcLobe param = l;
-        bool param_1 = above;
-        float param_2 = _cosh;
-        float param_3 = mxc_lobe_eta(param, param_1);
-        f = float3(mxc_fresnel_dielectric(param_2, param_3));
+        float param_1 = fast::clamp(_cosh, 0.0, 1.0);
+        _cosh = mxc_lobe_cosine_below_coat(param, param_1);
+    }
+    if (l.kind == 1)
+    {
+        MxcLobe param_2 = l;
+        bool param_3 = above;
+        float param_4 = _cosh;
+        float param_5 = mxc_lobe_eta(param_2, param_3);
+        f = float3(mxc_fresnel_dielectric(param_4, param_5));
     }
     return f;
 }
@@ -420,68 +447,68 @@ float3 mxc_lobe_fresnel(thread const MxcLobe& l, thread const float& _cosh, thre
 static inline __attribute__((always_inline))
 float3 mxc_lobe_ms_scale(thread const MxcLobe& l, thread const float3& wo, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
-    bool _2142 = l.kind == 1;
-    bool _2149;
-    if (!_2142)
+    bool _2181 = l.kind == 1;
+    bool _2188;
+    if (!_2181)
     {
-        _2149 = l.kind == 2;
+        _2188 = l.kind == 2;
     }
     else
     {
-        _2149 = _2142;
+        _2188 = _2181;
     }
-    bool _2156;
-    if (!_2149)
+    bool _2195;
+    if (!_2188)
     {
-        _2156 = l.kind == 3;
+        _2195 = l.kind == 3;
     }
     else
     {
-        _2156 = _2149;
+        _2195 = _2188;
     }
-    bool microfacet = _2156;
-    bool _2158 = !microfacet;
-    bool _2165;
-    if (!_2158)
+    bool microfacet = _2195;
+    bool _2197 = !microfacet;
+    bool _2204;
+    if (!_2197)
     {
         float2 param = l.alpha;
-        _2165 = mxc_is_delta(param);
+        _2204 = mxc_is_delta(param);
     }
     else
     {
-        _2165 = _2158;
+        _2204 = _2197;
     }
-    if (_2165)
+    if (_2204)
     {
         return float3(1.0);
     }
     float alpha = sqrt(l.alpha.x * l.alpha.y);
-    bool _2176 = l.kind == 1;
-    bool _2181;
-    if (_2176)
+    bool _2215 = l.kind == 1;
+    bool _2220;
+    if (_2215)
     {
         MxcLobe param_1 = l;
-        _2181 = mxc_index_matched(param_1);
+        _2220 = mxc_index_matched(param_1);
     }
     else
     {
-        _2181 = _2176;
+        _2220 = _2215;
     }
-    if (_2181)
+    if (_2220)
     {
         return float3(1.0);
     }
-    bool _2186 = l.kind == 1;
-    bool _2193;
-    if (_2186)
+    bool _2225 = l.kind == 1;
+    bool _2232;
+    if (_2225)
     {
-        _2193 = (l.mode & 4) == 0;
+        _2232 = (l.mode & 4) == 0;
     }
     else
     {
-        _2193 = _2186;
+        _2232 = _2225;
     }
-    if (_2193)
+    if (_2232)
     {
         MxcLobe param_2 = l;
         float3 param_3 = wo;
@@ -512,82 +539,88 @@ float3 mxc_lobe_ms_scale(thread const MxcLobe& l, thread const float3& wo, textu
     MxcLobe param_17 = l;
     float param_18 = 1.0;
     bool param_19 = true;
-    return float3(1.0) + ((mxc_lobe_fresnel(param_17, param_18, param_19) * (1.0 - e_1)) / float3(fast::max(e_1, 0.0500000007450580596923828125)));
+    float3 _2283 = mxc_lobe_fresnel(param_17, param_18, param_19);
+    return float3(1.0) + ((_2283 * (1.0 - e_1)) / float3(fast::max(e_1, 0.0500000007450580596923828125)));
 }
 
 static inline __attribute__((always_inline))
 float3 mxc_lobe_albedo_scaled(thread const MxcLobe& l, thread const float3& wo, thread const float3& ms, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
     float mu = fast::clamp(wo.z, 0.0, 1.0);
-    bool _2385 = l.kind == 1;
-    bool _2392;
-    if (!_2385)
+    bool _2426 = l.kind == 1;
+    bool _2433;
+    if (!_2426)
     {
-        _2392 = l.kind == 2;
+        _2433 = l.kind == 2;
     }
     else
     {
-        _2392 = _2385;
+        _2433 = _2426;
     }
-    bool _2399;
-    if (!_2392)
+    bool _2440;
+    if (!_2433)
     {
-        _2399 = l.kind == 3;
+        _2440 = l.kind == 3;
     }
     else
     {
-        _2399 = _2392;
+        _2440 = _2433;
     }
-    if (_2399)
+    if (_2440)
     {
         float alpha = sqrt(l.alpha.x * l.alpha.y);
-        bool _2410 = l.kind == 1;
-        bool _2417;
-        if (_2410)
+        bool _2451 = l.kind == 1;
+        bool _2458;
+        if (_2451)
         {
             float2 param = l.alpha;
-            _2417 = !mxc_is_delta(param);
+            _2458 = !mxc_is_delta(param);
         }
         else
         {
-            _2417 = _2410;
+            _2458 = _2451;
         }
-        if (_2417)
+        if (_2458)
         {
-            float param_1 = mu;
-            float param_2 = alpha;
-            float param_3 = l.eta;
-            float3 e = float3(mxc_dielectric_albedo(param_1, param_2, param_3, mxc_tables, mxc_tablesSmplr));
+            MxcLobe param_1 = l;
+            float param_2 = mu;
+            float param_3 = mxc_lobe_cosine_below_coat(param_1, param_2);
+            float param_4 = alpha;
+            float param_5 = l.eta;
+            float3 e = float3(mxc_dielectric_albedo(param_3, param_4, param_5, mxc_tables, mxc_tablesSmplr));
             return fast::clamp((e * l.c0) * ms, float3(0.0), float3(1.0));
         }
-        float param_4 = mu;
-        float param_5 = alpha;
-        float2 ab = mxc_split_sum(param_4, param_5, mxc_tables, mxc_tablesSmplr);
-        MxcLobe param_6 = l;
-        float param_7 = 1.0;
-        bool param_8 = true;
-        float3 f0 = mxc_lobe_fresnel(param_6, param_7, param_8);
-        MxcLobe param_9 = l;
-        float param_10 = 0.0;
-        bool param_11 = true;
-        float3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
-        float3 _2375;
+        float param_6 = mu;
+        float param_7 = alpha;
+        float2 ab = mxc_split_sum(param_6, param_7, mxc_tables, mxc_tablesSmplr);
+        MxcLobe param_8 = l;
+        float param_9 = 1.0;
+        bool param_10 = true;
+        float3 _2482 = mxc_lobe_fresnel(param_8, param_9, param_10);
+        float3 f0 = _2482;
+        MxcLobe param_11 = l;
+        float param_12 = 0.0;
+        bool param_13 = true;
+        float3 _2484 = mxc_lobe_fresnel(param_11, param_12, param_13);
+        float3 f90 = _2484;
+        float3 _2416;
         if (l.kind == 1)
         {
-            _2375 = l.c0;
+            _2416 = l.c0;
         }
         else
         {
-            _2375 = float3(1.0);
+            _2416 = float3(1.0);
         }
-        float3 tint = _2375;
-        float2 param_12 = l.alpha;
-        if (mxc_is_delta(param_12))
+        float3 tint = _2416;
+        float2 param_14 = l.alpha;
+        if (mxc_is_delta(param_14))
         {
-            MxcLobe param_13 = l;
-            float param_14 = mu;
-            bool param_15 = true;
-            return mxc_lobe_fresnel(param_13, param_14, param_15) * tint;
+            MxcLobe param_15 = l;
+            float param_16 = mu;
+            bool param_17 = true;
+            float3 _2501 = mxc_lobe_fresnel(param_15, param_16, param_17);
+            return _2501 * tint;
         }
         return fast::clamp((((f0 * ab.x) + (f90 * ab.y)) * tint) * ms, float3(0.0), float3(1.0));
     }
@@ -612,17 +645,17 @@ float3 mxc_lobe_albedo(thread const MxcLobe& l, thread const float3& wo, texture
 static inline __attribute__((always_inline))
 float3 mxc_lobe_layer_albedo(thread const MxcLobe& l, thread const float3& wo, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
-    bool _2512 = l.kind == 9;
-    bool _2519;
-    if (!_2512)
+    bool _2555 = l.kind == 9;
+    bool _2562;
+    if (!_2555)
     {
-        _2519 = l.kind == 10;
+        _2562 = l.kind == 10;
     }
     else
     {
-        _2519 = _2512;
+        _2562 = _2555;
     }
-    if (_2519)
+    if (_2562)
     {
         MxcLobe white = l;
         white.c0 = float3(1.0);
@@ -638,48 +671,48 @@ float3 mxc_lobe_layer_albedo(thread const MxcLobe& l, thread const float3& wo, t
 static inline __attribute__((always_inline))
 float mxc_lobe_ms_transmit(thread const MxcLobe& l, thread const float3& wo, thread const float3& ms, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
-    bool _2044 = l.kind != 1;
-    bool _2051;
-    if (!_2044)
+    bool _2083 = l.kind != 1;
+    bool _2090;
+    if (!_2083)
     {
         float2 param = l.alpha;
-        _2051 = mxc_is_delta(param);
+        _2090 = mxc_is_delta(param);
     }
     else
     {
-        _2051 = _2044;
+        _2090 = _2083;
     }
-    bool _2057;
-    if (!_2051)
+    bool _2096;
+    if (!_2090)
     {
         MxcLobe param_1 = l;
-        _2057 = mxc_index_matched(param_1);
+        _2096 = mxc_index_matched(param_1);
     }
     else
     {
-        _2057 = _2051;
+        _2096 = _2090;
     }
-    bool _2065;
-    if (!_2057)
+    bool _2104;
+    if (!_2096)
     {
-        _2065 = (l.mode & 4) != 0;
+        _2104 = (l.mode & 4) != 0;
     }
     else
     {
-        _2065 = _2057;
+        _2104 = _2096;
     }
-    bool _2073;
-    if (!_2065)
+    bool _2112;
+    if (!_2104)
     {
         MxcLobe param_2 = l;
         float3 param_3 = wo;
-        _2073 = !mxc_dielectric_walk_split(param_2, param_3);
+        _2112 = !mxc_dielectric_walk_split(param_2, param_3);
     }
     else
     {
-        _2073 = _2065;
+        _2112 = _2104;
     }
-    if (_2073)
+    if (_2112)
     {
         return ms.x;
     }
@@ -721,18 +754,18 @@ float mxc_lobe_choice(thread const MxcLobe& l, thread const float3& woLocal, thr
 static inline __attribute__((always_inline))
 bool mxc_lobe_ms_shaped(thread const MxcLobe& l, thread const float3& wo)
 {
-    bool _2264 = wo.z <= 0.0;
-    bool _2271;
-    if (!_2264)
+    bool _2303 = wo.z <= 0.0;
+    bool _2310;
+    if (!_2303)
     {
         float2 param = l.alpha;
-        _2271 = mxc_is_delta(param);
+        _2310 = mxc_is_delta(param);
     }
     else
     {
-        _2271 = _2264;
+        _2310 = _2303;
     }
-    if (_2271)
+    if (_2310)
     {
         return false;
     }
@@ -744,47 +777,47 @@ bool mxc_lobe_ms_shaped(thread const MxcLobe& l, thread const float3& wo)
     {
         return (l.mode & 1) != 0;
     }
-    bool _2290 = l.kind == 1;
-    bool _2297;
-    if (_2290)
+    bool _2329 = l.kind == 1;
+    bool _2336;
+    if (_2329)
     {
-        _2297 = (l.mode & 1) != 0;
+        _2336 = (l.mode & 1) != 0;
     }
     else
     {
-        _2297 = _2290;
+        _2336 = _2329;
     }
-    bool _2304;
-    if (_2297)
+    bool _2343;
+    if (_2336)
     {
-        _2304 = (l.mode & 4) == 0;
+        _2343 = (l.mode & 4) == 0;
     }
     else
     {
-        _2304 = _2297;
+        _2343 = _2336;
     }
-    bool _2310;
-    if (_2304)
+    bool _2349;
+    if (_2343)
     {
         MxcLobe param_1 = l;
-        _2310 = !mxc_index_matched(param_1);
+        _2349 = !mxc_index_matched(param_1);
     }
     else
     {
-        _2310 = _2304;
+        _2349 = _2343;
     }
-    bool _2316;
-    if (_2310)
+    bool _2355;
+    if (_2349)
     {
         MxcLobe param_2 = l;
         float3 param_3 = wo;
-        _2316 = mxc_dielectric_walk_split(param_2, param_3);
+        _2355 = mxc_dielectric_walk_split(param_2, param_3);
     }
     else
     {
-        _2316 = _2310;
+        _2355 = _2349;
     }
-    return _2316;
+    return _2355;
 }
 
 static inline __attribute__((always_inline))
@@ -798,16 +831,16 @@ MxcLobe mxc_ms_lobe(thread const MxcLobe& l, thread const bool& transmitted)
 {
     MxcLobe m = l;
     m.alpha = fast::min(l.alpha * (transmitted ? 3.0 : 1.5), float2(1.0));
-    int _2322;
+    int _2361;
     if (transmitted)
     {
-        _2322 = l.mode & (-2);
+        _2361 = l.mode & (-2);
     }
     else
     {
-        _2322 = l.mode & (-3);
+        _2361 = l.mode & (-3);
     }
-    m.mode = _2322;
+    m.mode = _2361;
     if (l.kind == 1)
     {
         m.c0 = float3(1.0);
@@ -820,7 +853,7 @@ static inline __attribute__((always_inline))
 void mxc_closure_prepare(thread MxcClosure& c, thread const float3& wo, texture2d<float> mxc_tables, sampler mxc_tablesSmplr)
 {
     c.choiceTotal = 0.0;
-    float _3080;
+    float _3123;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
@@ -867,18 +900,18 @@ void mxc_closure_prepare(thread MxcClosure& c, thread const float3& wo, texture2
             float3 addedR = fast::max(mxc_lobe_albedo_scaled(param_17, param_18, param_19, mxc_tables, mxc_tablesSmplr) - reflected, float3(0.0));
             float3 transmitted = float3(0.0);
             float3 addedT = float3(0.0);
-            bool _3168 = l.kind == 1;
-            bool _3173;
-            if (_3168)
+            bool _3211 = l.kind == 1;
+            bool _3216;
+            if (_3211)
             {
                 MxcLobe param_20 = l;
-                _3173 = mxc_lobe_transmits(param_20);
+                _3216 = mxc_lobe_transmits(param_20);
             }
             else
             {
-                _3173 = _3168;
+                _3216 = _3211;
             }
-            if (_3173)
+            if (_3216)
             {
                 float param_21 = o.z;
                 float param_22 = alpha;
@@ -898,18 +931,18 @@ void mxc_closure_prepare(thread MxcClosure& c, thread const float3& wo, texture2
             float3 param_31 = float3(1.0);
             float3 broadR = mxc_lobe_albedo_scaled(param_29, param_30, param_31, mxc_tables, mxc_tablesSmplr);
             float broadT = 1.0;
-            bool _3208 = l.kind == 1;
-            bool _3213;
-            if (_3208)
+            bool _3251 = l.kind == 1;
+            bool _3256;
+            if (_3251)
             {
                 MxcLobe param_32 = l;
-                _3213 = mxc_lobe_transmits(param_32);
+                _3256 = mxc_lobe_transmits(param_32);
             }
             else
             {
-                _3213 = _3208;
+                _3256 = _3251;
             }
-            if (_3213)
+            if (_3256)
             {
                 MxcLobe param_33 = l;
                 bool param_34 = true;
@@ -933,13 +966,13 @@ void mxc_closure_prepare(thread MxcClosure& c, thread const float3& wo, texture2
             if (added > 0.0)
             {
                 float3 param_43 = addedR;
-                _3080 = mxc_luminance(param_43) / added;
+                _3123 = mxc_luminance(param_43) / added;
             }
             else
             {
-                _3080 = 1.0;
+                _3123 = 1.0;
             }
-            c.msSplit[k] = _3080;
+            c.msSplit[k] = _3123;
             c.msT[k] = 1.0;
         }
         else
@@ -963,6 +996,7 @@ void mxc_material_closure(thread const MxcGeometry& g, thread const float3& wo, 
     lobe0.T = v6;
     lobe0.alpha = float2(0.0900000035762786865234375);
     lobe0.eta = 1.5;
+    lobe0.etaAbove = 1.0;
     lobe0.c0 = float3(1.0);
     lobe0.c1 = float3(1.0);
     lobe0.c2 = float3(1.0);
@@ -986,6 +1020,7 @@ void mxc_material_closure(thread const MxcGeometry& g, thread const float3& wo, 
     lobe3.T = g.T;
     lobe3.alpha = float2(0.0);
     lobe3.eta = 1.5;
+    lobe3.etaAbove = 1.0;
     lobe3.c0 = float3(0.800000011920928955078125);
     lobe3.c1 = float3(1.0);
     lobe3.c2 = float3(1.0);
@@ -1008,37 +1043,37 @@ void mxc_material_closure(thread const MxcGeometry& g, thread const float3& wo, 
 static inline __attribute__((always_inline))
 int mxc_light_count(constant MxcView& mxc_view)
 {
-    int _4127;
-    if (_225)
+    int _4172;
+    if (_227)
     {
-        _4127 = MXC_LIGHT_COUNT;
+        _4172 = MXC_LIGHT_COUNT;
     }
     else
     {
-        _4127 = mxc_view.counts.x;
+        _4172 = mxc_view.counts.x;
     }
-    return min(_4127, 8);
+    return min(_4172, 8);
 }
 
 static inline __attribute__((always_inline))
 int mxc_light_kinds()
 {
-    return _228;
+    return _230;
 }
 
 static inline __attribute__((always_inline))
 int mxc_environment_code(constant MxcView& mxc_view)
 {
-    int _4119;
-    if (_223)
+    int _4164;
+    if (_225)
     {
-        _4119 = MXC_ENVIRONMENT;
+        _4164 = MXC_ENVIRONMENT;
     }
     else
     {
-        _4119 = mxc_view.counts.y;
+        _4164 = mxc_view.counts.y;
     }
-    return _4119;
+    return _4164;
 }
 
 static inline __attribute__((always_inline))
@@ -1129,37 +1164,37 @@ float mxc_ggx_g2(thread const float3& wo, thread const float3& wi, thread const 
 {
     float3 param = wo;
     float2 param_1 = alpha;
-    float _1261 = mxc_ggx_lambda(param, param_1);
+    float _1263 = mxc_ggx_lambda(param, param_1);
     float3 param_2 = wi;
     float2 param_3 = alpha;
-    float _1265 = mxc_ggx_lambda(param_2, param_3);
-    return 1.0 / ((1.0 + _1261) + _1265);
+    float _1267 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0 / ((1.0 + _1263) + _1267);
 }
 
 static inline __attribute__((always_inline))
 float3 mxc_microfacet_reflect(thread const MxcLobe& l, thread const float3& wo, thread const float3& wi)
 {
-    bool _1775 = wo.z <= 0.0;
-    bool _1782;
-    if (!_1775)
+    bool _1814 = wo.z <= 0.0;
+    bool _1821;
+    if (!_1814)
     {
-        _1782 = wi.z <= 0.0;
+        _1821 = wi.z <= 0.0;
     }
     else
     {
-        _1782 = _1775;
+        _1821 = _1814;
     }
-    bool _1789;
-    if (!_1782)
+    bool _1828;
+    if (!_1821)
     {
         float2 param = l.alpha;
-        _1789 = mxc_is_delta(param);
+        _1828 = mxc_is_delta(param);
     }
     else
     {
-        _1789 = _1782;
+        _1828 = _1821;
     }
-    if (_1789)
+    if (_1828)
     {
         return float3(0.0);
     }
@@ -1167,18 +1202,19 @@ float3 mxc_microfacet_reflect(thread const MxcLobe& l, thread const float3& wo, 
     MxcLobe param_1 = l;
     float param_2 = fast::max(dot(wo, h), 0.0);
     bool param_3 = true;
-    float3 f = mxc_lobe_fresnel(param_1, param_2, param_3);
+    float3 _1840 = mxc_lobe_fresnel(param_1, param_2, param_3);
+    float3 f = _1840;
     if (l.kind == 1)
     {
         f *= l.c0;
     }
     float3 param_4 = h;
     float2 param_5 = l.alpha;
-    float _1815 = mxc_ggx_d(param_4, param_5);
+    float _1854 = mxc_ggx_d(param_4, param_5);
     float3 param_6 = wo;
     float3 param_7 = wi;
     float2 param_8 = l.alpha;
-    return ((f * _1815) * mxc_ggx_g2(param_6, param_7, param_8)) / float3(4.0 * wo.z);
+    return ((f * _1854) * mxc_ggx_g2(param_6, param_7, param_8)) / float3(4.0 * wo.z);
 }
 
 static inline __attribute__((always_inline))
@@ -1186,16 +1222,16 @@ float mxc_fon(thread const float& sigma, thread const float3& wo, thread const f
 {
     float a = 1.0 / (1.0 + (0.2877933979034423828125 * sigma));
     float s = dot(wi, wo) - (wi.z * wo.z);
-    float _1836;
+    float _1875;
     if (s > 0.0)
     {
-        _1836 = fast::max(fast::max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
+        _1875 = fast::max(fast::max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
     }
     else
     {
-        _1836 = 1.0;
+        _1875 = 1.0;
     }
-    float t = _1836;
+    float t = _1875;
     return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375;
 }
 
@@ -1207,16 +1243,16 @@ float mxc_fon_albedo(thread const float& sigma, thread const float& mu)
     float param = 1.0 - (c * c);
     float s = mxc_safe_sqrt(param);
     float theta = acos(c);
-    float _1882;
+    float _1921;
     if (c > 9.9999997473787516355514526367188e-05)
     {
-        _1882 = (1.0 - ((s * s) * s)) / c;
+        _1921 = (1.0 - ((s * s) * s)) / c;
     }
     else
     {
-        _1882 = 1.5 * c;
+        _1921 = 1.5 * c;
     }
-    float tail = _1882;
+    float tail = _1921;
     float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875 * s) * tail)) - (0.666666686534881591796875 * s);
     return a + (((sigma * a) * g) * 0.3183098733425140380859375);
 }
@@ -1275,17 +1311,17 @@ float3 mxc_lobe_eval(thread const MxcLobe& l, thread const float3& wo, thread co
         case 2:
         case 3:
         {
-            bool _2594 = l.kind == 3;
-            bool _2601;
-            if (_2594)
+            bool _2637 = l.kind == 3;
+            bool _2644;
+            if (_2637)
             {
-                _2601 = (l.mode & 1) == 0;
+                _2644 = (l.mode & 1) == 0;
             }
             else
             {
-                _2601 = _2594;
+                _2644 = _2637;
             }
-            if (_2601)
+            if (_2644)
             {
                 return float3(0.0);
             }
@@ -1296,30 +1332,30 @@ float3 mxc_lobe_eval(thread const MxcLobe& l, thread const float3& wo, thread co
         }
         case 5:
         {
-            bool _2610 = wo.z > 0.0;
-            bool _2616;
-            if (_2610)
+            bool _2653 = wo.z > 0.0;
+            bool _2659;
+            if (_2653)
             {
-                _2616 = wi.z > 0.0;
+                _2659 = wi.z > 0.0;
             }
             else
             {
-                _2616 = _2610;
+                _2659 = _2653;
             }
-            float3 _2545;
-            if (_2616)
+            float3 _2588;
+            if (_2659)
             {
                 float3 param_9 = l.c0;
                 float param_10 = l.p0;
                 float3 param_11 = wo;
                 float3 param_12 = wi;
-                _2545 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
+                _2588 = mxc_eon(param_9, param_10, param_11, param_12) * wi.z;
             }
             else
             {
-                _2545 = float3(0.0);
+                _2588 = float3(0.0);
             }
-            return _2545;
+            return _2588;
         }
         default:
         {
@@ -1333,8 +1369,8 @@ float mxc_ggx_g1(thread const float3& v, thread const float2& alpha)
 {
     float3 param = v;
     float2 param_1 = alpha;
-    float _1247 = mxc_ggx_lambda(param, param_1);
-    return 1.0 / (1.0 + _1247);
+    float _1249 = mxc_ggx_lambda(param, param_1);
+    return 1.0 / (1.0 + _1249);
 }
 
 static inline __attribute__((always_inline))
@@ -1348,8 +1384,8 @@ float mxc_ggx_pdf_vndf(thread const float3& wo, thread const float3& m, thread c
     float2 param_1 = alpha;
     float3 param_2 = m;
     float2 param_3 = alpha;
-    float _1420 = mxc_ggx_d(param_2, param_3);
-    return ((mxc_ggx_g1(param, param_1) * fast::max(dot(wo, m), 0.0)) * _1420) / wo.z;
+    float _1422 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * fast::max(dot(wo, m), 0.0)) * _1422) / wo.z;
 }
 
 static inline __attribute__((always_inline))
@@ -1373,26 +1409,26 @@ float mxc_lobe_pdf(thread const MxcLobe& l, thread const float3& wo, thread cons
                 return 0.0;
             }
             bool above = wo.z > 0.0;
-            float3 _2639;
+            float3 _2682;
             if (above)
             {
-                _2639 = wo;
+                _2682 = wo;
             }
             else
             {
-                _2639 = -wo;
+                _2682 = -wo;
             }
-            float3 o = _2639;
-            float3 _2641;
+            float3 o = _2682;
+            float3 _2684;
             if (above)
             {
-                _2641 = wi;
+                _2684 = wi;
             }
             else
             {
-                _2641 = -wi;
+                _2684 = -wi;
             }
-            float3 i = _2641;
+            float3 i = _2684;
             if (i.z > 0.0)
             {
                 float3 h = fast::normalize(o + i);
@@ -1411,45 +1447,46 @@ float mxc_lobe_pdf(thread const MxcLobe& l, thread const float3& wo, thread cons
                 MxcLobe param_4 = l;
                 float param_5 = fast::max(dot(o, h), 0.0);
                 bool param_6 = above;
-                float3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
+                float3 _2780 = mxc_lobe_fresnel(param_4, param_5, param_6);
+                float3 param_7 = _2780;
                 float fr = mxc_mean(param_7);
                 MxcLobe param_8 = l;
-                bool _2741 = mxc_lobe_transmits(param_8);
-                bool _2748;
-                if (_2741)
+                bool _2784 = mxc_lobe_transmits(param_8);
+                bool _2791;
+                if (_2784)
                 {
-                    _2748 = (l.mode & 1) != 0;
+                    _2791 = (l.mode & 1) != 0;
                 }
                 else
                 {
-                    _2748 = _2741;
+                    _2791 = _2784;
                 }
-                return p * (_2748 ? fr : 1.0);
+                return p * (_2791 ? fr : 1.0);
             }
             return 0.0;
         }
         default:
         {
-            bool _2661 = wo.z > 0.0;
-            bool _2667;
-            if (_2661)
+            bool _2704 = wo.z > 0.0;
+            bool _2710;
+            if (_2704)
             {
-                _2667 = wi.z > 0.0;
+                _2710 = wi.z > 0.0;
             }
             else
             {
-                _2667 = _2661;
+                _2710 = _2704;
             }
-            float _2653;
-            if (_2667)
+            float _2696;
+            if (_2710)
             {
-                _2653 = wi.z * 0.3183098733425140380859375;
+                _2696 = wi.z * 0.3183098733425140380859375;
             }
             else
             {
-                _2653 = 0.0;
+                _2696 = 0.0;
             }
-            return _2653;
+            return _2696;
         }
     }
 }
@@ -1461,16 +1498,16 @@ float3 mxc_ggx_sample_vndf(thread const float3& wo, thread float2& alpha, thread
     alpha = mxc_rough_alpha(param);
     float3 vh = fast::normalize(float3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lensq = (vh.x * vh.x) + (vh.y * vh.y);
-    float3 _1277;
+    float3 _1279;
     if (lensq > 0.0)
     {
-        _1277 = float3(-vh.y, vh.x, 0.0) * rsqrt(lensq);
+        _1279 = float3(-vh.y, vh.x, 0.0) * rsqrt(lensq);
     }
     else
     {
-        _1277 = float3(1.0, 0.0, 0.0);
+        _1279 = float3(1.0, 0.0, 0.0);
     }
-    float3 t1 = _1277;
+    float3 t1 = _1279;
     float3 t2 = cross(vh, t1);
     float r = sqrt(u.x);
     float phi = 6.283185482025146484375 * u.y;
@@ -1500,94 +1537,95 @@ MxcLobeSample mxc_lobe_sample(thread const MxcLobe& l, thread const float3& wo, 
         case 3:
         {
             bool above = wo.z > 0.0;
-            float3 _2760;
+            float3 _2803;
             if (above)
             {
-                _2760 = wo;
+                _2803 = wo;
             }
             else
             {
-                _2760 = -wo;
+                _2803 = -wo;
             }
-            float3 o = _2760;
+            float3 o = _2803;
             if (o.z <= 0.0)
             {
                 return s;
             }
             float2 param = l.alpha;
             bool delta = mxc_is_delta(param);
-            float3 _2764;
+            float3 _2807;
             if (delta)
             {
-                _2764 = float3(0.0, 0.0, 1.0);
+                _2807 = float3(0.0, 0.0, 1.0);
             }
             else
             {
                 float3 param_1 = o;
                 float2 param_2 = l.alpha;
                 float2 param_3 = u.xy;
-                float3 _2865 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
-                _2764 = _2865;
+                float3 _2908 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2807 = _2908;
             }
-            float3 m = _2764;
+            float3 m = _2807;
             float hm = dot(o, m);
-            bool _2872 = l.kind == 1;
-            bool _2879;
-            if (!_2872)
+            bool _2915 = l.kind == 1;
+            bool _2922;
+            if (!_2915)
             {
-                _2879 = l.kind == 3;
+                _2922 = l.kind == 3;
             }
             else
             {
-                _2879 = _2872;
+                _2922 = _2915;
             }
-            bool _2884;
-            if (_2879)
+            bool _2927;
+            if (_2922)
             {
                 MxcLobe param_4 = l;
-                _2884 = mxc_lobe_transmits(param_4);
+                _2927 = mxc_lobe_transmits(param_4);
             }
             else
             {
-                _2884 = _2879;
+                _2927 = _2922;
             }
-            bool transmits = _2884;
-            bool _2887 = l.kind == 2;
-            bool _2895;
-            if (!_2887)
+            bool transmits = _2927;
+            bool _2930 = l.kind == 2;
+            bool _2938;
+            if (!_2930)
             {
-                _2895 = (l.mode & 1) != 0;
+                _2938 = (l.mode & 1) != 0;
             }
             else
             {
-                _2895 = _2887;
+                _2938 = _2930;
             }
-            bool reflects = _2895;
+            bool reflects = _2938;
             MxcLobe param_5 = l;
             float param_6 = fast::max(hm, 0.0);
             bool param_7 = above;
-            float3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
-            float _2777;
+            float3 _2943 = mxc_lobe_fresnel(param_5, param_6, param_7);
+            float3 f = _2943;
+            float _2820;
             if (transmits)
             {
                 float3 param_8 = f;
-                _2777 = mxc_mean(param_8);
+                _2820 = mxc_mean(param_8);
             }
             else
             {
-                _2777 = 1.0;
+                _2820 = 1.0;
             }
-            float fr = _2777;
-            float _2780;
+            float fr = _2820;
+            float _2823;
             if (transmits)
             {
-                _2780 = reflects ? fr : 0.0;
+                _2823 = reflects ? fr : 0.0;
             }
             else
             {
-                _2780 = 1.0;
+                _2823 = 1.0;
             }
-            float pReflect = _2780;
+            float pReflect = _2823;
             if (u.z < pReflect)
             {
                 float3 i = reflect(-o, m);
@@ -1595,38 +1633,38 @@ MxcLobeSample mxc_lobe_sample(thread const MxcLobe& l, thread const float3& wo, 
                 {
                     return s;
                 }
-                float3 _2782;
+                float3 _2825;
                 if (above)
                 {
-                    _2782 = i;
+                    _2825 = i;
                 }
                 else
                 {
-                    _2782 = -i;
+                    _2825 = -i;
                 }
-                s.wi = _2782;
+                s.wi = _2825;
                 s.delta = short(delta);
                 if (delta)
                 {
-                    float3 _2784;
+                    float3 _2827;
                     if (l.kind == 1)
                     {
-                        float3 _2785;
+                        float3 _2828;
                         if (above)
                         {
-                            _2785 = l.c0;
+                            _2828 = l.c0;
                         }
                         else
                         {
-                            _2785 = float3(1.0);
+                            _2828 = float3(1.0);
                         }
-                        _2784 = _2785;
+                        _2827 = _2828;
                     }
                     else
                     {
-                        _2784 = float3(1.0);
+                        _2827 = float3(1.0);
                     }
-                    float3 tint = _2784;
+                    float3 tint = _2827;
                     s.value = f * tint;
                     s.pdf = pReflect;
                 }
@@ -1744,33 +1782,33 @@ MxcSample mxc_closure_sample_direction(thread const MxcClosure& c, thread const 
         float v = uz / q;
         float split = c.msSplit[chosen];
         reflected = v < split;
-        float _3534;
+        float _3577;
         if (reflected)
         {
-            _3534 = v / fast::max(split, 9.9999999747524270787835121154785e-07);
+            _3577 = v / fast::max(split, 9.9999999747524270787835121154785e-07);
         }
         else
         {
-            _3534 = (v - split) / fast::max(1.0 - split, 9.9999999747524270787835121154785e-07);
+            _3577 = (v - split) / fast::max(1.0 - split, 9.9999999747524270787835121154785e-07);
         }
-        uz = _3534;
+        uz = _3577;
     }
     else
     {
         uz = (uz - q) / (1.0 - q);
     }
-    MxcLobe _3536;
+    MxcLobe _3579;
     if (shaped)
     {
         MxcLobe param_4 = l;
         bool param_5 = !reflected;
-        _3536 = mxc_ms_lobe(param_4, param_5);
+        _3579 = mxc_ms_lobe(param_4, param_5);
     }
     else
     {
-        _3536 = l;
+        _3579 = l;
     }
-    MxcLobe m = _3536;
+    MxcLobe m = _3579;
     MxcLobe param_6 = m;
     float3 param_7 = o;
     float3 param_8 = float3(u.xy, fast::min(uz, 0.999999940395355224609375));
@@ -1836,16 +1874,16 @@ float3 mxc_env_to_map(thread const float3& w, thread const float& angle)
 static inline __attribute__((always_inline))
 float2 mxc_env_uv(thread const float3& d)
 {
-    float _3829;
+    float _3874;
     if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13)
     {
-        _3829 = 0.5 + (precise::atan2(d.x, -d.z) * 0.15915493667125701904296875);
+        _3874 = 0.5 + (precise::atan2(d.x, -d.z) * 0.15915493667125701904296875);
     }
     else
     {
-        _3829 = 0.5;
+        _3874 = 0.5;
     }
-    float u = _3829;
+    float u = _3874;
     float v = precise::atan2(length(d.xz), d.y) * 0.3183098733425140380859375;
     return float2(u, v);
 }
@@ -1881,21 +1919,21 @@ float3 mxc_environment(thread const float3& d, constant MxcView& mxc_view, textu
 }
 
 static inline __attribute__((always_inline))
-uint mxc_env_cell(thread const float3& d, const device MxcEnvDistribution& v_206)
+uint mxc_env_cell(thread const float3& d, const device MxcEnvDistribution& v_208)
 {
     float3 param = d;
     float2 uv = mxc_env_uv(param);
-    uint2 size = max(v_206.mxc_env_size.xy, uint2(1u));
+    uint2 size = max(v_208.mxc_env_size.xy, uint2(1u));
     uint i = min(uint(fast::max(uv.x, 0.0) * float(size.x)), (size.x - 1u));
     uint j = min(uint(fast::max(uv.y, 0.0) * float(size.y)), (size.y - 1u));
     return (j * size.x) + i;
 }
 
 static inline __attribute__((always_inline))
-float mxc_env_pdf(thread const float3& d, const device MxcEnvDistribution& v_206)
+float mxc_env_pdf(thread const float3& d, const device MxcEnvDistribution& v_208)
 {
     float3 param = d;
-    return ((device float*)&v_206.mxc_env_cells[mxc_env_cell(param, v_206)])[2u];
+    return ((device float*)&v_208.mxc_env_cells[mxc_env_cell(param, v_208)])[2u];
 }
 
 static inline __attribute__((always_inline))
@@ -1903,30 +1941,30 @@ float mxc_power_heuristic(thread const float& a, thread const float& b)
 {
     float a2 = a * a;
     float b2 = b * b;
-    float _4219;
+    float _4264;
     if ((a2 + b2) > 0.0)
     {
-        _4219 = a2 / (a2 + b2);
+        _4264 = a2 / (a2 + b2);
     }
     else
     {
-        _4219 = 0.0;
+        _4264 = 0.0;
     }
-    return _4219;
+    return _4264;
 }
 
 static inline __attribute__((always_inline))
-float3 mxc_env_sample(thread const float4& u, thread float& pdf, const device MxcEnvDistribution& v_206)
+float3 mxc_env_sample(thread const float4& u, thread float& pdf, const device MxcEnvDistribution& v_208)
 {
-    uint2 size = max(v_206.mxc_env_size.xy, uint2(1u));
+    uint2 size = max(v_208.mxc_env_size.xy, uint2(1u));
     uint n = size.x * size.y;
     uint k = min(uint(u.x * float(n)), (n - 1u));
-    float4 cell = v_206.mxc_env_cells[k];
+    float4 cell = v_208.mxc_env_cells[k];
     if (u.y >= cell.x)
     {
         k = min(as_type<uint>(cell.y), (n - 1u));
     }
-    pdf = ((device float*)&v_206.mxc_env_cells[k])[2u];
+    pdf = ((device float*)&v_208.mxc_env_cells[k])[2u];
     uint i = k % size.x;
     uint j = k / size.x;
     float phi = 6.283185482025146484375 * (((float(i) + u.z) / float(size.x)) - 0.5);
@@ -1951,12 +1989,12 @@ float3 mxc_closure_eval_pdf(thread const MxcClosure& c, thread const float3& wo,
 {
     float3 f = float3(0.0);
     float p = 0.0;
-    MxcLobe _3314;
-    float3 _3318;
-    float3 _3319;
-    float3 _3320;
-    float _3325;
-    float _3326;
+    MxcLobe _3357;
+    float3 _3361;
+    float3 _3362;
+    float3 _3363;
+    float _3368;
+    float _3369;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
@@ -1983,38 +2021,38 @@ float3 mxc_closure_eval_pdf(thread const MxcClosure& c, thread const float3& wo,
             {
                 MxcLobe param_6 = l;
                 bool param_7 = i.z < 0.0;
-                _3314 = mxc_ms_lobe(param_6, param_7);
+                _3357 = mxc_ms_lobe(param_6, param_7);
             }
             else
             {
-                _3314 = l;
+                _3357 = l;
             }
-            MxcLobe m = _3314;
+            MxcLobe m = _3357;
             if (shaped)
             {
                 if (i.z > 0.0)
                 {
-                    _3319 = c.msLobe[k];
+                    _3362 = c.msLobe[k];
                 }
                 else
                 {
-                    _3319 = c.msLobeT[k];
+                    _3362 = c.msLobeT[k];
                 }
-                _3318 = _3319;
+                _3361 = _3362;
             }
             else
             {
                 if ((o.z * i.z) < 0.0)
                 {
-                    _3320 = float3(c.msT[k]);
+                    _3363 = float3(c.msT[k]);
                 }
                 else
                 {
-                    _3320 = c.ms[k];
+                    _3363 = c.ms[k];
                 }
-                _3318 = _3320;
+                _3361 = _3363;
             }
-            float3 scale = _3318;
+            float3 scale = _3361;
             MxcLobe param_8 = m;
             float3 param_9 = o;
             float3 param_10 = i;
@@ -2025,19 +2063,19 @@ float3 mxc_closure_eval_pdf(thread const MxcClosure& c, thread const float3& wo,
                 {
                     if (i.z > 0.0)
                     {
-                        _3326 = c.msSplit[k];
+                        _3369 = c.msSplit[k];
                     }
                     else
                     {
-                        _3326 = 1.0 - c.msSplit[k];
+                        _3369 = 1.0 - c.msSplit[k];
                     }
-                    _3325 = c.msPick[k] * _3326;
+                    _3368 = c.msPick[k] * _3369;
                 }
                 else
                 {
-                    _3325 = 1.0 - c.msPick[k];
+                    _3368 = 1.0 - c.msPick[k];
                 }
-                float share = _3325;
+                float share = _3368;
                 MxcLobe param_11 = m;
                 float3 param_12 = o;
                 float3 param_13 = i;
@@ -2052,20 +2090,20 @@ float3 mxc_closure_eval_pdf(thread const MxcClosure& c, thread const float3& wo,
             p += (c.choice[k] * pk);
         }
     }
-    float _3332;
+    float _3375;
     if (c.choiceTotal > 0.0)
     {
-        _3332 = p / c.choiceTotal;
+        _3375 = p / c.choiceTotal;
     }
     else
     {
-        _3332 = 0.0;
+        _3375 = 0.0;
     }
-    pdf = _3332;
+    pdf = _3375;
     return f;
 }
 
-fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[buffer(0)]], const device MxcParameters& mxc_params [[buffer(1)]], const device MxcEnvDistribution& v_206 [[buffer(2)]], texture2d<float> mxc_tables [[texture(0)]], texture2d<float> mxc_env_radiance [[texture(1)]], sampler mxc_tablesSmplr [[sampler(0)]], sampler mxc_env_radianceSmplr [[sampler(1)]], bool gl_FrontFacing [[front_facing]], float4 gl_FragCoord [[position]])
+fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[buffer(0)]], const device MxcParameters& mxc_params [[buffer(1)]], const device MxcEnvDistribution& v_208 [[buffer(2)]], texture2d<float> mxc_tables [[texture(0)]], texture2d<float> mxc_env_radiance [[texture(1)]], sampler mxc_tablesSmplr [[sampler(0)]], sampler mxc_env_radianceSmplr [[sampler(1)]], bool gl_FrontFacing [[front_facing]], float4 gl_FragCoord [[position]])
 {
     main0_out out = {};
     MxcGeometry g;
@@ -2120,16 +2158,16 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
     int lights = mxc_light_count(mxc_view);
     int kinds = mxc_light_kinds();
     bool image = mxc_environment_code(mxc_view) == 3;
-    int _262;
+    int _264;
     if (mxc_environment_code(mxc_view) != 0)
     {
-        _262 = max(mxc_view.counts.w, 1);
+        _264 = max(mxc_view.counts.w, 1);
     }
     else
     {
-        _262 = 0;
+        _264 = 0;
     }
-    int n = _262;
+    int n = _264;
     uint param_17 = uint(mxc_view.counts.z);
     uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
     uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
@@ -2138,54 +2176,54 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
     uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
     uint pixel = mxc_pcg(param_21);
     uint param_22 = pixel;
-    float _503 = mxc_uniform(param_22);
+    float _505 = mxc_uniform(param_22);
     pixel = param_22;
     uint param_23 = pixel;
-    float _507 = mxc_uniform(param_23);
+    float _509 = mxc_uniform(param_23);
     pixel = param_23;
     uint param_24 = pixel;
-    float _510 = mxc_uniform(param_24);
+    float _512 = mxc_uniform(param_24);
     pixel = param_24;
     uint param_25 = pixel;
-    float _513 = mxc_uniform(param_25);
+    float _515 = mxc_uniform(param_25);
     pixel = param_25;
-    float4 shift = float4(_503, _507, _510, _513);
+    float4 shift = float4(_505, _509, _512, _515);
     float3 sum = float3(0.0);
-    int _279;
+    int _281;
     MxcSample smp;
-    float3 _296;
-    float3 _297;
-    float _302;
+    float3 _298;
+    float3 _299;
+    float _304;
     float param_49;
-    int _326;
+    int _328;
     float param_59;
-    float _342;
+    float _344;
     for (int b = 0; b < max(n, int(lights > 0)); b++)
     {
         int batchLights = (b == 0) ? lights : 0;
         if (b < n)
         {
-            _279 = 1 + int(image);
+            _281 = 1 + int(image);
         }
         else
         {
-            _279 = 0;
+            _281 = 0;
         }
-        int batchSamples = _279;
+        int batchSamples = _281;
         uint index = (uint(mxc_view.counts.z) * uint(max(n, 1))) + uint(b);
         uint param_26 = index;
         uint param_27 = 2u;
-        float _553 = mxc_radical_inverse(param_26, param_27);
+        float _555 = mxc_radical_inverse(param_26, param_27);
         uint param_28 = index;
         uint param_29 = 3u;
-        float _556 = mxc_radical_inverse(param_28, param_29);
+        float _558 = mxc_radical_inverse(param_28, param_29);
         uint param_30 = index;
         uint param_31 = 5u;
-        float _558 = mxc_radical_inverse(param_30, param_31);
+        float _560 = mxc_radical_inverse(param_30, param_31);
         uint param_32 = index;
         uint param_33 = 7u;
-        float _560 = mxc_radical_inverse(param_32, param_33);
-        float4 choice = fract(float4(_553, _556, _558, _560) + shift);
+        float _562 = mxc_radical_inverse(param_32, param_33);
+        float4 choice = fract(float4(_555, _558, _560, _562) + shift);
         smp.valid = short(false);
         smp.evaluate = short(false);
         smp.delta = short(false);
@@ -2204,58 +2242,58 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
         {
             if (above)
             {
-                _297 = smp.wi;
+                _299 = smp.wi;
             }
             else
             {
                 float3 param_37 = -wo;
                 float3 param_38 = smp.wi;
-                _297 = mxc_exit_direction(param_37, param_38);
+                _299 = mxc_exit_direction(param_37, param_38);
             }
-            float3 param_39 = _297;
-            _296 = mxc_environment(param_39, mxc_view, mxc_env_radiance, mxc_env_radianceSmplr);
+            float3 param_39 = _299;
+            _298 = mxc_environment(param_39, mxc_view, mxc_env_radiance, mxc_env_radianceSmplr);
         }
         else
         {
-            _296 = float3(0.0);
+            _298 = float3(0.0);
         }
-        float3 seen = _296;
-        bool _618 = (b < n) && bool(smp.valid);
-        bool _624;
-        if (_618)
+        float3 seen = _298;
+        bool _620 = (b < n) && bool(smp.valid);
+        bool _626;
+        if (_620)
         {
-            _624 = !bool(smp.evaluate);
+            _626 = !bool(smp.evaluate);
         }
         else
         {
-            _624 = _618;
+            _626 = _620;
         }
-        if (_624)
+        if (_626)
         {
-            bool _629 = image && above;
-            bool _635;
-            if (_629)
+            bool _631 = image && above;
+            bool _637;
+            if (_631)
             {
-                _635 = !bool(smp.delta);
+                _637 = !bool(smp.delta);
             }
             else
             {
-                _635 = _629;
+                _637 = _631;
             }
-            if (_635)
+            if (_637)
             {
                 float3 param_40 = smp.wi;
                 float param_41 = mxc_view.environment.z;
                 float3 param_42 = mxc_env_to_map(param_40, param_41);
                 float param_43 = smp.pdf;
-                float param_44 = mxc_env_pdf(param_42, v_206);
-                _302 = mxc_power_heuristic(param_43, param_44);
+                float param_44 = mxc_env_pdf(param_42, v_208);
+                _304 = mxc_power_heuristic(param_43, param_44);
             }
             else
             {
-                _302 = 1.0;
+                _304 = 1.0;
             }
-            float w = _302;
+            float w = _304;
             sum += ((smp.weight * w) * seen);
         }
         float3 m = float3(0.0);
@@ -2265,33 +2303,33 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
         if (image && (b < n))
         {
             uint param_45 = seed;
-            float _671 = mxc_uniform(param_45);
+            float _673 = mxc_uniform(param_45);
             seed = param_45;
             uint param_46 = seed;
-            float _674 = mxc_uniform(param_46);
+            float _676 = mxc_uniform(param_46);
             seed = param_46;
             uint param_47 = seed;
-            float _677 = mxc_uniform(param_47);
+            float _679 = mxc_uniform(param_47);
             seed = param_47;
-            float4 v = float4(choice.y, _671, _674, _677);
+            float4 v = float4(choice.y, _673, _676, _679);
             float4 param_48 = v;
-            float3 _681 = mxc_env_sample(param_48, param_49, v_206);
+            float3 _683 = mxc_env_sample(param_48, param_49, v_208);
             lightPdf = param_49;
-            m = _681;
+            m = _683;
             float3 param_50 = m;
             float param_51 = mxc_view.environment.z;
             imageWi = mxc_env_to_world(param_50, param_51);
-            bool _690 = lightPdf > 0.0;
-            bool _697;
-            if (_690)
+            bool _692 = lightPdf > 0.0;
+            bool _699;
+            if (_692)
             {
-                _697 = dot(imageWi, N) > 0.0;
+                _699 = dot(imageWi, N) > 0.0;
             }
             else
             {
-                _697 = _690;
+                _699 = _692;
             }
-            if (_697)
+            if (_699)
             {
                 float3 param_52 = imageWi;
                 imageSeen = mxc_environment(param_52, mxc_view, mxc_env_radiance, mxc_env_radianceSmplr);
@@ -2304,38 +2342,38 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
             bool use = true;
             if ((n == 0) || (j < batchLights))
             {
-                _326 = 0;
+                _328 = 0;
             }
             else
             {
-                _326 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+                _328 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
             }
-            int strategy = _326;
+            int strategy = _328;
             if (strategy == 0)
             {
                 float4 light = mxc_view.lightVector[j];
                 incoming = mxc_view.lightRadiance[j].xyz;
-                bool _742 = kinds == 1;
-                bool _755;
-                if (!_742)
+                bool _744 = kinds == 1;
+                bool _757;
+                if (!_744)
                 {
-                    bool _748 = (kinds & 1) != 0;
-                    bool _754;
-                    if (_748)
+                    bool _750 = (kinds & 1) != 0;
+                    bool _756;
+                    if (_750)
                     {
-                        _754 = light.w == 0.0;
+                        _756 = light.w == 0.0;
                     }
                     else
                     {
-                        _754 = _748;
+                        _756 = _750;
                     }
-                    _755 = _754;
+                    _757 = _756;
                 }
                 else
                 {
-                    _755 = _742;
+                    _757 = _744;
                 }
-                bool directional = _755;
+                bool directional = _757;
                 if (directional)
                 {
                     float3 param_53 = light.xyz;
@@ -2348,17 +2386,17 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                     float d2 = fast::max(dot(d, d), 9.9999999392252902907785028219223e-09);
                     wi = d * rsqrt(d2);
                     incoming /= float3(d2);
-                    bool _782 = (kinds & 4) != 0;
-                    bool _788;
-                    if (_782)
+                    bool _784 = (kinds & 4) != 0;
+                    bool _790;
+                    if (_784)
                     {
-                        _788 = light.w == 2.0;
+                        _790 = light.w == 2.0;
                     }
                     else
                     {
-                        _788 = _782;
+                        _790 = _784;
                     }
-                    if (_788)
+                    if (_790)
                     {
                         float4 spot = mxc_view.lightSpot[j];
                         incoming *= smoothstep(spot.w, mxc_view.lightRadiance[j].w, dot(-wi, spot.xyz));
@@ -2377,26 +2415,26 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                 {
                     wi = imageWi;
                     incoming = imageSeen;
-                    bool _823 = lightPdf > 0.0;
-                    bool _830;
-                    if (_823)
+                    bool _825 = lightPdf > 0.0;
+                    bool _832;
+                    if (_825)
                     {
-                        _830 = dot(imageWi, N) > 0.0;
+                        _832 = dot(imageWi, N) > 0.0;
                     }
                     else
                     {
-                        _830 = _823;
+                        _832 = _825;
                     }
-                    use = _830;
+                    use = _832;
                 }
             }
             MxcClosure param_55 = c;
             float3 param_56 = wo;
             float3 param_57 = wi;
             bool param_58 = strategy != 0;
-            float3 _836 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            float3 _838 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
             float pdf = param_59;
-            float3 f = _836;
+            float3 f = _838;
             if (strategy == 0)
             {
                 radiance += (f * incoming);
@@ -2413,14 +2451,14 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                             float param_61 = mxc_view.environment.z;
                             float3 param_62 = mxc_env_to_map(param_60, param_61);
                             float param_63 = pdf;
-                            float param_64 = mxc_env_pdf(param_62, v_206);
-                            _342 = mxc_power_heuristic(param_63, param_64);
+                            float param_64 = mxc_env_pdf(param_62, v_208);
+                            _344 = mxc_power_heuristic(param_63, param_64);
                         }
                         else
                         {
-                            _342 = 1.0;
+                            _344 = 1.0;
                         }
-                        float w_1 = _342;
+                        float w_1 = _344;
                         sum += (((f * w_1) / float3(pdf)) * incoming);
                     }
                 }
@@ -2429,7 +2467,7 @@ fragment main0_out main0(main0_in in [[stage_in]], constant MxcView& mxc_view [[
                     if (use)
                     {
                         float3 param_65 = m;
-                        float param_66 = mxc_env_pdf(param_65, v_206);
+                        float param_66 = mxc_env_pdf(param_65, v_208);
                         float param_67 = pdf;
                         float w_2 = mxc_power_heuristic(param_66, param_67);
                         sum += (((f * w_2) * incoming) / float3(lightPdf));

@@ -39,6 +39,7 @@ struct MxcLobe
     vec3 T;
     vec2 alpha;
     float eta;
+    float etaAbove;
     vec3 c0;
     vec3 c1;
     vec3 c2;
@@ -88,18 +89,18 @@ struct MxcLobeSample
 #define SPIRV_CROSS_CONSTANT_ID_0 -1
 #endif
 const int MXC_ENVIRONMENT = SPIRV_CROSS_CONSTANT_ID_0;
-const bool _250 = (MXC_ENVIRONMENT != (-1));
+const bool _252 = (MXC_ENVIRONMENT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_1
 #define SPIRV_CROSS_CONSTANT_ID_1 -1
 #endif
 const int MXC_LIGHT_COUNT = SPIRV_CROSS_CONSTANT_ID_1;
-const bool _252 = (MXC_LIGHT_COUNT != (-1));
+const bool _254 = (MXC_LIGHT_COUNT != (-1));
 #ifndef SPIRV_CROSS_CONSTANT_ID_2
 #define SPIRV_CROSS_CONSTANT_ID_2 -1
 #endif
 const int MXC_LIGHT_KINDS = SPIRV_CROSS_CONSTANT_ID_2;
-const bool _254 = (MXC_LIGHT_KINDS != (-1));
-const int _255 = _254 ? MXC_LIGHT_KINDS : 7;
+const bool _256 = (MXC_LIGHT_KINDS != (-1));
+const int _257 = _256 ? MXC_LIGHT_KINDS : 7;
 
 layout(binding = 0, std140) uniform MxcView
 {
@@ -126,7 +127,7 @@ layout(binding = 1, std430) readonly buffer MxcEnvDistribution
 {
     uvec4 mxc_env_size;
     vec4 mxc_env_cells[];
-} _233;
+} _235;
 
 layout(binding = 0) uniform sampler2D mxc_tables;
 layout(binding = 1) uniform sampler2D mxc_texture_0;
@@ -150,16 +151,16 @@ float mxc_texture_footprint;
 vec3 mxc_safe_normalize(vec3 v, vec3 fallback)
 {
     float l2 = dot(v, v);
-    vec3 _991;
+    vec3 _993;
     if (l2 > 9.9999996826552253889678874634872e-21)
     {
-        _991 = v * inversesqrt(l2);
+        _993 = v * inversesqrt(l2);
     }
     else
     {
-        _991 = fallback;
+        _993 = fallback;
     }
-    return _991;
+    return _993;
 }
 
 mat3 mxc_frame(vec3 N, vec3 T)
@@ -226,23 +227,23 @@ vec4 mxc_sample_image(sampler2D image, vec2 uv, vec4 fallback, int uaddress, int
     }
     float param = st.x;
     int param_1 = uaddress;
-    bool _1653 = mxc_address(param, param_1);
+    bool _1655 = mxc_address(param, param_1);
     st.x = param;
-    bool _1656 = !_1653;
-    bool _1667;
-    if (!_1656)
+    bool _1658 = !_1655;
+    bool _1669;
+    if (!_1658)
     {
         float param_2 = st.y;
         int param_3 = vaddress;
-        bool _1663 = mxc_address(param_2, param_3);
+        bool _1665 = mxc_address(param_2, param_3);
         st.y = param_2;
-        _1667 = !_1663;
+        _1669 = !_1665;
     }
     else
     {
-        _1667 = _1656;
+        _1669 = _1658;
     }
-    if (_1667)
+    if (_1669)
     {
         return fallback;
     }
@@ -264,10 +265,10 @@ vec3 mxc_hsv_to_rgb(vec3 hsv)
 vec3 mxc_normalmap(vec3 sampleValue, vec2 scale, vec3 N, vec3 T, vec3 B)
 {
     vec3 v = (sampleValue * 2.0) - vec3(1.0);
-    vec3 _1559 = v;
-    vec2 _1561 = _1559.xy * scale;
-    v.x = _1561.x;
-    v.y = _1561.y;
+    vec3 _1561 = v;
+    vec2 _1563 = _1561.xy * scale;
+    v.x = _1563.x;
+    v.y = _1563.y;
     vec3 param = ((T * v.x) + (B * v.y)) + (N * v.z);
     vec3 param_1 = N;
     return mxc_safe_normalize(param, param_1);
@@ -290,17 +291,17 @@ bool mxc_index_matched(MxcLobe l)
 
 bool mxc_dielectric_walk_split(MxcLobe l, vec3 wo)
 {
-    bool _2160 = wo.z <= 0.0;
-    bool _2167;
-    if (!_2160)
+    bool _2199 = wo.z <= 0.0;
+    bool _2206;
+    if (!_2199)
     {
-        _2167 = l.eta < 1.0;
+        _2206 = l.eta < 1.0;
     }
     else
     {
-        _2167 = _2160;
+        _2206 = _2199;
     }
-    if (_2167)
+    if (_2206)
     {
         return false;
     }
@@ -331,16 +332,16 @@ vec4 mxc_dielectric_table(float mu, float alpha, float e)
 
 float mxc_dielectric_albedo(float mu, float alpha, float eta)
 {
-    float _1806;
+    float _1808;
     if (eta >= 1.0)
     {
-        _1806 = eta;
+        _1808 = eta;
     }
     else
     {
-        _1806 = 1.0 / max(eta, 0.001000000047497451305389404296875);
+        _1808 = 1.0 / max(eta, 0.001000000047497451305389404296875);
     }
-    float e = _1806;
+    float e = _1808;
     float param = mu;
     float param_1 = alpha;
     float param_2 = e;
@@ -377,16 +378,16 @@ float mxc_walk_reflectance(float mu, float alpha, float eta)
 
 float mxc_lobe_eta(MxcLobe l, bool above)
 {
-    float _1934;
+    float _1936;
     if (above)
     {
-        _1934 = l.eta;
+        _1936 = l.eta;
     }
     else
     {
-        _1934 = 1.0 / l.eta;
+        _1936 = 1.0 / l.eta;
     }
-    return _1934;
+    return _1936;
 }
 
 float mxc_dielectric_albedo_rt(float mu, float alpha, float eta)
@@ -419,6 +420,25 @@ vec2 mxc_split_sum(float mu, float alpha)
     return mxc_table(param, param_1).xy;
 }
 
+float mxc_lobe_cosine_below_coat(MxcLobe l, float mu)
+{
+    bool _1961 = l.kind == 1;
+    bool _1967;
+    if (_1961)
+    {
+        _1967 = l.etaAbove > 1.0;
+    }
+    else
+    {
+        _1967 = _1961;
+    }
+    if (_1967)
+    {
+        return sqrt(1.0 - ((1.0 - (mu * mu)) / (l.etaAbove * l.etaAbove)));
+    }
+    return mu;
+}
+
 float mxc_fresnel_dielectric(float cosi, float eta)
 {
     if (abs(eta - 1.0) < 9.9999999747524270787835121154785e-07)
@@ -436,84 +456,90 @@ float mxc_fresnel_dielectric(float cosi, float eta)
     return 0.5 * ((rs * rs) + (rp * rp));
 }
 
-vec3 mxc_lobe_fresnel(MxcLobe l, float _cosh, bool above)
+vec3 mxc_lobe_fresnel(MxcLobe l, inout float _cosh, bool above)
 {
     vec3 f = vec3(1.0);
-    if (l.kind == 1)
+    if (above)
     {
         MxcLobe param = l;
-        bool param_1 = above;
-        float param_2 = _cosh;
-        float param_3 = mxc_lobe_eta(param, param_1);
-        f = vec3(mxc_fresnel_dielectric(param_2, param_3));
+        float param_1 = clamp(_cosh, 0.0, 1.0);
+        _cosh = mxc_lobe_cosine_below_coat(param, param_1);
+    }
+    if (l.kind == 1)
+    {
+        MxcLobe param_2 = l;
+        bool param_3 = above;
+        float param_4 = _cosh;
+        float param_5 = mxc_lobe_eta(param_2, param_3);
+        f = vec3(mxc_fresnel_dielectric(param_4, param_5));
     }
     return f;
 }
 
 vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo)
 {
-    bool _2291 = l.kind == 1;
-    bool _2298;
-    if (!_2291)
+    bool _2330 = l.kind == 1;
+    bool _2337;
+    if (!_2330)
     {
-        _2298 = l.kind == 2;
+        _2337 = l.kind == 2;
     }
     else
     {
-        _2298 = _2291;
+        _2337 = _2330;
     }
-    bool _2305;
-    if (!_2298)
+    bool _2344;
+    if (!_2337)
     {
-        _2305 = l.kind == 3;
+        _2344 = l.kind == 3;
     }
     else
     {
-        _2305 = _2298;
+        _2344 = _2337;
     }
-    bool microfacet = _2305;
-    bool _2307 = !microfacet;
-    bool _2314;
-    if (!_2307)
+    bool microfacet = _2344;
+    bool _2346 = !microfacet;
+    bool _2353;
+    if (!_2346)
     {
         vec2 param = l.alpha;
-        _2314 = mxc_is_delta(param);
+        _2353 = mxc_is_delta(param);
     }
     else
     {
-        _2314 = _2307;
+        _2353 = _2346;
     }
-    if (_2314)
+    if (_2353)
     {
         return vec3(1.0);
     }
     float alpha = sqrt(l.alpha.x * l.alpha.y);
-    bool _2325 = l.kind == 1;
-    bool _2330;
-    if (_2325)
+    bool _2364 = l.kind == 1;
+    bool _2369;
+    if (_2364)
     {
         MxcLobe param_1 = l;
-        _2330 = mxc_index_matched(param_1);
+        _2369 = mxc_index_matched(param_1);
     }
     else
     {
-        _2330 = _2325;
+        _2369 = _2364;
     }
-    if (_2330)
+    if (_2369)
     {
         return vec3(1.0);
     }
-    bool _2335 = l.kind == 1;
-    bool _2342;
-    if (_2335)
+    bool _2374 = l.kind == 1;
+    bool _2381;
+    if (_2374)
     {
-        _2342 = (l.mode & 4) == 0;
+        _2381 = (l.mode & 4) == 0;
     }
     else
     {
-        _2342 = _2335;
+        _2381 = _2374;
     }
-    if (_2342)
+    if (_2381)
     {
         MxcLobe param_2 = l;
         vec3 param_3 = wo;
@@ -544,7 +570,8 @@ vec3 mxc_lobe_ms_scale(MxcLobe l, vec3 wo)
     MxcLobe param_17 = l;
     float param_18 = 1.0;
     bool param_19 = true;
-    return vec3(1.0) + ((mxc_lobe_fresnel(param_17, param_18, param_19) * (1.0 - e_1)) / vec3(max(e_1, 0.0500000007450580596923828125)));
+    vec3 _2432 = mxc_lobe_fresnel(param_17, param_18, param_19);
+    return vec3(1.0) + ((_2432 * (1.0 - e_1)) / vec3(max(e_1, 0.0500000007450580596923828125)));
 }
 
 float mxc_safe_sqrt(float x)
@@ -559,16 +586,16 @@ float mxc_fon_albedo(float sigma, float mu)
     float param = 1.0 - (c * c);
     float s = mxc_safe_sqrt(param);
     float theta = acos(c);
-    float _2100;
+    float _2139;
     if (c > 9.9999997473787516355514526367188e-05)
     {
-        _2100 = (1.0 - ((s * s) * s)) / c;
+        _2139 = (1.0 - ((s * s) * s)) / c;
     }
     else
     {
-        _2100 = 1.5 * c;
+        _2139 = 1.5 * c;
     }
-    float tail = _2100;
+    float tail = _2139;
     float g = ((s * (theta - (s * c))) + ((0.666666686534881591796875 * s) * tail)) - (0.666666686534881591796875 * s);
     return a + (((sigma * a) * g) * 0.3183098733425140380859375);
 }
@@ -576,83 +603,88 @@ float mxc_fon_albedo(float sigma, float mu)
 vec3 mxc_lobe_albedo_scaled(MxcLobe l, vec3 wo, vec3 ms)
 {
     float mu = clamp(wo.z, 0.0, 1.0);
-    bool _2536 = l.kind == 1;
-    bool _2543;
-    if (!_2536)
+    bool _2577 = l.kind == 1;
+    bool _2584;
+    if (!_2577)
     {
-        _2543 = l.kind == 2;
+        _2584 = l.kind == 2;
     }
     else
     {
-        _2543 = _2536;
+        _2584 = _2577;
     }
-    bool _2550;
-    if (!_2543)
+    bool _2591;
+    if (!_2584)
     {
-        _2550 = l.kind == 3;
+        _2591 = l.kind == 3;
     }
     else
     {
-        _2550 = _2543;
+        _2591 = _2584;
     }
-    if (_2550)
+    if (_2591)
     {
         float alpha = sqrt(l.alpha.x * l.alpha.y);
-        bool _2561 = l.kind == 1;
-        bool _2568;
-        if (_2561)
+        bool _2602 = l.kind == 1;
+        bool _2609;
+        if (_2602)
         {
             vec2 param = l.alpha;
-            _2568 = !mxc_is_delta(param);
+            _2609 = !mxc_is_delta(param);
         }
         else
         {
-            _2568 = _2561;
+            _2609 = _2602;
         }
-        if (_2568)
+        if (_2609)
         {
-            float param_1 = mu;
-            float param_2 = alpha;
-            float param_3 = l.eta;
-            vec3 e = vec3(mxc_dielectric_albedo(param_1, param_2, param_3));
+            MxcLobe param_1 = l;
+            float param_2 = mu;
+            float param_3 = mxc_lobe_cosine_below_coat(param_1, param_2);
+            float param_4 = alpha;
+            float param_5 = l.eta;
+            vec3 e = vec3(mxc_dielectric_albedo(param_3, param_4, param_5));
             return clamp((e * l.c0) * ms, vec3(0.0), vec3(1.0));
         }
-        float param_4 = mu;
-        float param_5 = alpha;
-        vec2 ab = mxc_split_sum(param_4, param_5);
-        MxcLobe param_6 = l;
-        float param_7 = 1.0;
-        bool param_8 = true;
-        vec3 f0 = mxc_lobe_fresnel(param_6, param_7, param_8);
-        MxcLobe param_9 = l;
-        float param_10 = 0.0;
-        bool param_11 = true;
-        vec3 f90 = mxc_lobe_fresnel(param_9, param_10, param_11);
-        vec3 _2524;
+        float param_6 = mu;
+        float param_7 = alpha;
+        vec2 ab = mxc_split_sum(param_6, param_7);
+        MxcLobe param_8 = l;
+        float param_9 = 1.0;
+        bool param_10 = true;
+        vec3 _2633 = mxc_lobe_fresnel(param_8, param_9, param_10);
+        vec3 f0 = _2633;
+        MxcLobe param_11 = l;
+        float param_12 = 0.0;
+        bool param_13 = true;
+        vec3 _2635 = mxc_lobe_fresnel(param_11, param_12, param_13);
+        vec3 f90 = _2635;
+        vec3 _2565;
         if (l.kind == 1)
         {
-            _2524 = l.c0;
+            _2565 = l.c0;
         }
         else
         {
-            _2524 = vec3(1.0);
+            _2565 = vec3(1.0);
         }
-        vec3 tint = _2524;
-        vec2 param_12 = l.alpha;
-        if (mxc_is_delta(param_12))
+        vec3 tint = _2565;
+        vec2 param_14 = l.alpha;
+        if (mxc_is_delta(param_14))
         {
-            MxcLobe param_13 = l;
-            float param_14 = mu;
-            bool param_15 = true;
-            return mxc_lobe_fresnel(param_13, param_14, param_15) * tint;
+            MxcLobe param_15 = l;
+            float param_16 = mu;
+            bool param_17 = true;
+            vec3 _2652 = mxc_lobe_fresnel(param_15, param_16, param_17);
+            return _2652 * tint;
         }
         return clamp((((f0 * ab.x) + (f90 * ab.y)) * tint) * ms, vec3(0.0), vec3(1.0));
     }
     if (l.kind == 4)
     {
-        float param_16 = l.p0;
-        float param_17 = mu;
-        return l.c0 * mxc_fon_albedo(param_16, param_17);
+        float param_18 = l.p0;
+        float param_19 = mu;
+        return l.c0 * mxc_fon_albedo(param_18, param_19);
     }
     if (l.kind == 8)
     {
@@ -673,17 +705,17 @@ vec3 mxc_lobe_albedo(MxcLobe l, vec3 wo)
 
 vec3 mxc_lobe_layer_albedo(MxcLobe l, vec3 wo)
 {
-    bool _2675 = l.kind == 9;
-    bool _2682;
-    if (!_2675)
+    bool _2718 = l.kind == 9;
+    bool _2725;
+    if (!_2718)
     {
-        _2682 = l.kind == 10;
+        _2725 = l.kind == 10;
     }
     else
     {
-        _2682 = _2675;
+        _2725 = _2718;
     }
-    if (_2682)
+    if (_2725)
     {
         MxcLobe white = l;
         white.c0 = vec3(1.0);
@@ -698,48 +730,48 @@ vec3 mxc_lobe_layer_albedo(MxcLobe l, vec3 wo)
 
 float mxc_lobe_ms_transmit(MxcLobe l, vec3 wo, vec3 ms)
 {
-    bool _2193 = l.kind != 1;
-    bool _2200;
-    if (!_2193)
+    bool _2232 = l.kind != 1;
+    bool _2239;
+    if (!_2232)
     {
         vec2 param = l.alpha;
-        _2200 = mxc_is_delta(param);
+        _2239 = mxc_is_delta(param);
     }
     else
     {
-        _2200 = _2193;
+        _2239 = _2232;
     }
-    bool _2206;
-    if (!_2200)
+    bool _2245;
+    if (!_2239)
     {
         MxcLobe param_1 = l;
-        _2206 = mxc_index_matched(param_1);
+        _2245 = mxc_index_matched(param_1);
     }
     else
     {
-        _2206 = _2200;
+        _2245 = _2239;
     }
-    bool _2214;
-    if (!_2206)
+    bool _2253;
+    if (!_2245)
     {
-        _2214 = (l.mode & 4) != 0;
+        _2253 = (l.mode & 4) != 0;
     }
     else
     {
-        _2214 = _2206;
+        _2253 = _2245;
     }
-    bool _2222;
-    if (!_2214)
+    bool _2261;
+    if (!_2253)
     {
         MxcLobe param_2 = l;
         vec3 param_3 = wo;
-        _2222 = !mxc_dielectric_walk_split(param_2, param_3);
+        _2261 = !mxc_dielectric_walk_split(param_2, param_3);
     }
     else
     {
-        _2222 = _2214;
+        _2261 = _2253;
     }
-    if (_2222)
+    if (_2261)
     {
         return ms.x;
     }
@@ -778,18 +810,18 @@ float mxc_lobe_choice(MxcLobe l, vec3 woLocal, vec3 ms)
 
 bool mxc_lobe_ms_shaped(MxcLobe l, vec3 wo)
 {
-    bool _2413 = wo.z <= 0.0;
-    bool _2420;
-    if (!_2413)
+    bool _2452 = wo.z <= 0.0;
+    bool _2459;
+    if (!_2452)
     {
         vec2 param = l.alpha;
-        _2420 = mxc_is_delta(param);
+        _2459 = mxc_is_delta(param);
     }
     else
     {
-        _2420 = _2413;
+        _2459 = _2452;
     }
-    if (_2420)
+    if (_2459)
     {
         return false;
     }
@@ -801,47 +833,47 @@ bool mxc_lobe_ms_shaped(MxcLobe l, vec3 wo)
     {
         return (l.mode & 1) != 0;
     }
-    bool _2439 = l.kind == 1;
-    bool _2446;
-    if (_2439)
+    bool _2478 = l.kind == 1;
+    bool _2485;
+    if (_2478)
     {
-        _2446 = (l.mode & 1) != 0;
+        _2485 = (l.mode & 1) != 0;
     }
     else
     {
-        _2446 = _2439;
+        _2485 = _2478;
     }
-    bool _2453;
-    if (_2446)
+    bool _2492;
+    if (_2485)
     {
-        _2453 = (l.mode & 4) == 0;
+        _2492 = (l.mode & 4) == 0;
     }
     else
     {
-        _2453 = _2446;
+        _2492 = _2485;
     }
-    bool _2459;
-    if (_2453)
+    bool _2498;
+    if (_2492)
     {
         MxcLobe param_1 = l;
-        _2459 = !mxc_index_matched(param_1);
+        _2498 = !mxc_index_matched(param_1);
     }
     else
     {
-        _2459 = _2453;
+        _2498 = _2492;
     }
-    bool _2465;
-    if (_2459)
+    bool _2504;
+    if (_2498)
     {
         MxcLobe param_2 = l;
         vec3 param_3 = wo;
-        _2465 = mxc_dielectric_walk_split(param_2, param_3);
+        _2504 = mxc_dielectric_walk_split(param_2, param_3);
     }
     else
     {
-        _2465 = _2459;
+        _2504 = _2498;
     }
-    return _2465;
+    return _2504;
 }
 
 bool mxc_lobe_transmits(MxcLobe l)
@@ -853,16 +885,16 @@ MxcLobe mxc_ms_lobe(MxcLobe l, bool transmitted)
 {
     MxcLobe m = l;
     m.alpha = min(l.alpha * (transmitted ? 3.0 : 1.5), vec2(1.0));
-    int _2471;
+    int _2510;
     if (transmitted)
     {
-        _2471 = l.mode & (-2);
+        _2510 = l.mode & (-2);
     }
     else
     {
-        _2471 = l.mode & (-3);
+        _2510 = l.mode & (-3);
     }
-    m.mode = _2471;
+    m.mode = _2510;
     if (l.kind == 1)
     {
         m.c0 = vec3(1.0);
@@ -874,7 +906,7 @@ MxcLobe mxc_ms_lobe(MxcLobe l, bool transmitted)
 void mxc_closure_prepare(inout MxcClosure c, vec3 wo)
 {
     c.choiceTotal = 0.0;
-    float _3243;
+    float _3286;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
@@ -921,18 +953,18 @@ void mxc_closure_prepare(inout MxcClosure c, vec3 wo)
             vec3 addedR = max(mxc_lobe_albedo_scaled(param_17, param_18, param_19) - reflected, vec3(0.0));
             vec3 transmitted = vec3(0.0);
             vec3 addedT = vec3(0.0);
-            bool _3331 = l.kind == 1;
-            bool _3336;
-            if (_3331)
+            bool _3374 = l.kind == 1;
+            bool _3379;
+            if (_3374)
             {
                 MxcLobe param_20 = l;
-                _3336 = mxc_lobe_transmits(param_20);
+                _3379 = mxc_lobe_transmits(param_20);
             }
             else
             {
-                _3336 = _3331;
+                _3379 = _3374;
             }
-            if (_3336)
+            if (_3379)
             {
                 float param_21 = o.z;
                 float param_22 = alpha;
@@ -952,18 +984,18 @@ void mxc_closure_prepare(inout MxcClosure c, vec3 wo)
             vec3 param_31 = vec3(1.0);
             vec3 broadR = mxc_lobe_albedo_scaled(param_29, param_30, param_31);
             float broadT = 1.0;
-            bool _3371 = l.kind == 1;
-            bool _3376;
-            if (_3371)
+            bool _3414 = l.kind == 1;
+            bool _3419;
+            if (_3414)
             {
                 MxcLobe param_32 = l;
-                _3376 = mxc_lobe_transmits(param_32);
+                _3419 = mxc_lobe_transmits(param_32);
             }
             else
             {
-                _3376 = _3371;
+                _3419 = _3414;
             }
-            if (_3376)
+            if (_3419)
             {
                 MxcLobe param_33 = l;
                 bool param_34 = true;
@@ -987,13 +1019,13 @@ void mxc_closure_prepare(inout MxcClosure c, vec3 wo)
             if (added > 0.0)
             {
                 vec3 param_43 = addedR;
-                _3243 = mxc_luminance(param_43) / added;
+                _3286 = mxc_luminance(param_43) / added;
             }
             else
             {
-                _3243 = 1.0;
+                _3286 = 1.0;
             }
-            c.msSplit[k] = _3243;
+            c.msSplit[k] = _3286;
             c.msT[k] = 1.0;
         }
         else
@@ -1092,6 +1124,7 @@ void mxc_material_closure(MxcGeometry g, vec3 wo, inout MxcClosure c)
     lobe0.T = v50;
     lobe0.alpha = v57;
     lobe0.eta = 1.5;
+    lobe0.etaAbove = 1.0;
     lobe0.c0 = vec3(1.0);
     lobe0.c1 = vec3(1.0);
     lobe0.c2 = vec3(1.0);
@@ -1117,6 +1150,7 @@ void mxc_material_closure(MxcGeometry g, vec3 wo, inout MxcClosure c)
     lobe3.T = g.T;
     lobe3.alpha = vec2(0.0);
     lobe3.eta = 1.5;
+    lobe3.etaAbove = 1.0;
     lobe3.c0 = v46;
     lobe3.c1 = vec3(1.0);
     lobe3.c2 = vec3(1.0);
@@ -1138,35 +1172,35 @@ void mxc_material_closure(MxcGeometry g, vec3 wo, inout MxcClosure c)
 
 int mxc_light_count()
 {
-    int _4485;
-    if (_252)
+    int _4530;
+    if (_254)
     {
-        _4485 = MXC_LIGHT_COUNT;
+        _4530 = MXC_LIGHT_COUNT;
     }
     else
     {
-        _4485 = mxc_view.counts.x;
+        _4530 = mxc_view.counts.x;
     }
-    return min(_4485, 8);
+    return min(_4530, 8);
 }
 
 int mxc_light_kinds()
 {
-    return _255;
+    return _257;
 }
 
 int mxc_environment_code()
 {
-    int _4477;
-    if (_250)
+    int _4522;
+    if (_252)
     {
-        _4477 = MXC_ENVIRONMENT;
+        _4522 = MXC_ENVIRONMENT;
     }
     else
     {
-        _4477 = mxc_view.counts.y;
+        _4522 = mxc_view.counts.y;
     }
-    return _4477;
+    return _4522;
 }
 
 float mxc_uniform(inout uint seed)
@@ -1243,36 +1277,36 @@ float mxc_ggx_g2(vec3 wo, vec3 wi, vec2 alpha)
 {
     vec3 param = wo;
     vec2 param_1 = alpha;
-    float _1295 = mxc_ggx_lambda(param, param_1);
+    float _1297 = mxc_ggx_lambda(param, param_1);
     vec3 param_2 = wi;
     vec2 param_3 = alpha;
-    float _1299 = mxc_ggx_lambda(param_2, param_3);
-    return 1.0 / ((1.0 + _1295) + _1299);
+    float _1301 = mxc_ggx_lambda(param_2, param_3);
+    return 1.0 / ((1.0 + _1297) + _1301);
 }
 
 vec3 mxc_microfacet_reflect(MxcLobe l, vec3 wo, vec3 wi)
 {
-    bool _1993 = wo.z <= 0.0;
-    bool _2000;
-    if (!_1993)
+    bool _2032 = wo.z <= 0.0;
+    bool _2039;
+    if (!_2032)
     {
-        _2000 = wi.z <= 0.0;
+        _2039 = wi.z <= 0.0;
     }
     else
     {
-        _2000 = _1993;
+        _2039 = _2032;
     }
-    bool _2007;
-    if (!_2000)
+    bool _2046;
+    if (!_2039)
     {
         vec2 param = l.alpha;
-        _2007 = mxc_is_delta(param);
+        _2046 = mxc_is_delta(param);
     }
     else
     {
-        _2007 = _2000;
+        _2046 = _2039;
     }
-    if (_2007)
+    if (_2046)
     {
         return vec3(0.0);
     }
@@ -1280,34 +1314,35 @@ vec3 mxc_microfacet_reflect(MxcLobe l, vec3 wo, vec3 wi)
     MxcLobe param_1 = l;
     float param_2 = max(dot(wo, h), 0.0);
     bool param_3 = true;
-    vec3 f = mxc_lobe_fresnel(param_1, param_2, param_3);
+    vec3 _2058 = mxc_lobe_fresnel(param_1, param_2, param_3);
+    vec3 f = _2058;
     if (l.kind == 1)
     {
         f *= l.c0;
     }
     vec3 param_4 = h;
     vec2 param_5 = l.alpha;
-    float _2033 = mxc_ggx_d(param_4, param_5);
+    float _2072 = mxc_ggx_d(param_4, param_5);
     vec3 param_6 = wo;
     vec3 param_7 = wi;
     vec2 param_8 = l.alpha;
-    return ((f * _2033) * mxc_ggx_g2(param_6, param_7, param_8)) / vec3(4.0 * wo.z);
+    return ((f * _2072) * mxc_ggx_g2(param_6, param_7, param_8)) / vec3(4.0 * wo.z);
 }
 
 float mxc_fon(float sigma, vec3 wo, vec3 wi)
 {
     float a = 1.0 / (1.0 + (0.2877933979034423828125 * sigma));
     float s = dot(wi, wo) - (wi.z * wo.z);
-    float _2054;
+    float _2093;
     if (s > 0.0)
     {
-        _2054 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
+        _2093 = max(max(wi.z, wo.z), 9.9999999747524270787835121154785e-07);
     }
     else
     {
-        _2054 = 1.0;
+        _2093 = 1.0;
     }
-    float t = _2054;
+    float t = _2093;
     return (a + (((sigma * a) * s) / t)) * 0.3183098733425140380859375;
 }
 
@@ -1343,17 +1378,17 @@ vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi)
         case 2:
         case 3:
         {
-            bool _2756 = l.kind == 3;
-            bool _2763;
-            if (_2756)
+            bool _2799 = l.kind == 3;
+            bool _2806;
+            if (_2799)
             {
-                _2763 = (l.mode & 1) == 0;
+                _2806 = (l.mode & 1) == 0;
             }
             else
             {
-                _2763 = _2756;
+                _2806 = _2799;
             }
-            if (_2763)
+            if (_2806)
             {
                 return vec3(0.0);
             }
@@ -1364,29 +1399,29 @@ vec3 mxc_lobe_eval(MxcLobe l, vec3 wo, vec3 wi)
         }
         case 4:
         {
-            bool _2772 = wo.z > 0.0;
-            bool _2778;
-            if (_2772)
+            bool _2815 = wo.z > 0.0;
+            bool _2821;
+            if (_2815)
             {
-                _2778 = wi.z > 0.0;
+                _2821 = wi.z > 0.0;
             }
             else
             {
-                _2778 = _2772;
+                _2821 = _2815;
             }
-            vec3 _2708;
-            if (_2778)
+            vec3 _2751;
+            if (_2821)
             {
                 float param_9 = l.p0;
                 vec3 param_10 = wo;
                 vec3 param_11 = wi;
-                _2708 = (l.c0 * mxc_fon(param_9, param_10, param_11)) * wi.z;
+                _2751 = (l.c0 * mxc_fon(param_9, param_10, param_11)) * wi.z;
             }
             else
             {
-                _2708 = vec3(0.0);
+                _2751 = vec3(0.0);
             }
-            return _2708;
+            return _2751;
         }
         default:
         {
@@ -1399,8 +1434,8 @@ float mxc_ggx_g1(vec3 v, vec2 alpha)
 {
     vec3 param = v;
     vec2 param_1 = alpha;
-    float _1281 = mxc_ggx_lambda(param, param_1);
-    return 1.0 / (1.0 + _1281);
+    float _1283 = mxc_ggx_lambda(param, param_1);
+    return 1.0 / (1.0 + _1283);
 }
 
 float mxc_ggx_pdf_vndf(vec3 wo, vec3 m, vec2 alpha)
@@ -1413,8 +1448,8 @@ float mxc_ggx_pdf_vndf(vec3 wo, vec3 m, vec2 alpha)
     vec2 param_1 = alpha;
     vec3 param_2 = m;
     vec2 param_3 = alpha;
-    float _1454 = mxc_ggx_d(param_2, param_3);
-    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0)) * _1454) / wo.z;
+    float _1456 = mxc_ggx_d(param_2, param_3);
+    return ((mxc_ggx_g1(param, param_1) * max(dot(wo, m), 0.0)) * _1456) / wo.z;
 }
 
 float mxc_mean(vec3 c)
@@ -1436,26 +1471,26 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi)
                 return 0.0;
             }
             bool above = wo.z > 0.0;
-            vec3 _2802;
+            vec3 _2845;
             if (above)
             {
-                _2802 = wo;
+                _2845 = wo;
             }
             else
             {
-                _2802 = -wo;
+                _2845 = -wo;
             }
-            vec3 o = _2802;
-            vec3 _2804;
+            vec3 o = _2845;
+            vec3 _2847;
             if (above)
             {
-                _2804 = wi;
+                _2847 = wi;
             }
             else
             {
-                _2804 = -wi;
+                _2847 = -wi;
             }
-            vec3 i = _2804;
+            vec3 i = _2847;
             if (i.z > 0.0)
             {
                 vec3 h = normalize(o + i);
@@ -1474,45 +1509,46 @@ float mxc_lobe_pdf(MxcLobe l, vec3 wo, vec3 wi)
                 MxcLobe param_4 = l;
                 float param_5 = max(dot(o, h), 0.0);
                 bool param_6 = above;
-                vec3 param_7 = mxc_lobe_fresnel(param_4, param_5, param_6);
+                vec3 _2943 = mxc_lobe_fresnel(param_4, param_5, param_6);
+                vec3 param_7 = _2943;
                 float fr = mxc_mean(param_7);
                 MxcLobe param_8 = l;
-                bool _2904 = mxc_lobe_transmits(param_8);
-                bool _2911;
-                if (_2904)
+                bool _2947 = mxc_lobe_transmits(param_8);
+                bool _2954;
+                if (_2947)
                 {
-                    _2911 = (l.mode & 1) != 0;
+                    _2954 = (l.mode & 1) != 0;
                 }
                 else
                 {
-                    _2911 = _2904;
+                    _2954 = _2947;
                 }
-                return p * (_2911 ? fr : 1.0);
+                return p * (_2954 ? fr : 1.0);
             }
             return 0.0;
         }
         default:
         {
-            bool _2824 = wo.z > 0.0;
-            bool _2830;
-            if (_2824)
+            bool _2867 = wo.z > 0.0;
+            bool _2873;
+            if (_2867)
             {
-                _2830 = wi.z > 0.0;
+                _2873 = wi.z > 0.0;
             }
             else
             {
-                _2830 = _2824;
+                _2873 = _2867;
             }
-            float _2816;
-            if (_2830)
+            float _2859;
+            if (_2873)
             {
-                _2816 = wi.z * 0.3183098733425140380859375;
+                _2859 = wi.z * 0.3183098733425140380859375;
             }
             else
             {
-                _2816 = 0.0;
+                _2859 = 0.0;
             }
-            return _2816;
+            return _2859;
         }
     }
 }
@@ -1523,16 +1559,16 @@ vec3 mxc_ggx_sample_vndf(vec3 wo, inout vec2 alpha, vec2 u)
     alpha = mxc_rough_alpha(param);
     vec3 vh = normalize(vec3(alpha.x * wo.x, alpha.y * wo.y, wo.z));
     float lensq = (vh.x * vh.x) + (vh.y * vh.y);
-    vec3 _1311;
+    vec3 _1313;
     if (lensq > 0.0)
     {
-        _1311 = vec3(-vh.y, vh.x, 0.0) * inversesqrt(lensq);
+        _1313 = vec3(-vh.y, vh.x, 0.0) * inversesqrt(lensq);
     }
     else
     {
-        _1311 = vec3(1.0, 0.0, 0.0);
+        _1313 = vec3(1.0, 0.0, 0.0);
     }
-    vec3 t1 = _1311;
+    vec3 t1 = _1313;
     vec3 t2 = cross(vh, t1);
     float r = sqrt(u.x);
     float phi = 6.283185482025146484375 * u.y;
@@ -1561,94 +1597,95 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u)
         case 3:
         {
             bool above = wo.z > 0.0;
-            vec3 _2923;
+            vec3 _2966;
             if (above)
             {
-                _2923 = wo;
+                _2966 = wo;
             }
             else
             {
-                _2923 = -wo;
+                _2966 = -wo;
             }
-            vec3 o = _2923;
+            vec3 o = _2966;
             if (o.z <= 0.0)
             {
                 return s;
             }
             vec2 param = l.alpha;
             bool delta = mxc_is_delta(param);
-            vec3 _2927;
+            vec3 _2970;
             if (delta)
             {
-                _2927 = vec3(0.0, 0.0, 1.0);
+                _2970 = vec3(0.0, 0.0, 1.0);
             }
             else
             {
                 vec3 param_1 = o;
                 vec2 param_2 = l.alpha;
                 vec2 param_3 = u.xy;
-                vec3 _3028 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
-                _2927 = _3028;
+                vec3 _3071 = mxc_ggx_sample_vndf(param_1, param_2, param_3);
+                _2970 = _3071;
             }
-            vec3 m = _2927;
+            vec3 m = _2970;
             float hm = dot(o, m);
-            bool _3035 = l.kind == 1;
-            bool _3042;
-            if (!_3035)
+            bool _3078 = l.kind == 1;
+            bool _3085;
+            if (!_3078)
             {
-                _3042 = l.kind == 3;
+                _3085 = l.kind == 3;
             }
             else
             {
-                _3042 = _3035;
+                _3085 = _3078;
             }
-            bool _3047;
-            if (_3042)
+            bool _3090;
+            if (_3085)
             {
                 MxcLobe param_4 = l;
-                _3047 = mxc_lobe_transmits(param_4);
+                _3090 = mxc_lobe_transmits(param_4);
             }
             else
             {
-                _3047 = _3042;
+                _3090 = _3085;
             }
-            bool transmits = _3047;
-            bool _3050 = l.kind == 2;
-            bool _3058;
-            if (!_3050)
+            bool transmits = _3090;
+            bool _3093 = l.kind == 2;
+            bool _3101;
+            if (!_3093)
             {
-                _3058 = (l.mode & 1) != 0;
+                _3101 = (l.mode & 1) != 0;
             }
             else
             {
-                _3058 = _3050;
+                _3101 = _3093;
             }
-            bool reflects = _3058;
+            bool reflects = _3101;
             MxcLobe param_5 = l;
             float param_6 = max(hm, 0.0);
             bool param_7 = above;
-            vec3 f = mxc_lobe_fresnel(param_5, param_6, param_7);
-            float _2940;
+            vec3 _3106 = mxc_lobe_fresnel(param_5, param_6, param_7);
+            vec3 f = _3106;
+            float _2983;
             if (transmits)
             {
                 vec3 param_8 = f;
-                _2940 = mxc_mean(param_8);
+                _2983 = mxc_mean(param_8);
             }
             else
             {
-                _2940 = 1.0;
+                _2983 = 1.0;
             }
-            float fr = _2940;
-            float _2943;
+            float fr = _2983;
+            float _2986;
             if (transmits)
             {
-                _2943 = reflects ? fr : 0.0;
+                _2986 = reflects ? fr : 0.0;
             }
             else
             {
-                _2943 = 1.0;
+                _2986 = 1.0;
             }
-            float pReflect = _2943;
+            float pReflect = _2986;
             if (u.z < pReflect)
             {
                 vec3 i = reflect(-o, m);
@@ -1656,38 +1693,38 @@ MxcLobeSample mxc_lobe_sample(MxcLobe l, vec3 wo, vec3 u)
                 {
                     return s;
                 }
-                vec3 _2945;
+                vec3 _2988;
                 if (above)
                 {
-                    _2945 = i;
+                    _2988 = i;
                 }
                 else
                 {
-                    _2945 = -i;
+                    _2988 = -i;
                 }
-                s.wi = _2945;
+                s.wi = _2988;
                 s.delta = delta;
                 if (delta)
                 {
-                    vec3 _2947;
+                    vec3 _2990;
                     if (l.kind == 1)
                     {
-                        vec3 _2948;
+                        vec3 _2991;
                         if (above)
                         {
-                            _2948 = l.c0;
+                            _2991 = l.c0;
                         }
                         else
                         {
-                            _2948 = vec3(1.0);
+                            _2991 = vec3(1.0);
                         }
-                        _2947 = _2948;
+                        _2990 = _2991;
                     }
                     else
                     {
-                        _2947 = vec3(1.0);
+                        _2990 = vec3(1.0);
                     }
-                    vec3 tint = _2947;
+                    vec3 tint = _2990;
                     s.value = f * tint;
                     s.pdf = pReflect;
                 }
@@ -1802,33 +1839,33 @@ MxcSample mxc_closure_sample_direction(MxcClosure c, vec3 wo, vec3 u)
         float v = uz / q;
         float split = c.msSplit[chosen];
         reflected = v < split;
-        float _3697;
+        float _3740;
         if (reflected)
         {
-            _3697 = v / max(split, 9.9999999747524270787835121154785e-07);
+            _3740 = v / max(split, 9.9999999747524270787835121154785e-07);
         }
         else
         {
-            _3697 = (v - split) / max(1.0 - split, 9.9999999747524270787835121154785e-07);
+            _3740 = (v - split) / max(1.0 - split, 9.9999999747524270787835121154785e-07);
         }
-        uz = _3697;
+        uz = _3740;
     }
     else
     {
         uz = (uz - q) / (1.0 - q);
     }
-    MxcLobe _3699;
+    MxcLobe _3742;
     if (shaped)
     {
         MxcLobe param_4 = l;
         bool param_5 = !reflected;
-        _3699 = mxc_ms_lobe(param_4, param_5);
+        _3742 = mxc_ms_lobe(param_4, param_5);
     }
     else
     {
-        _3699 = l;
+        _3742 = l;
     }
-    MxcLobe m = _3699;
+    MxcLobe m = _3742;
     MxcLobe param_6 = m;
     vec3 param_7 = o;
     vec3 param_8 = vec3(u.xy, min(uz, 0.999999940395355224609375));
@@ -1890,16 +1927,16 @@ vec3 mxc_env_to_map(vec3 w, float angle)
 
 vec2 mxc_env_uv(vec3 d)
 {
-    float _4187;
+    float _4232;
     if ((abs(d.x) + abs(d.z)) > 9.9999999600419720025001879548654e-13)
     {
-        _4187 = 0.5 + (atan(d.x, -d.z) * 0.15915493667125701904296875);
+        _4232 = 0.5 + (atan(d.x, -d.z) * 0.15915493667125701904296875);
     }
     else
     {
-        _4187 = 0.5;
+        _4232 = 0.5;
     }
-    float u = _4187;
+    float u = _4232;
     float v = atan(length(d.xz), d.y) * 0.3183098733425140380859375;
     return vec2(u, v);
 }
@@ -1936,7 +1973,7 @@ uint mxc_env_cell(vec3 d)
 {
     vec3 param = d;
     vec2 uv = mxc_env_uv(param);
-    uvec2 size = max(_233.mxc_env_size.xy, uvec2(1u));
+    uvec2 size = max(_235.mxc_env_size.xy, uvec2(1u));
     uint i = min(uint(max(uv.x, 0.0) * float(size.x)), (size.x - 1u));
     uint j = min(uint(max(uv.y, 0.0) * float(size.y)), (size.y - 1u));
     return (j * size.x) + i;
@@ -1945,36 +1982,36 @@ uint mxc_env_cell(vec3 d)
 float mxc_env_pdf(vec3 d)
 {
     vec3 param = d;
-    return _233.mxc_env_cells[mxc_env_cell(param)].z;
+    return _235.mxc_env_cells[mxc_env_cell(param)].z;
 }
 
 float mxc_power_heuristic(float a, float b)
 {
     float a2 = a * a;
     float b2 = b * b;
-    float _4577;
+    float _4622;
     if ((a2 + b2) > 0.0)
     {
-        _4577 = a2 / (a2 + b2);
+        _4622 = a2 / (a2 + b2);
     }
     else
     {
-        _4577 = 0.0;
+        _4622 = 0.0;
     }
-    return _4577;
+    return _4622;
 }
 
 vec3 mxc_env_sample(vec4 u, out float pdf)
 {
-    uvec2 size = max(_233.mxc_env_size.xy, uvec2(1u));
+    uvec2 size = max(_235.mxc_env_size.xy, uvec2(1u));
     uint n = size.x * size.y;
     uint k = min(uint(u.x * float(n)), (n - 1u));
-    vec4 cell = _233.mxc_env_cells[k];
+    vec4 cell = _235.mxc_env_cells[k];
     if (u.y >= cell.x)
     {
         k = min(floatBitsToUint(cell.y), (n - 1u));
     }
-    pdf = _233.mxc_env_cells[k].z;
+    pdf = _235.mxc_env_cells[k].z;
     uint i = k % size.x;
     uint j = k / size.x;
     float phi = 6.283185482025146484375 * (((float(i) + u.z) / float(size.x)) - 0.5);
@@ -1997,12 +2034,12 @@ vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, inout fl
 {
     vec3 f = vec3(0.0);
     float p = 0.0;
-    MxcLobe _3477;
-    vec3 _3481;
-    vec3 _3482;
-    vec3 _3483;
-    float _3488;
-    float _3489;
+    MxcLobe _3520;
+    vec3 _3524;
+    vec3 _3525;
+    vec3 _3526;
+    float _3531;
+    float _3532;
     for (int k = 0; k < c.count; k++)
     {
         MxcLobe l = c.lobes[k];
@@ -2029,38 +2066,38 @@ vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, inout fl
             {
                 MxcLobe param_6 = l;
                 bool param_7 = i.z < 0.0;
-                _3477 = mxc_ms_lobe(param_6, param_7);
+                _3520 = mxc_ms_lobe(param_6, param_7);
             }
             else
             {
-                _3477 = l;
+                _3520 = l;
             }
-            MxcLobe m = _3477;
+            MxcLobe m = _3520;
             if (shaped)
             {
                 if (i.z > 0.0)
                 {
-                    _3482 = c.msLobe[k];
+                    _3525 = c.msLobe[k];
                 }
                 else
                 {
-                    _3482 = c.msLobeT[k];
+                    _3525 = c.msLobeT[k];
                 }
-                _3481 = _3482;
+                _3524 = _3525;
             }
             else
             {
                 if ((o.z * i.z) < 0.0)
                 {
-                    _3483 = vec3(c.msT[k]);
+                    _3526 = vec3(c.msT[k]);
                 }
                 else
                 {
-                    _3483 = c.ms[k];
+                    _3526 = c.ms[k];
                 }
-                _3481 = _3483;
+                _3524 = _3526;
             }
-            vec3 scale = _3481;
+            vec3 scale = _3524;
             MxcLobe param_8 = m;
             vec3 param_9 = o;
             vec3 param_10 = i;
@@ -2071,19 +2108,19 @@ vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, inout fl
                 {
                     if (i.z > 0.0)
                     {
-                        _3489 = c.msSplit[k];
+                        _3532 = c.msSplit[k];
                     }
                     else
                     {
-                        _3489 = 1.0 - c.msSplit[k];
+                        _3532 = 1.0 - c.msSplit[k];
                     }
-                    _3488 = c.msPick[k] * _3489;
+                    _3531 = c.msPick[k] * _3532;
                 }
                 else
                 {
-                    _3488 = 1.0 - c.msPick[k];
+                    _3531 = 1.0 - c.msPick[k];
                 }
-                float share = _3488;
+                float share = _3531;
                 MxcLobe param_11 = m;
                 vec3 param_12 = o;
                 vec3 param_13 = i;
@@ -2098,16 +2135,16 @@ vec3 mxc_closure_eval_pdf(MxcClosure c, vec3 wo, vec3 wi, bool wantPdf, inout fl
             p += (c.choice[k] * pk);
         }
     }
-    float _3495;
+    float _3538;
     if (c.choiceTotal > 0.0)
     {
-        _3495 = p / c.choiceTotal;
+        _3538 = p / c.choiceTotal;
     }
     else
     {
-        _3495 = 0.0;
+        _3538 = 0.0;
     }
-    pdf = _3495;
+    pdf = _3538;
     return f;
 }
 
@@ -2171,16 +2208,16 @@ void main()
     int lights = mxc_light_count();
     int kinds = mxc_light_kinds();
     bool image = mxc_environment_code() == 3;
-    int _289;
+    int _291;
     if (mxc_environment_code() != 0)
     {
-        _289 = max(mxc_view.counts.w, 1);
+        _291 = max(mxc_view.counts.w, 1);
     }
     else
     {
-        _289 = 0;
+        _291 = 0;
     }
-    int n = _289;
+    int n = _291;
     uint param_17 = uint(mxc_view.counts.z);
     uint param_18 = uint(gl_FragCoord.y) + mxc_pcg(param_17);
     uint param_19 = uint(gl_FragCoord.x) + mxc_pcg(param_18);
@@ -2189,54 +2226,54 @@ void main()
     uint param_21 = uint(gl_FragCoord.x) ^ mxc_pcg(param_20);
     uint pixel = mxc_pcg(param_21);
     uint param_22 = pixel;
-    float _537 = mxc_uniform(param_22);
+    float _539 = mxc_uniform(param_22);
     pixel = param_22;
     uint param_23 = pixel;
-    float _541 = mxc_uniform(param_23);
+    float _543 = mxc_uniform(param_23);
     pixel = param_23;
     uint param_24 = pixel;
-    float _544 = mxc_uniform(param_24);
+    float _546 = mxc_uniform(param_24);
     pixel = param_24;
     uint param_25 = pixel;
-    float _547 = mxc_uniform(param_25);
+    float _549 = mxc_uniform(param_25);
     pixel = param_25;
-    vec4 shift = vec4(_537, _541, _544, _547);
+    vec4 shift = vec4(_539, _543, _546, _549);
     vec3 sum = vec3(0.0);
-    int _306;
+    int _308;
     MxcSample smp;
-    vec3 _323;
-    vec3 _324;
-    float _329;
+    vec3 _325;
+    vec3 _326;
+    float _331;
     float param_49;
-    int _353;
+    int _355;
     float param_59;
-    float _369;
+    float _371;
     for (int b = 0; b < max(n, int(lights > 0)); b++)
     {
         int batchLights = (b == 0) ? lights : 0;
         if (b < n)
         {
-            _306 = 1 + int(image);
+            _308 = 1 + int(image);
         }
         else
         {
-            _306 = 0;
+            _308 = 0;
         }
-        int batchSamples = _306;
+        int batchSamples = _308;
         uint index = (uint(mxc_view.counts.z) * uint(max(n, 1))) + uint(b);
         uint param_26 = index;
         uint param_27 = 2u;
-        float _587 = mxc_radical_inverse(param_26, param_27);
+        float _589 = mxc_radical_inverse(param_26, param_27);
         uint param_28 = index;
         uint param_29 = 3u;
-        float _590 = mxc_radical_inverse(param_28, param_29);
+        float _592 = mxc_radical_inverse(param_28, param_29);
         uint param_30 = index;
         uint param_31 = 5u;
-        float _592 = mxc_radical_inverse(param_30, param_31);
+        float _594 = mxc_radical_inverse(param_30, param_31);
         uint param_32 = index;
         uint param_33 = 7u;
-        float _594 = mxc_radical_inverse(param_32, param_33);
-        vec4 choice = fract(vec4(_587, _590, _592, _594) + shift);
+        float _596 = mxc_radical_inverse(param_32, param_33);
+        vec4 choice = fract(vec4(_589, _592, _594, _596) + shift);
         smp.valid = false;
         smp.evaluate = false;
         smp.delta = false;
@@ -2255,58 +2292,58 @@ void main()
         {
             if (above)
             {
-                _324 = smp.wi;
+                _326 = smp.wi;
             }
             else
             {
                 vec3 param_37 = -wo;
                 vec3 param_38 = smp.wi;
-                _324 = mxc_exit_direction(param_37, param_38);
+                _326 = mxc_exit_direction(param_37, param_38);
             }
-            vec3 param_39 = _324;
-            _323 = mxc_environment(param_39);
+            vec3 param_39 = _326;
+            _325 = mxc_environment(param_39);
         }
         else
         {
-            _323 = vec3(0.0);
+            _325 = vec3(0.0);
         }
-        vec3 seen = _323;
-        bool _652 = (b < n) && smp.valid;
-        bool _658;
-        if (_652)
+        vec3 seen = _325;
+        bool _654 = (b < n) && smp.valid;
+        bool _660;
+        if (_654)
         {
-            _658 = !smp.evaluate;
+            _660 = !smp.evaluate;
         }
         else
         {
-            _658 = _652;
+            _660 = _654;
         }
-        if (_658)
+        if (_660)
         {
-            bool _663 = image && above;
-            bool _669;
-            if (_663)
+            bool _665 = image && above;
+            bool _671;
+            if (_665)
             {
-                _669 = !smp.delta;
+                _671 = !smp.delta;
             }
             else
             {
-                _669 = _663;
+                _671 = _665;
             }
-            if (_669)
+            if (_671)
             {
                 vec3 param_40 = smp.wi;
                 float param_41 = mxc_view.environment.z;
                 vec3 param_42 = mxc_env_to_map(param_40, param_41);
                 float param_43 = smp.pdf;
                 float param_44 = mxc_env_pdf(param_42);
-                _329 = mxc_power_heuristic(param_43, param_44);
+                _331 = mxc_power_heuristic(param_43, param_44);
             }
             else
             {
-                _329 = 1.0;
+                _331 = 1.0;
             }
-            float w = _329;
+            float w = _331;
             sum += ((smp.weight * w) * seen);
         }
         vec3 m = vec3(0.0);
@@ -2316,33 +2353,33 @@ void main()
         if (image && (b < n))
         {
             uint param_45 = seed;
-            float _705 = mxc_uniform(param_45);
+            float _707 = mxc_uniform(param_45);
             seed = param_45;
             uint param_46 = seed;
-            float _708 = mxc_uniform(param_46);
+            float _710 = mxc_uniform(param_46);
             seed = param_46;
             uint param_47 = seed;
-            float _711 = mxc_uniform(param_47);
+            float _713 = mxc_uniform(param_47);
             seed = param_47;
-            vec4 v = vec4(choice.y, _705, _708, _711);
+            vec4 v = vec4(choice.y, _707, _710, _713);
             vec4 param_48 = v;
-            vec3 _715 = mxc_env_sample(param_48, param_49);
+            vec3 _717 = mxc_env_sample(param_48, param_49);
             lightPdf = param_49;
-            m = _715;
+            m = _717;
             vec3 param_50 = m;
             float param_51 = mxc_view.environment.z;
             imageWi = mxc_env_to_world(param_50, param_51);
-            bool _724 = lightPdf > 0.0;
-            bool _731;
-            if (_724)
+            bool _726 = lightPdf > 0.0;
+            bool _733;
+            if (_726)
             {
-                _731 = dot(imageWi, N) > 0.0;
+                _733 = dot(imageWi, N) > 0.0;
             }
             else
             {
-                _731 = _724;
+                _733 = _726;
             }
-            if (_731)
+            if (_733)
             {
                 vec3 param_52 = imageWi;
                 imageSeen = mxc_environment(param_52);
@@ -2355,38 +2392,38 @@ void main()
             bool use = true;
             if ((n == 0) || (j < batchLights))
             {
-                _353 = 0;
+                _355 = 0;
             }
             else
             {
-                _353 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
+                _355 = (j == ((batchLights + 1) - 1)) ? 1 : 2;
             }
-            int strategy = _353;
+            int strategy = _355;
             if (strategy == 0)
             {
                 vec4 light = mxc_view.lightVector[j];
                 incoming = mxc_view.lightRadiance[j].xyz;
-                bool _776 = kinds == 1;
-                bool _789;
-                if (!_776)
+                bool _778 = kinds == 1;
+                bool _791;
+                if (!_778)
                 {
-                    bool _782 = (kinds & 1) != 0;
-                    bool _788;
-                    if (_782)
+                    bool _784 = (kinds & 1) != 0;
+                    bool _790;
+                    if (_784)
                     {
-                        _788 = light.w == 0.0;
+                        _790 = light.w == 0.0;
                     }
                     else
                     {
-                        _788 = _782;
+                        _790 = _784;
                     }
-                    _789 = _788;
+                    _791 = _790;
                 }
                 else
                 {
-                    _789 = _776;
+                    _791 = _778;
                 }
-                bool directional = _789;
+                bool directional = _791;
                 if (directional)
                 {
                     vec3 param_53 = light.xyz;
@@ -2399,17 +2436,17 @@ void main()
                     float d2 = max(dot(d, d), 9.9999999392252902907785028219223e-09);
                     wi = d * inversesqrt(d2);
                     incoming /= vec3(d2);
-                    bool _816 = (kinds & 4) != 0;
-                    bool _822;
-                    if (_816)
+                    bool _818 = (kinds & 4) != 0;
+                    bool _824;
+                    if (_818)
                     {
-                        _822 = light.w == 2.0;
+                        _824 = light.w == 2.0;
                     }
                     else
                     {
-                        _822 = _816;
+                        _824 = _818;
                     }
-                    if (_822)
+                    if (_824)
                     {
                         vec4 spot = mxc_view.lightSpot[j];
                         incoming *= smoothstep(spot.w, mxc_view.lightRadiance[j].w, dot(-wi, spot.xyz));
@@ -2428,26 +2465,26 @@ void main()
                 {
                     wi = imageWi;
                     incoming = imageSeen;
-                    bool _857 = lightPdf > 0.0;
-                    bool _864;
-                    if (_857)
+                    bool _859 = lightPdf > 0.0;
+                    bool _866;
+                    if (_859)
                     {
-                        _864 = dot(imageWi, N) > 0.0;
+                        _866 = dot(imageWi, N) > 0.0;
                     }
                     else
                     {
-                        _864 = _857;
+                        _866 = _859;
                     }
-                    use = _864;
+                    use = _866;
                 }
             }
             MxcClosure param_55 = c;
             vec3 param_56 = wo;
             vec3 param_57 = wi;
             bool param_58 = strategy != 0;
-            vec3 _870 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
+            vec3 _872 = mxc_closure_eval_pdf(param_55, param_56, param_57, param_58, param_59);
             float pdf = param_59;
-            vec3 f = _870;
+            vec3 f = _872;
             if (strategy == 0)
             {
                 radiance += (f * incoming);
@@ -2465,13 +2502,13 @@ void main()
                             vec3 param_62 = mxc_env_to_map(param_60, param_61);
                             float param_63 = pdf;
                             float param_64 = mxc_env_pdf(param_62);
-                            _369 = mxc_power_heuristic(param_63, param_64);
+                            _371 = mxc_power_heuristic(param_63, param_64);
                         }
                         else
                         {
-                            _369 = 1.0;
+                            _371 = 1.0;
                         }
-                        float w_1 = _369;
+                        float w_1 = _371;
                         sum += (((f * w_1) / vec3(pdf)) * incoming);
                     }
                 }

@@ -52,6 +52,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(0.056287806, 0.005628782);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.9150964, 0.9225105, 0.92324895);
   lobe0.c1 = vec3(0.9100859, 0.93547195, 0.95852435);
   lobe0.c2 = vec3(1.0);

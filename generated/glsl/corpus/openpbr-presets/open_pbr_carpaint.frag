@@ -53,6 +53,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v6;
   lobe0.alpha = vec2(4e-04);
   lobe0.eta = 1.6;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -71,6 +72,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe4.T = v6;
   lobe4.alpha = vec2(0.09);
   lobe4.eta = 1.0;
+  lobe4.etaAbove = 1.6;
   lobe4.c0 = vec3(1.0);
   lobe4.c1 = vec3(1.0);
   lobe4.c2 = vec3(1.0);
@@ -88,6 +90,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe7.T = g.T;
   lobe7.alpha = vec2(0.0);
   lobe7.eta = 1.5;
+  lobe7.etaAbove = 1.0;
   lobe7.c0 = vec3(0.0, 0.66196376, 0.9578934);
   lobe7.c1 = vec3(1.0);
   lobe7.c2 = vec3(1.0);

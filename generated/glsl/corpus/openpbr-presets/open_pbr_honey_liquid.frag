@@ -53,6 +53,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v6;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0);
   lobe0.c1 = vec3(0.83085287, 0.5709362, 0.037150614);
   lobe0.c2 = vec3(1.0);

@@ -52,6 +52,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(4e-04);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.62423474, 0.64042664, 0.6932047);
   lobe0.c1 = vec3(0.7581496, 0.77266926, 0.7986864);
   lobe0.c2 = vec3(1.0);

@@ -52,6 +52,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(4e-04);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.92131096, 0.8591261, 0.7482886);
   lobe0.c1 = vec3(1.014255, 1.0421132, 1.1047254);
   lobe0.c2 = vec3(1.0);

@@ -52,6 +52,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(4e-04);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.34508148, 0.36890543, 0.42591265);
   lobe0.c1 = vec3(0.720093, 0.7011758, 0.66373587);
   lobe0.c2 = vec3(1.0);

@@ -53,6 +53,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(0.25);
   lobe0.eta = 1.31;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -69,6 +70,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe2.T = lobe0.T;
   lobe2.alpha = vec2(0.0);
   lobe2.eta = 1.5;
+  lobe2.etaAbove = 1.0;
   lobe2.c0 = vec3(0.85, 0.85, 0.84999996) * mxc_subsurface_factor(vec3(0.85, 0.85, 0.84999996), 1.31, dot(wo, lobe0.N), 1.0, 0.0, 0.0, vec3(1.0));
   lobe2.c1 = vec3(1.0);
   lobe2.c2 = vec3(1.0);

@@ -53,6 +53,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v6;
   lobe0.alpha = vec2(0.25);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -70,6 +71,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.T = g.T;
   lobe3.alpha = vec2(0.0);
   lobe3.eta = 1.5;
+  lobe3.etaAbove = 1.0;
   lobe3.c0 = vec3(0.049999997, 0.050000004, 0.049999997);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);

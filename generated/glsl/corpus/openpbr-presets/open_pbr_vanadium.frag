@@ -52,6 +52,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(4e-04);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.5341931, 0.52617997, 0.5453275);
   lobe0.c1 = vec3(0.70510185, 0.7149503, 0.6956965);
   lobe0.c2 = vec3(1.0);

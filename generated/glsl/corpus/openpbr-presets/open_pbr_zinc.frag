@@ -52,6 +52,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(4e-04);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.8063171, 0.8444048, 0.8643865);
   lobe0.c1 = vec3(0.76278913, 0.8330775, 0.8967365);
   lobe0.c2 = vec3(1.0);

@@ -52,6 +52,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v5;
   lobe0.alpha = vec2(0.056287806, 0.005628782);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.912, 0.914, 0.92);
   lobe0.c1 = vec3(0.97, 0.979, 0.988);
   lobe0.c2 = vec3(1.0);

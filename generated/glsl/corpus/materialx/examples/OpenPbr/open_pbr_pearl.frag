@@ -54,6 +54,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v6;
   lobe0.alpha = vec2(0.0225);
   lobe0.eta = 1.68;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -72,6 +73,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe4.T = v6;
   lobe4.alpha = vec2(0.122499995);
   lobe4.eta = 1.12;
+  lobe4.etaAbove = 1.68;
   lobe4.c0 = vec3(1.0);
   lobe4.c1 = vec3(1.0);
   lobe4.c2 = vec3(1.0);
@@ -88,6 +90,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe6.T = lobe4.T;
   lobe6.alpha = vec2(0.0);
   lobe6.eta = 1.5;
+  lobe6.etaAbove = 1.0;
   lobe6.c0 = vec3(0.8, 0.75, 0.7) * mxc_subsurface_factor(vec3(0.8, 0.75, 0.7), 1.5, dot(wo, lobe4.N), 1.68, 1.0, 1.0, dark2);
   lobe6.c1 = vec3(1.0);
   lobe6.c2 = vec3(1.0);

@@ -55,6 +55,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = g.T;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.4);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -72,6 +73,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.T = v6;
   lobe3.alpha = vec2(0.64000005);
   lobe3.eta = 1.5;
+  lobe3.etaAbove = 1.0;
   lobe3.c0 = vec3(1.0);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);
@@ -89,6 +91,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe6.T = g.T;
   lobe6.alpha = vec2(0.0);
   lobe6.eta = 1.5;
+  lobe6.etaAbove = 1.0;
   lobe6.c0 = vec3(0.02);
   lobe6.c1 = vec3(1.0);
   lobe6.c2 = vec3(1.0);

@@ -68,6 +68,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v15;
   lobe0.alpha = v14;
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -86,6 +87,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe4.T = v15;
   lobe4.alpha = v14;
   lobe4.eta = 1.5;
+  lobe4.etaAbove = 1.0;
   lobe4.c0 = vec3(397.9968);
   lobe4.c1 = vec3(0.0);
   lobe4.c2 = vec3(1.0);

@@ -53,6 +53,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v8;
   lobe0.alpha = vec2(1e-07);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -70,6 +71,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.T = v8;
   lobe3.alpha = vec2(0.22627419, 0.11313709);
   lobe3.eta = 1.5;
+  lobe3.etaAbove = 1.0;
   lobe3.c0 = vec3(1.0);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);
@@ -87,6 +89,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe6.T = g.T;
   lobe6.alpha = vec2(0.0);
   lobe6.eta = 1.5;
+  lobe6.etaAbove = 1.0;
   lobe6.c0 = vec3(0.1037792, 0.5921203, 0.85064936);
   lobe6.c1 = vec3(1.0);
   lobe6.c2 = vec3(1.0);

@@ -55,6 +55,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe1.T = v11;
   lobe1.alpha = vec2(0.088388346, 0.044194173);
   lobe1.eta = 2.418;
+  lobe1.etaAbove = 1.0;
   lobe1.c0 = vec3(1.0);
   lobe1.c1 = vec3(1.0);
   lobe1.c2 = vec3(1.0);
@@ -72,6 +73,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe4.T = g.T;
   lobe4.alpha = vec2(0.0);
   lobe4.eta = 1.5;
+  lobe4.etaAbove = 1.0;
   lobe4.c0 = vec3(0.0603, 0.4398, 0.1916);
   lobe4.c1 = vec3(1.0);
   lobe4.c2 = vec3(1.0);
@@ -87,6 +89,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe5.T = lobe1.T;
   lobe5.alpha = vec2(0.0);
   lobe5.eta = 1.5;
+  lobe5.etaAbove = 1.0;
   lobe5.c0 = vec3(0.0603, 0.4398, 0.1916) * mxc_subsurface_factor(vec3(0.0603, 0.4398, 0.1916), 2.418, dot(wo, lobe1.N), 1.0, 0.0, 0.0, vec3(1.0));
   lobe5.c1 = vec3(1.0);
   lobe5.c2 = vec3(1.0);

@@ -82,6 +82,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe1.T = v47;
   lobe1.alpha = vec2(0.010000001);
   lobe1.eta = 1.5;
+  lobe1.etaAbove = 1.0;
   lobe1.c0 = vec3(1.0);
   lobe1.c1 = vec3(1.0);
   lobe1.c2 = vec3(1.0);
@@ -99,6 +100,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe4.T = g.T;
   lobe4.alpha = vec2(0.0);
   lobe4.eta = 1.5;
+  lobe4.etaAbove = 1.0;
   lobe4.c0 = v24;
   lobe4.c1 = vec3(1.0);
   lobe4.c2 = vec3(1.0);
@@ -114,6 +116,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe5.T = lobe1.T;
   lobe5.alpha = vec2(0.0);
   lobe5.eta = 1.5;
+  lobe5.etaAbove = 1.0;
   lobe5.c0 = v26 * mxc_subsurface_factor(v26, 1.5, dot(wo, lobe1.N), 1.0, 0.0, 0.0, vec3(1.0));
   lobe5.c1 = vec3(1.0);
   lobe5.c2 = vec3(1.0);

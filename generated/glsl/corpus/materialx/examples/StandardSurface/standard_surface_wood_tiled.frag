@@ -67,6 +67,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v24;
   lobe0.alpha = vec2(0.056568548, 0.028284272);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -84,6 +85,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.T = v24;
   lobe3.alpha = v23;
   lobe3.eta = 1.5;
+  lobe3.etaAbove = 1.0;
   lobe3.c0 = vec3(1.0);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);
@@ -101,6 +103,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe6.T = g.T;
   lobe6.alpha = vec2(0.0);
   lobe6.eta = 1.5;
+  lobe6.etaAbove = 1.0;
   lobe6.c0 = v13;
   lobe6.c1 = vec3(1.0);
   lobe6.c2 = vec3(1.0);

@@ -52,6 +52,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.05);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.7);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -125,6 +126,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.05);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0);
   lobe0.c1 = vec3(0.7);
   lobe0.c2 = vec3(1.0);
@@ -198,6 +200,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.05);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.7);
   lobe0.c1 = vec3(0.7);
   lobe0.c2 = vec3(1.0);
@@ -271,6 +274,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.05);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.7);
   lobe0.c1 = vec3(0.7);
   lobe0.c2 = vec3(1.0);

@@ -52,6 +52,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v3;
   lobe0.alpha = vec2(0.02);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.8);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -124,6 +125,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v3;
   lobe0.alpha = vec2(0.02);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.2);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -196,6 +198,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v3;
   lobe0.alpha = vec2(0.02);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.2);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -268,6 +271,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v3;
   lobe0.alpha = vec2(0.02);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.8);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -285,6 +289,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.T = v3;
   lobe3.alpha = vec2(0.02);
   lobe3.eta = 1.5;
+  lobe3.etaAbove = 1.0;
   lobe3.c0 = vec3(0.2);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);
@@ -359,6 +364,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.02);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.8, 0.2, 0.2);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(0.2, 0.8, 0.2);
@@ -431,6 +437,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.02);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.8, 0.2, 0.2);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(0.2, 0.8, 0.2);
@@ -503,6 +510,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.02);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.8, 0.2, 0.2);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(0.2, 0.8, 0.2);
@@ -575,6 +583,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.02);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.8, 0.2, 0.2);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(0.2, 0.8, 0.2);
@@ -592,6 +601,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.T = v4;
   lobe3.alpha = vec2(0.02);
   lobe3.eta = 1.5;
+  lobe3.etaAbove = 1.0;
   lobe3.c0 = vec3(0.8, 0.2, 0.2);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(0.2, 0.8, 0.2);
@@ -666,6 +676,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.02);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.8);
   lobe0.c1 = vec3(0.2, 0.2, 0.8);
   lobe0.c2 = vec3(0.8);

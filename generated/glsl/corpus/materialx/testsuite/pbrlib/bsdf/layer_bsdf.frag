@@ -55,6 +55,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.05);
   lobe0.eta = 1.2;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0, 0.0, 0.0);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -72,6 +73,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.T = v4;
   lobe3.alpha = vec2(0.05);
   lobe3.eta = 2.5;
+  lobe3.etaAbove = 1.0;
   lobe3.c0 = vec3(1.0);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);
@@ -89,6 +91,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe6.T = g.T;
   lobe6.alpha = vec2(0.0);
   lobe6.eta = 1.5;
+  lobe6.etaAbove = 1.0;
   lobe6.c0 = vec3(1.0);
   lobe6.c1 = vec3(1.0);
   lobe6.c2 = vec3(1.0);
@@ -106,6 +109,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe9.T = g.T;
   lobe9.alpha = vec2(0.0);
   lobe9.eta = 1.5;
+  lobe9.etaAbove = 1.0;
   lobe9.c0 = vec3(0.18);
   lobe9.c1 = vec3(1.0);
   lobe9.c2 = vec3(1.0);
@@ -185,6 +189,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v3;
   lobe0.alpha = vec2(0.05);
   lobe0.eta = 1.8;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -202,6 +207,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.T = v3;
   lobe3.alpha = vec2(0.05);
   lobe3.eta = 1.5;
+  lobe3.etaAbove = 1.0;
   lobe3.c0 = vec3(1.0);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);

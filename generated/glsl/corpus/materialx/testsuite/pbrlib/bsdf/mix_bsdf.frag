@@ -52,6 +52,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe1.T = g.T;
   lobe1.alpha = vec2(0.0);
   lobe1.eta = 1.5;
+  lobe1.etaAbove = 1.0;
   lobe1.c0 = vec3(0.0, 0.73, 0.1);
   lobe1.c1 = vec3(1.0);
   lobe1.c2 = vec3(1.0);
@@ -67,6 +68,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe2.T = g.T;
   lobe2.alpha = vec2(0.0);
   lobe2.eta = 1.5;
+  lobe2.etaAbove = 1.0;
   lobe2.c0 = vec3(0.96, 0.1, 0.1);
   lobe2.c1 = vec3(1.0);
   lobe2.c2 = vec3(1.0);
@@ -143,6 +145,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe1.T = g.T;
   lobe1.alpha = vec2(0.0);
   lobe1.eta = 1.5;
+  lobe1.etaAbove = 1.0;
   lobe1.c0 = vec3(0.96, 0.1, 0.1);
   lobe1.c1 = vec3(1.0);
   lobe1.c2 = vec3(1.0);
@@ -158,6 +161,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe2.T = v3;
   lobe2.alpha = vec2(0.05);
   lobe2.eta = 1.52;
+  lobe2.etaAbove = 1.0;
   lobe2.c0 = vec3(1.0);
   lobe2.c1 = vec3(1.0);
   lobe2.c2 = vec3(1.0);
@@ -231,6 +235,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = g.T;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.1, 0.1, 0.8);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);

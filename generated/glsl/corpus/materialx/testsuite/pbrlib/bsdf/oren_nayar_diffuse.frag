@@ -51,6 +51,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = g.T;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.6);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -122,6 +123,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = g.T;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.6);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -193,6 +195,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = g.T;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.6);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -264,6 +267,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = g.T;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.6);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -335,6 +339,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = g.T;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.6);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);

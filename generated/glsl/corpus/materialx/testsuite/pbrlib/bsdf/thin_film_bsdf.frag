@@ -53,6 +53,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v3;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 2.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -127,6 +128,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 2.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -144,6 +146,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.T = g.T;
   lobe3.alpha = vec2(0.0);
   lobe3.eta = 1.5;
+  lobe3.etaAbove = 1.0;
   lobe3.c0 = vec3(1.0);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);
@@ -220,6 +223,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 2.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(1.0);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -237,6 +241,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.T = g.T;
   lobe3.alpha = vec2(0.0);
   lobe3.eta = 1.5;
+  lobe3.etaAbove = 1.0;
   lobe3.c0 = vec3(1.0);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);
@@ -312,6 +317,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 2.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.1, 1.0, 0.1);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
@@ -329,6 +335,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe3.T = v4;
   lobe3.alpha = vec2(0.3);
   lobe3.eta = 1.5;
+  lobe3.etaAbove = 1.0;
   lobe3.c0 = vec3(1.0);
   lobe3.c1 = vec3(1.0);
   lobe3.c2 = vec3(1.0);
@@ -405,6 +412,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe1.T = v4;
   lobe1.alpha = vec2(0.3);
   lobe1.eta = 1.5;
+  lobe1.etaAbove = 1.0;
   lobe1.c0 = vec3(1.0, 0.0, 0.0);
   lobe1.c1 = vec3(1.0);
   lobe1.c2 = vec3(1.0);
@@ -420,6 +428,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe2.T = v4;
   lobe2.alpha = vec2(0.3);
   lobe2.eta = 2.5;
+  lobe2.etaAbove = 1.0;
   lobe2.c0 = vec3(0.0, 1.0, 0.0);
   lobe2.c1 = vec3(1.0);
   lobe2.c2 = vec3(1.0);
@@ -496,6 +505,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe1.T = v3;
   lobe1.alpha = vec2(0.0);
   lobe1.eta = 2.5;
+  lobe1.etaAbove = 1.0;
   lobe1.c0 = vec3(1.0);
   lobe1.c1 = vec3(1.0);
   lobe1.c2 = vec3(1.0);
@@ -569,6 +579,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v4;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.18, 0.42, 1.37);
   lobe0.c1 = vec3(3.42, 2.35, 1.77);
   lobe0.c2 = vec3(1.0);
@@ -642,6 +653,7 @@ void mxc_material_closure(in MxcGeometry g, vec3 wo, out MxcClosure c) {
   lobe0.T = v3;
   lobe0.alpha = vec2(0.0);
   lobe0.eta = 1.5;
+  lobe0.etaAbove = 1.0;
   lobe0.c0 = vec3(0.04);
   lobe0.c1 = vec3(1.0);
   lobe0.c2 = vec3(1.0);
