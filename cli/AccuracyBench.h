@@ -15,6 +15,7 @@ namespace mxc::cli {
 /// The options of the command (cli/CommandLine.cpp defines them).
 struct AccuracyBenchOptions {
   std::vector<std::string> files;  ///< documents (every material of each); empty: the fixed set
+  bool withFixedSet = false;       ///< --fixed-set: the fixed set as well as `files`
   std::string corpus;              ///< --corpus: where the fixed set's documents are
   std::string reportDir = "generated/reports";
   /// The reference's estimates are refined (walks or frames x4) until their noise is below half

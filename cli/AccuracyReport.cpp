@@ -55,7 +55,8 @@ std::string accuracyMarkdown(const AccuracyReport& r) {
                     r.command, r.device, r.date);
   md += fmt::format(
       "- **albedo**: relative RMS error of the directional albedo (R + T, luminance) over {} views from 0 to 80 "
-      "degrees, from `mxc furnace` (fast and balanced: 2^20 samples per view).\n"
+      "degrees, from `mxc furnace` (fast and balanced: 2^20 samples per view). **albedo abs**: the mean absolute "
+      "error of the same albedo over the views and the three channels.\n"
       "- **f cos**: RMS error of f(wo, wi) |cos| (luminance) over {} fixed direction pairs (reflection and "
       "transmission), over the reference's RMS; n/a where the reference is 0 on every pair (only delta lobes).\n"
       "- **image**: RMS error of the luminance of a {}x{} sphere under the analytic sky (fast and balanced: "
@@ -72,15 +73,17 @@ std::string accuracyMarkdown(const AccuracyReport& r) {
       r.frameSize);
 
   md += "## Medians over the materials\n\n";
-  md += "| tier | albedo error | f cos error | image error | ns per eval | ms per frame | SPIR-V instructions |\n";
-  md += "|---|---:|---:|---:|---:|---:|---:|\n";
+  md += "| tier | albedo error | albedo abs | f cos error | image error | ns per eval | ms per frame | SPIR-V "
+        "instructions |\n";
+  md += "|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (Accuracy a : kAccuracies) {
     std::vector<double> counts;
     for (const MaterialFigures& m : r.materials) counts.push_back(double(m.tier(a).spirvInstructions));
     std::sort(counts.begin(), counts.end());
-    md += fmt::format("| {}{} | {} | {} | {} | {} | {} | {} |\n", accuracyName(a),
+    md += fmt::format("| {}{} | {} | {} | {} | {} | {} | {} | {} |\n", accuracyName(a),
                       a == Accuracy::Reference ? " (its noise)" : "",
                       number(medianOver(r, a, &TierFigures::albedoError), 4),
+                      number(medianOver(r, a, &TierFigures::albedoMeanAbs), 4),
                       number(medianOver(r, a, &TierFigures::fcosError), 4),
                       number(medianOver(r, a, &TierFigures::imageError), 4),
                       number(medianOver(r, a, &TierFigures::nsPerEval), 0),
@@ -105,16 +108,40 @@ std::string accuracyMarkdown(const AccuracyReport& r) {
         referenceRatios[referenceRatios.size() / 2]);
   }
 
+  // The worst materials of each tier, by the absolute albedo error and by the f cos error.
+  md += "## The worst five per tier\n\n";
+  md += "| tier | by albedo abs | by f cos error |\n|---|---|---|\n";
+  for (Accuracy a : kAccuracies) {
+    if (a == Accuracy::Reference) continue;
+    auto worst = [&](double TierFigures::*figure) {
+      std::vector<std::pair<double, std::string>> v;
+      for (const MaterialFigures& m : r.materials) {
+        if (std::isfinite(m.tier(a).*figure)) v.emplace_back(m.tier(a).*figure, m.name);
+      }
+      std::sort(v.begin(), v.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+      std::string cell;
+      for (size_t i = 0; i < std::min<size_t>(v.size(), 5); ++i) {
+        cell += fmt::format("{}{} {:.4f}", i ? ", " : "", v[i].second, v[i].first);
+      }
+      return cell;
+    };
+    md += fmt::format("| {} | {} | {} |\n", accuracyName(a), worst(&TierFigures::albedoMeanAbs),
+                      worst(&TierFigures::fcosError));
+  }
+  md += "\n";
+
   md += "## Per material\n\n";
-  md += "| material | tier | albedo error | f cos error | image error | ns per eval | ms per frame | SPIR-V |\n";
-  md += "|---|---|---:|---:|---:|---:|---:|---:|\n";
+  md += "| material | tier | albedo error | albedo abs | f cos error | image error | ns per eval | ms per frame | "
+        "SPIR-V |\n";
+  md += "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const MaterialFigures& m : r.materials) {
     const TierFigures& ref = m.tier(Accuracy::Reference);
     for (const TierFigures& t : m.tiers) {
       const bool isRef = t.tier == Accuracy::Reference;
-      md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", t.tier == Accuracy::Fast ? m.name : "",
+      md += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", t.tier == Accuracy::Fast ? m.name : "",
                         isRef ? "reference (noise)" : std::string(accuracyName(t.tier)),
                         error(t.albedoError, isRef ? NAN : ref.albedoError),
+                        error(t.albedoMeanAbs, isRef ? NAN : ref.albedoMeanAbs),
                         error(t.fcosError, isRef ? NAN : ref.fcosError),
                         error(t.imageError, isRef ? NAN : ref.imageError), number(t.nsPerEval, 0),
                         number(t.msPerFrame, 1), t.spirvInstructions);
@@ -143,7 +170,8 @@ std::string accuracyMarkdown(const AccuracyReport& r) {
 
 std::string accuracyCsv(const AccuracyReport& r) {
   std::string csv =
-      "material,source,tier,albedo_error,fcos_error,image_error,ns_per_eval,ms_per_frame,spirv_instructions,"
+      "material,source,tier,albedo_error,albedo_mean_abs,fcos_error,image_error,ns_per_eval,ms_per_frame,"
+      "spirv_instructions,"
       "reference_albedo_walks,reference_eval_walks,reference_image_frames\n";
   auto field = [](double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : std::string(); };
   auto quoted = [](const std::string& s) {
@@ -153,8 +181,9 @@ std::string accuracyCsv(const AccuracyReport& r) {
   };
   for (const MaterialFigures& m : r.materials) {
     for (const TierFigures& t : m.tiers) {
-      csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", quoted(m.name), quoted(m.source),
-                         accuracyName(t.tier), field(t.albedoError), field(t.fcosError), field(t.imageError),
+      csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{}\n", quoted(m.name), quoted(m.source),
+                         accuracyName(t.tier), field(t.albedoError), field(t.albedoMeanAbs), field(t.fcosError),
+                         field(t.imageError),
                          field(t.nsPerEval), field(t.msPerFrame), t.spirvInstructions, m.reference.albedoWalks,
                          m.reference.evalWalks, m.reference.imageFrames);
     }

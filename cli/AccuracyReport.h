@@ -19,6 +19,9 @@ struct TierFigures {
   Accuracy tier = Accuracy::Balanced;
   /// Relative RMS error of the directional albedo (R + T, luminance) over the view angles.
   double albedoError = NAN;
+  /// Mean absolute error of the directional albedo (R + T) over the view angles and the three
+  /// channels: an absolute measure, which a dark material's relative error overstates.
+  double albedoMeanAbs = NAN;
   /// RMS error of f cos (luminance) over the direction pairs, over the RMS of the reference's.
   double fcosError = NAN;
   /// RMS error of the rendered image's luminance over the reference's RMS luminance.

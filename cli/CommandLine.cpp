@@ -351,6 +351,8 @@ void registerBench(CLI::App& app, int& exitCode) {
                       "fuzz, metal, glass, subsurface, thin film and emission");
   command->add_option("--corpus", options->corpus, "The corpus folder of the fixed set (default: ../shared/corpus "
                       "beside the source tree)");
+  command->add_flag("--fixed-set", options->withFixedSet,
+                    "With FILES: the fixed set first, then the materials of FILES it does not hold already");
   command->add_option("--report-dir", options->reportDir, "Folder of the report files (default: generated/reports)");
   command->add_option("--albedo-walks", options->albedoWalks, "Cap of the reference's walks per view")
       ->check(CLI::Range(64, 1 << 26));

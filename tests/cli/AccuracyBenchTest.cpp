@@ -50,35 +50,39 @@ TEST(AccuracyBench, WritesTheReportOfOneRunAndTheTiersAgreeOnALambertian) {
   std::string line;
   ASSERT_TRUE(std::getline(csv, line));
   const std::vector<std::string> header = fields(line);
-  ASSERT_EQ(header.size(), 12u) << line;
+  ASSERT_EQ(header.size(), 13u) << line;
   EXPECT_EQ(header[3], "albedo_error");
+  EXPECT_EQ(header[4], "albedo_mean_abs");
   std::vector<std::vector<std::string>> rows;
   while (std::getline(csv, line)) rows.push_back(fields(line));
   ASSERT_EQ(rows.size(), 3u);
   const char* tiers[] = {"fast", "balanced", "reference"};
-  const double referenceImageNoise = std::stod(rows[2][5]);
+  const double referenceImageNoise = std::stod(rows[2][6]);
   for (size_t t = 0; t < 3; ++t) {
-    ASSERT_EQ(rows[t].size(), 12u);
+    ASSERT_EQ(rows[t].size(), 13u);
     EXPECT_EQ(rows[t][2], tiers[t]);
-    const double albedo = std::stod(rows[t][3]), fcos = std::stod(rows[t][4]), image = std::stod(rows[t][5]);
+    const double albedo = std::stod(rows[t][3]), albedoAbs = std::stod(rows[t][4]), fcos = std::stod(rows[t][5]),
+                 image = std::stod(rows[t][6]);
     // The albedo of a Lambertian is its colour at every view on every tier: fast and balanced
     // sample it exactly, and the reference's walk leaves it at once.
     EXPECT_LT(albedo, 1e-3) << tiers[t];
+    EXPECT_LT(albedoAbs, 1e-3) << tiers[t];
     EXPECT_LT(fcos, 0.05) << tiers[t];  // reference: 64 walks per pair, of a lobe with one event
     // The image's error is the reference's noise (4 frames) and the tiers' (4 frames each).
     if (t < 2) {
       EXPECT_LT(image, 3.0 * referenceImageNoise + 0.02) << tiers[t];
     }
-    EXPECT_GT(std::stod(rows[t][6]), 0.0) << "ns per eval";
-    EXPECT_GT(std::stod(rows[t][7]), 0.0) << "ms per frame";
-    EXPECT_GT(std::stoul(rows[t][8]), 100u) << "SPIR-V instructions";
-    EXPECT_GE(std::stoul(rows[t][9]), 2048u) << "the albedo cap is reached: there is no error to resolve";
+    EXPECT_GT(std::stod(rows[t][7]), 0.0) << "ns per eval";
+    EXPECT_GT(std::stod(rows[t][8]), 0.0) << "ms per frame";
+    EXPECT_GT(std::stoul(rows[t][9]), 100u) << "SPIR-V instructions";
+    EXPECT_GE(std::stoul(rows[t][10]), 2048u) << "the albedo cap is reached: there is no error to resolve";
   }
 
   const std::string md = readAll(folder / "accuracy.md");
   EXPECT_NE(md.find("mxc bench accuracy --albedo-walks 2048"), std::string::npos) << "the reproducing command";
   EXPECT_NE(md.find("| balanced |"), std::string::npos);
   EXPECT_NE(md.find("Balanced's median albedo error is"), std::string::npos);
+  EXPECT_NE(md.find("## The worst five per tier"), std::string::npos);
   auto png = rt::readImage(folder / "accuracy.png");
   ASSERT_TRUE(std::holds_alternative<rt::RgbaImage>(png)) << std::get<std::string>(png);
   const rt::RgbaImage& plot = std::get<rt::RgbaImage>(png);
@@ -106,6 +110,11 @@ TEST(AccuracyBench, RefusesBeforeMeasuringAndWritesNothing) {
   EXPECT_EQ(r.exitCode, 1) << r.err;
   EXPECT_NE(r.err.find("bad.mtlx:3:3"), std::string::npos) << r.err;
   r = mxc("bench accuracy --report-dir " + folder.path().string() + " --corpus " + folder.path().string() + kQuick);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("--corpus"), std::string::npos) << r.err;
+  // The fixed set as well as a document: its documents are looked for first.
+  r = mxc("bench accuracy --fixed-set --report-dir " + folder.path().string() + " --corpus " + folder.path().string() +
+          kQuick + " " + good);
   EXPECT_EQ(r.exitCode, 2) << r.err;
   EXPECT_NE(r.err.find("--corpus"), std::string::npos) << r.err;
   for (const char* name : {"accuracy.md", "accuracy.csv", "accuracy.png"}) EXPECT_FALSE(fs::exists(folder / name));
