@@ -13,6 +13,7 @@
 #include "compiler/common/InputFile.h"
 #include "compiler/common/OutputFile.h"
 #include "compiler/common/Parallel.h"
+#include "compiler/common/Quote.h"
 
 namespace mxc::rt {
 
@@ -86,11 +87,11 @@ std::variant<RgbaImage, std::string> readImage(const std::filesystem::path& path
                                                std::vector<std::string>* warnings) {
   std::string error;
   const ImageCodec* c = codec(error);
-  if (!c) return fmt::format("cannot read image '{}': {}", path.string(), error);
+  if (!c) return fmt::format("cannot read image {}: {}", quotedValue(path.string()), error);
   // Read here, as a regular file of bounded size: OpenImageIO given /dev/zero spins forever and
   // given a FIFO blocks forever.
   auto bytes = readInputFile(path, kMaxImageFileBytes);
-  if (auto* why = std::get_if<1>(&bytes)) return fmt::format("cannot read image '{}': {}", path.string(), *why);
+  if (auto* why = std::get_if<1>(&bytes)) return fmt::format("cannot read image {}: {}", quotedValue(path.string()), *why);
   std::vector<std::string> ignored;
   return c->read(path, std::get<0>(bytes), options, warnings ? *warnings : ignored);
 }

@@ -16,6 +16,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
+#include "compiler/common/Quote.h"
 #include "runtime/ImageIO.h"
 
 namespace mxc::rt {
@@ -63,11 +64,11 @@ std::variant<RgbaImage, std::string> read(const std::filesystem::path& path, con
   auto input = OIIO::ImageInput::open(name, nullptr, fromMemory ? &memory : nullptr);
   if (!input) {
     std::string why = OIIO::geterror();
-    return fmt::format("cannot read image '{}': {}", name, why.empty() ? "not an image file OpenImageIO reads" : why);
+    return fmt::format("cannot read image {}: {}", quotedValue(name), why.empty() ? "not an image file OpenImageIO reads" : why);
   }
   const OIIO::ImageSpec spec = input->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1) {
-    return fmt::format("cannot read image '{}': unsupported size or channels", name);
+    return fmt::format("cannot read image {}: unsupported size or channels", quotedValue(name));
   }
   const uint64_t width = static_cast<uint64_t>(spec.width), height = static_cast<uint64_t>(spec.height);
   const int channels = spec.nchannels;
@@ -92,7 +93,7 @@ std::variant<RgbaImage, std::string> read(const std::filesystem::path& path, con
     image.texels.assign(size_t{image.width} * image.height * 4, 0);
     const int read = std::min(channels, 4);
     if (!input->read_image(0, 0, 0, read, OIIO::TypeDesc::UINT8, image.texels.data(), 4)) {
-      return fmt::format("cannot read image '{}': {}", name, input->geterror());
+      return fmt::format("cannot read image {}: {}", quotedValue(name), input->geterror());
     }
     for (size_t i = 0; i < size_t{image.width} * image.height; ++i) {
       uint8_t* p = &image.texels[i * 4];
@@ -108,7 +109,7 @@ std::variant<RgbaImage, std::string> read(const std::filesystem::path& path, con
     // Straight into the RGBA layout (x stride of 4 floats), then widened in place.
     const int read = std::min(channels, 4);
     if (!input->read_image(0, 0, 0, read, OIIO::TypeDesc::FLOAT, image.pixels.data(), 4 * sizeof(float))) {
-      return fmt::format("cannot read image '{}': {}", name, input->geterror());
+      return fmt::format("cannot read image {}: {}", quotedValue(name), input->geterror());
     }
     for (size_t i = 0; i < size_t{image.width} * image.height; ++i) {
       float* p = &image.pixels[i * 4];
@@ -121,7 +122,7 @@ std::variant<RgbaImage, std::string> read(const std::filesystem::path& path, con
     std::vector<double> sums(size_t{image.width} * 4, 0.0);
     for (uint64_t y = 0; y < height; ++y) {
       if (!input->read_scanline(static_cast<int>(y), 0, OIIO::TypeDesc::FLOAT, row.data())) {
-        return fmt::format("cannot read image '{}': {}", name, input->geterror());
+        return fmt::format("cannot read image {}: {}", quotedValue(name), input->geterror());
       }
       for (uint64_t x = 0; x < width; ++x) {
         float rgba[4];

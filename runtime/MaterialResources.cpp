@@ -6,6 +6,7 @@
 
 #include "compiler/common/ColorSpace.h"
 #include "compiler/common/InputFile.h"
+#include "compiler/common/Quote.h"
 #include "runtime/ImageIO.h"
 
 namespace mxc::rt {
@@ -27,7 +28,7 @@ MaterialResources::MaterialResources(VulkanContext& context, const glsl::Materia
       diagnostics.warning(t.origin, "an image node has no file: its default value is used");
     } else if (auto problem = inputFileProblem(path); problem && *problem != "it does not exist") {
       // A FIFO would block and /dev/zero would never end: refused before anything opens them.
-      diagnostics.error(t.origin, fmt::format("cannot read image '{}': {}", path.string(), *problem));
+      diagnostics.error(t.origin, fmt::format("cannot read image {}: {}", quotedValue(path.string()), *problem));
     } else {
       // An sRGB-encoded colour space (srgb_texture, srgb_displayp3): the device decodes the
       // texels; the shader converts the primaries (compiler/lower/StdlibRules.cpp).

@@ -2,31 +2,11 @@
 
 #include <fmt/format.h>
 
+#include "compiler/common/Quote.h"
+
 namespace mxc {
 
 namespace {
-
-/// The length of the well-formed UTF-8 sequence at `text[i]`, or 0 when it is not one
-/// (RFC 3629: no overlong forms, no surrogates, nothing above U+10FFFF).
-size_t utf8Length(std::string_view text, size_t i) {
-  const auto b = [&](size_t k) { return static_cast<unsigned char>(text[i + k]); };
-  const size_t left = text.size() - i;
-  const unsigned char c = b(0);
-  if (c < 0x80) return 1;
-  auto cont = [&](size_t k) { return k < left && (b(k) & 0xC0) == 0x80; };
-  if (c >= 0xC2 && c <= 0xDF) return cont(1) ? 2 : 0;
-  if (c >= 0xE0 && c <= 0xEF) {
-    if (!cont(1) || !cont(2)) return 0;
-    if ((c == 0xE0 && b(1) < 0xA0) || (c == 0xED && b(1) > 0x9F)) return 0;
-    return 3;
-  }
-  if (c >= 0xF0 && c <= 0xF4) {
-    if (!cont(1) || !cont(2) || !cont(3)) return 0;
-    if ((c == 0xF0 && b(1) < 0x90) || (c == 0xF4 && b(1) > 0x8F)) return 0;
-    return 4;
-  }
-  return 0;
-}
 
 /// Control characters of a document (an ESC sequence, a bell, a C1 control) and bytes that are
 /// not UTF-8 must not reach a terminal raw: they would be obeyed or garble it, not be shown.
@@ -38,7 +18,7 @@ std::string printable(std::string_view text, bool oneColumn) {
   out.reserve(text.size());
   for (size_t i = 0; i < text.size();) {
     const auto b = static_cast<unsigned char>(text[i]);
-    const size_t length = utf8Length(text, i);
+    const size_t length = utf8SequenceLength(text, i);
     const bool c0 = (b < 0x20 && b != '\t' && b != '\n') || b == 0x7F;
     // C1 controls U+0080..U+009F, encoded in UTF-8 as C2 80..C2 9F.
     const bool c1 = length == 2 && b == 0xC2 && static_cast<unsigned char>(text[i + 1]) <= 0x9F;

@@ -9,6 +9,7 @@
 
 #include "compiler/common/ColorSpace.h"
 #include "compiler/common/LargeStack.h"
+#include "compiler/common/Quote.h"
 #include "compiler/lower/InlineSource.h"
 #include "compiler/resolve/Resolver.h"
 
@@ -241,8 +242,8 @@ ir::ExprId Context::toWorkingSpace(ir::ExprId color, std::string_view space, Sou
   const ColorSpace* from = findColorSpace(space);
   if (!from) {
     if (reportedSpaces_.insert(std::string(space)).second) {
-      diagnostics.warning(where, fmt::format("colorspace '{}' is not one mxc knows ({}); its colours are used as they are",
-                                             space, fmt::join(colorSpaceNames(), ", ")));
+      diagnostics.warning(where, fmt::format("colorspace {} is not one mxc knows ({}); its colours are used as they are",
+                                             quotedValue(space), fmt::join(colorSpaceNames(), ", ")));
     }
     return color;
   }

@@ -48,7 +48,7 @@ TEST(InputSafety, SpecialFilesAreRefusedNotRead) {
     writeText(doc, imageDocument(path));
     // The image error is at the file input: line 4 of the document.
     cases.push_back({"image " + path, "render " + doc.string() + " -o " + (folder / "x.png").string() + " --size 8 --spp 1",
-                     doc.string() + ":4:5: error: cannot read image '" + path + "': " + kind});
+                     doc.string() + ":4:5: error: cannot read image \"" + path + "\": " + kind});
     cases.push_back({"mesh " + path, "render " + corpus(kDefault) + " -o " + (folder / "x.png").string() + " --mesh " + path,
                      "cannot read the mesh '" + path + "': " + kind});
     cases.push_back({"document " + path, "inspect " + path, "cannot read '" + path + "': " + kind});

@@ -133,6 +133,39 @@ TEST(ShaderBuilder, TexturesBecomeBindingsWithTheirColourSpace) {
   EXPECT_NE(std::find(spaces.begin(), spaces.end(), "srgb_texture"), spaces.end());
 }
 
+// A newline (&#10;) in an image's file or colour space was copied raw into a `//` comment, so
+// the rest of the value became shader code (here a #define that made every surface
+// transparent), and a trailing backslash joined the next line to the comment.
+TEST(ShaderBuilder, TextFromTheDocumentCannotBecomeShaderCode) {
+  const std::string injected = "x.png&#10;#define mxc_luminance(x) 1.0&#10;//";
+  const std::string text = mtlx(
+      "  <image name=\"img\" type=\"color3\">\n"
+      "    <input name=\"file\" type=\"filename\" value=\"" + injected + "\" colorspace=\"srgb_texture&#10;#define MXC_INJECTED 1&#13;\\\"/>\n"
+      "  </image>\n"
+      "  <image name=\"img2\" type=\"color3\"><input name=\"file\" type=\"filename\" value=\"c:\\dir\\\"/></image>\n"
+      "  <multiply name=\"both\" type=\"color3\"><input name=\"in1\" type=\"color3\" nodename=\"img\"/>"
+      "<input name=\"in2\" type=\"color3\" nodename=\"img2\"/></multiply>\n"
+      "  <open_pbr_surface name=\"s\" type=\"surfaceshader\">\n"
+      "    <input name=\"base_color\" type=\"color3\" nodename=\"both\"/>\n"
+      "  </open_pbr_surface>\n  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
+      "type=\"surfaceshader\" nodename=\"s\" /></surfacematerial>\n");
+  Context context;
+  std::vector<ir::Material> materials = lowerText(context, text);
+  ASSERT_EQ(materials.size(), 1u) << context.diagnostics.format();
+  glsl::MaterialShader shader = buildShader(materials[0], glsl::ShaderKind::Raster);
+  ASSERT_EQ(shader.interface.textures.size(), 2u);
+  const std::string& glsl = shader.glsl.text;
+  EXPECT_EQ(glsl.find("\n#define mxc_luminance"), std::string::npos);
+  EXPECT_EQ(glsl.find("\n#define MXC_INJECTED"), std::string::npos);
+  // Each declaration stays one line, its comment quoted, escaped and ended by the quote.
+  EXPECT_NE(glsl.find("// \"x.png\\n#define mxc_luminance(x) 1.0\\n//\" (\"srgb_texture\\n#define MXC_INJECTED 1\\r\\\\\")\n"),
+            std::string::npos);
+  EXPECT_NE(glsl.find("// \"c:\\\\dir\\\\\"\n"), std::string::npos);
+  for (char c : glsl) EXPECT_FALSE((static_cast<unsigned char>(c) < 0x20 && c != '\n') || c == 0x7F) << int(c);
+  // And it compiles (glslang reads what the device would).
+  EXPECT_FALSE(compiledWords(shader).empty());
+}
+
 TEST(ShaderBuilder, MaterialLinesMapToTheDocument) {
   Context context;
   std::vector<ir::Material> materials = lowerText(context, openPbr("    <input name=\"coat_weight\" type=\"float\" value=\"1\" />\n"));

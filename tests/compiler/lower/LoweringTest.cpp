@@ -136,7 +136,7 @@ TEST(Lowering, AnUnknownColourSpaceIsReportedOnceAndLeftAlone) {
                                "value=\"0.5, 0.4, 0.3\" colorspace=\"bogus_space\"/>\n"));
   int warnings = 0;
   for (const Diagnostic& d : l.context->diagnostics.all()) {
-    if (d.message.find("colorspace 'bogus_space' is not one mxc knows") != std::string::npos) ++warnings;
+    if (d.message.find("colorspace \"bogus_space\" is not one mxc knows") != std::string::npos) ++warnings;
   }
   EXPECT_EQ(warnings, 1) << l.context->diagnostics.format();
 }
