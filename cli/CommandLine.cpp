@@ -6,12 +6,14 @@
 #include "cli/CommandLine.h"
 
 #include <algorithm>
+#include <functional>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -63,6 +65,9 @@ CLI::Validator finiteNumber(bool nonNegative) {
       nonNegative ? "NUMBER >= 0" : "NUMBER");
 }
 
+/// Set while parseCommandLineWords parses: the commands' callbacks then run nothing.
+thread_local bool tParseOnly = false;
+
 void addLibraryOptions(CLI::App& command, LibraryOptions& options) {
   command.add_option("--library", options.folders,
                      "Node library folder (every .mtlx under it) or file, layered over the built-in library; "
@@ -71,17 +76,14 @@ void addLibraryOptions(CLI::App& command, LibraryOptions& options) {
 }
 
 void addInputOptions(CLI::App& command, MaterialOptions& options) {
-  // One value per occurrence: `--set a=1 FILE` must not take FILE as a second override.
   command.add_option("--set", options.set,
                      "Override an input of the shading node: INPUT=VALUE, the value written as in a document "
                      "(--set base_color=0.8,0.2,0.1); repeatable")
-      ->type_name("INPUT=VALUE")
-      ->allow_extra_args(false);
+      ->type_name("INPUT=VALUE");
   command.add_option("--param", options.parameters,
                      "Keep an input of the shading node variable: a uniform of the shader, with the document's (or "
                      "--set's) value as its default; repeatable")
-      ->type_name("INPUT")
-      ->allow_extra_args(false);
+      ->type_name("INPUT");
   std::string names;
   for (Accuracy a : kAccuracies) names += (names.empty() ? "" : "|") + std::string(accuracyName(a));
   command
@@ -167,7 +169,7 @@ void registerInspect(CLI::App& app, int& exitCode) {
   addInputOptions(*command, options->inputs);
   addSearchPathOption(*command, options->inputs);
   addLibraryOptions(*command, options->libraries);
-  command->callback([options, &exitCode] { exitCode = runInspect(*options); });
+  command->callback([options, &exitCode] { if (tParseOnly) return; exitCode = runInspect(*options); });
 }
 
 void registerCompile(CLI::App& app, int& exitCode) {
@@ -234,7 +236,7 @@ void registerCompile(CLI::App& app, int& exitCode) {
           },
           ""));
   addMaterialOptions(*command, options->materials);
-  command->callback([options, &exitCode] { exitCode = runCompile(*options); });
+  command->callback([options, &exitCode] { if (tParseOnly) return; exitCode = runCompile(*options); });
 }
 
 void registerEval(CLI::App& app, int& exitCode) {
@@ -249,7 +251,7 @@ void registerEval(CLI::App& app, int& exitCode) {
   command->add_option("-o,--output", options->output, "Write the CSV here (atomically) instead of stdout");
   addMaterialOptions(*command, options->materials);
   addDeviceOptions(*command, options->device);
-  command->callback([options, &exitCode] { exitCode = runEval(*options); });
+  command->callback([options, &exitCode] { if (tParseOnly) return; exitCode = runEval(*options); });
 }
 
 void registerFurnace(CLI::App& app, int& exitCode) {
@@ -266,7 +268,7 @@ void registerFurnace(CLI::App& app, int& exitCode) {
   command->add_option("-o,--output", options->output, "Write the JSON here (atomically) instead of stdout");
   addMaterialOptions(*command, options->materials);
   addDeviceOptions(*command, options->device);
-  command->callback([options, &exitCode] { exitCode = runFurnace(*options); });
+  command->callback([options, &exitCode] { if (tParseOnly) return; exitCode = runFurnace(*options); });
 }
 
 void registerRender(CLI::App& app, int& exitCode) {
@@ -327,7 +329,7 @@ void registerRender(CLI::App& app, int& exitCode) {
   command->add_option("--fov", options->fovDegrees, "Vertical field of view in degrees")->check(CLI::Range(1.0, 170.0));
   addMaterialOptions(*command, options->materials);
   addDeviceOptions(*command, options->device);
-  command->callback([options, command, &exitCode] {
+  command->callback([options, command, &exitCode] { if (tParseOnly) return;
     for (const CLI::Option* option : command->get_options()) {
       if (option->count() > 0 && !option->get_lnames().empty()) options->explicitOptions.push_back("--" + option->get_lnames()[0]);
     }
@@ -368,7 +370,7 @@ void registerBench(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(8, 4096));
   addLibraryOptions(*command, options->libraries);
   addDeviceOptions(*command, options->device);
-  command->callback([options, &exitCode] { exitCode = runAccuracyBench(*options); });
+  command->callback([options, &exitCode] { if (tParseOnly) return; exitCode = runAccuracyBench(*options); });
 
   auto specialize = std::make_shared<SpecializationBenchOptions>();
   command = bench->add_subcommand(
@@ -393,7 +395,7 @@ void registerBench(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(1, 100));
   addLibraryOptions(*command, specialize->libraries);
   addDeviceOptions(*command, specialize->device);
-  command->callback([specialize, &exitCode] { exitCode = runSpecializationBench(*specialize); });
+  command->callback([specialize, &exitCode] { if (tParseOnly) return; exitCode = runSpecializationBench(*specialize); });
 }
 
 /// -q and -v on every command (cli/Verbosity.h): one setting for the process.
@@ -413,6 +415,16 @@ void addVerbosityOptions(CLI::App& app) {
         "device)");
     q->excludes(v);
   }
+}
+
+/// Every option takes one value per occurrence, as compilers' options do (`-I DIR FILE`): a
+/// list option (--library, --search-path, --set, render's -o, ...) would otherwise take every
+/// word that follows it, the document included. Recurses into every command.
+void oneValuePerOccurrence(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
+    if (!option->get_positional() && option->get_type_size() != 0) option->allow_extra_args(false);
+  }
+  for (CLI::App* command : app.get_subcommands({})) oneValuePerOccurrence(*command);
 }
 
 /// --help's defaults, shown as CLI11 captured them from the options structs, less those that
@@ -473,6 +485,7 @@ void defineCommandLine(CLI::App& app, int& exitCode) {
   registerRender(app, exitCode);
   registerBench(app, exitCode);
   addVerbosityOptions(app);
+  oneValuePerOccurrence(app);
   tidyDefaults(app);
 }
 
@@ -536,6 +549,44 @@ CommandSpec describeCommandLine() {
   CommandSpec spec = describe(app);
   spec.footer = kExitCodes;
   return spec;
+}
+
+/// The name OptionSpec gives an option first (describe()).
+static std::string firstName(const CLI::Option& option) {
+  if (option.get_positional()) return option.get_name(true, false);
+  if (!option.get_snames().empty()) return "-" + option.get_snames().front();
+  return "--" + option.get_lnames().front();
+}
+
+ParsedCommandLine parseCommandLineWords(const std::vector<std::string>& words) {
+  CLI::App app{kDescription, "mxc"};
+  int exitCode = kOk;
+  defineCommandLine(app, exitCode);
+  // Parse, do not run: every command's callback returns at once (replacing the callbacks
+  // would free the options they own, which the parsed values are written to).
+  struct ParseOnly {
+    ParseOnly() { tParseOnly = true; }
+    ~ParseOnly() { tParseOnly = false; }
+  } parseOnly;
+  std::vector<std::string> argv = words;
+  std::reverse(argv.begin(), argv.end());  // CLI11 takes a vector last word first
+  try {
+    app.parse(argv);
+  } catch (const CLI::ParseError& e) {
+    throw std::invalid_argument(e.what());
+  }
+  ParsedCommandLine parsed;
+  const CLI::App* command = &app;
+  for (;;) {
+    const std::vector<const CLI::App*> chosen = command->get_subcommands([](const CLI::App* c) { return c->parsed(); });
+    if (chosen.empty()) break;
+    command = chosen.front();
+    parsed.command += (parsed.command.empty() ? "" : " ") + command->get_name();
+  }
+  for (const CLI::Option* option : command->get_options()) {
+    if (option->count() > 0) parsed.values[firstName(*option)] = option->results();
+  }
+  return parsed;
 }
 
 int runCommandLine(int argc, char** argv) {

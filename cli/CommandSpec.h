@@ -4,6 +4,7 @@
 /// (cli/CommandLine.cpp, describeCommandLine), so that the shell completions and the man page
 /// are generated from the same definition as --help and can never disagree with it.
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,16 @@ struct CommandSpec {
 
 /// The whole command line (cli/CommandLine.cpp).
 CommandSpec describeCommandLine();
+
+/// A command line as mxc's parser assigns its words, without running the command: the command
+/// ("compile", "bench accuracy") and the values each option and positional took, in order, by
+/// the name OptionSpec gives it first ("--library", "file"). For tests of the grammar; a usage
+/// error throws std::invalid_argument with the parser's message.
+struct ParsedCommandLine {
+  std::string command;
+  std::map<std::string, std::vector<std::string>> values;
+};
+ParsedCommandLine parseCommandLineWords(const std::vector<std::string>& words);
 
 /// A bash completion script (`complete -F _mxc mxc`): commands, options, the choices of an
 /// option that names them, file names for every other value but numbers.

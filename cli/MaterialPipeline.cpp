@@ -125,7 +125,10 @@ std::string fileSafeName(const std::string& material) {
 }
 
 std::filesystem::path perMaterialPath(const std::filesystem::path& path, const std::string& material, bool several) {
-  if (!several || path == "-") return path;
+  // A folder (`-o dir/`) is no file name to derive names from: kept, so that it is refused as
+  // it is for one material ("it is a directory"), not turned into dir/_A.
+  std::error_code ec;
+  if (!several || path == "-" || !path.has_filename() || std::filesystem::is_directory(path, ec)) return path;
   std::filesystem::path out = path;
   out.replace_filename(fmt::format("{}_{}{}", path.stem().string(), fileSafeName(material), path.extension().string()));
   return out;

@@ -24,18 +24,13 @@ struct TargetIdentity {
   fs::path resolved;
 };
 
-bool sameTarget(const TargetIdentity& a, const TargetIdentity& b) {
-  if (a.standard || b.standard) return a.standard == b.standard;
-  if (a.exists && b.exists && a.device == b.device && a.inode == b.inode) return true;
-  return a.resolved == b.resolved;
-}
-
 }  // namespace
 
 std::optional<std::string> OutputSet::declare(const fs::path& path, const std::string& option) {
   auto resolved = resolveOutput(path);
   if (auto* error = std::get_if<std::string>(&resolved)) return fmt::format("{}: {}", option, *error);
   entries_.push_back({std::move(std::get<OutputTarget>(resolved)), option, std::nullopt, std::nullopt});
+  byRequested_.try_emplace(entries_.back().target.requested.native(), entries_.size() - 1);  // the first keeps it
   return std::nullopt;
 }
 
@@ -61,13 +56,30 @@ std::optional<std::string> OutputSet::checkDistinct() const {
     if (added) folder->second = fs::weakly_canonical(folder->first, ec);
     id.resolved = folder->second / absolute.filename();
   }
+  // Each target against those before it through two maps (the file it is, and its resolved
+  // path), not pairwise: a batch declares a hundred thousand outputs.
+  std::map<std::pair<dev_t, ino_t>, size_t> byFile;
+  std::map<fs::path, size_t> byPath;
+  std::optional<size_t> standard;
   for (size_t i = 0; i < entries_.size(); ++i) {
-    for (size_t k = 0; k < i; ++k) {
-      const Entry &a = entries_[k], &b = entries_[i];
-      if (b.target.kind == OutputTarget::Kind::Special || !sameTarget(identities[k], identities[i])) continue;
-      return fmt::format("{} '{}' and {} '{}' name the same file: one would overwrite the other", a.option,
-                         a.target.requested.string(), b.option, b.target.requested.string());
+    const TargetIdentity& id = identities[i];
+    std::optional<size_t> earlier;
+    if (id.standard) {
+      earlier = standard;
+      if (!standard) standard = i;
+    } else {
+      if (id.exists) {
+        auto [at, added] = byFile.try_emplace({id.device, id.inode}, i);
+        if (!added) earlier = at->second;
+      }
+      auto [at, added] = byPath.try_emplace(id.resolved, i);
+      if (!added && !earlier) earlier = at->second;
     }
+    // A device is written through, never replaced: two outputs may name it (/dev/null).
+    if (!earlier || entries_[i].target.kind == OutputTarget::Kind::Special) continue;
+    const Entry &a = entries_[*earlier], &b = entries_[i];
+    return fmt::format("{} '{}' and {} '{}' name the same file: one would overwrite the other", a.option,
+                       a.target.requested.string(), b.option, b.target.requested.string());
   }
   return std::nullopt;
 }
@@ -87,10 +99,8 @@ std::optional<std::string> OutputSet::checkNotInput(const fs::path& input, const
 }
 
 OutputSet::Entry* OutputSet::find(const fs::path& path) {
-  for (Entry& e : entries_) {
-    if (e.target.requested == path) return &e;
-  }
-  return nullptr;
+  auto found = byRequested_.find(path.native());
+  return found == byRequested_.end() ? nullptr : &entries_[found->second];
 }
 
 std::vector<std::filesystem::path> OutputSet::paths() const {
@@ -121,6 +131,14 @@ std::optional<std::string> OutputSet::stage(const fs::path& path, std::string by
 
 std::optional<std::string> OutputSet::commit() {
   if (!complete()) return std::string("internal error: an output was not produced");
+  // Standard output and special files first: they cannot be taken back, so the regular files
+  // are replaced only once every one of them was written (`-o a.exr -o -` with standard output
+  // full keeps the old a.exr). Written with no lock: a FIFO without a reader may block here,
+  // and an interrupt must still be able to end the process.
+  for (Entry& e : entries_) {
+    if (!e.bytes) continue;
+    if (auto error = writeThrough(e.target, *e.bytes)) return error;
+  }
   {
     // Every rename under the lock that the signal thread takes before removing temporaries: an
     // interrupt waits until the set is committed.
@@ -130,13 +148,8 @@ std::optional<std::string> OutputSet::commit() {
       if (auto error = e.staged->commit()) return error;
     }
   }
-  // Written after the files, with no lock: a FIFO without a reader may block here, and an
-  // interrupt must still be able to end the process.
-  for (Entry& e : entries_) {
-    if (!e.bytes) continue;
-    if (auto error = writeThrough(e.target, *e.bytes)) return error;
-  }
   entries_.clear();
+  byRequested_.clear();
   return std::nullopt;
 }
 

@@ -8,13 +8,15 @@
 /// - until `commit`, no output path has changed: files are staged in temporaries beside them;
 /// - `commit` renames every staged file with termination signals held off, so an interrupt
 ///   leaves all of the regular files of the set replaced or none;
-/// - outputs that are not regular files (standard output, a device, a FIFO) are written after
-///   the regular files, directly, since there is nothing to replace atomically;
+/// - outputs that are not regular files (standard output, a device, a FIFO) are written first,
+///   directly, since there is nothing to replace atomically; the regular files are replaced
+///   only when every one of those succeeded;
 /// - a failure, or the set destroyed uncommitted, removes every temporary and keeps old files.
 
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "compiler/common/OutputFile.h"
@@ -53,6 +55,8 @@ class OutputSet {
   };
   Entry* find(const std::filesystem::path& path);
   std::vector<Entry> entries_;
+  /// The first entry of each requested path (stage() looks outputs up by it).
+  std::unordered_map<std::string, size_t> byRequested_;
 };
 
 /// Prints "error: MESSAGE" to stderr when there is a message; returns whether there was one.

@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <optional>
+#include <string_view>
 #include <tuple>
 
 #include <fmt/format.h>
@@ -379,7 +383,69 @@ std::variant<Mesh, std::string> loadGltf(const std::filesystem::path& path, cons
 // ---------------------------------------------------------------------------------------------
 // OBJ
 
+/// Numbers of an OBJ file that tinyobjloader would misread: `v nan` and `v inf` (and a value
+/// beyond a float's range) it reads as 0, and a face index beyond an int's range wraps (to -1,
+/// a valid relative index). Checked here, with the line and column, before it parses.
+std::optional<std::string> objNumberProblem(const std::filesystem::path& path, std::string_view text) {
+  size_t lineNo = 0;
+  for (size_t start = 0; start < text.size();) {
+    size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = text.substr(start, end - start);
+    ++lineNo;
+    start = end + 1;
+    size_t i = 0;
+    auto skipBlank = [&] {
+      while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    };
+    auto token = [&] {
+      const size_t from = i;
+      while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r' && line[i] != '#') ++i;
+      return line.substr(from, i - from);
+    };
+    skipBlank();
+    const std::string_view keyword = token();
+    const bool vertexData = keyword == "v" || keyword == "vn" || keyword == "vt";
+    const bool face = keyword == "f" || keyword == "l" || keyword == "p";
+    if (!vertexData && !face) continue;
+    for (;;) {
+      skipBlank();
+      if (i >= line.size() || line[i] == '#') break;
+      const size_t column = i + 1;
+      const std::string_view word = token();
+      auto where = [&] { return fmt::format("{}:{}:{}", path.string(), lineNo, column); };
+      if (vertexData) {
+        // strtod reads nan, inf and 1e400 (as inf) as they are: what must be refused.
+        const std::string copy(word);
+        char* stop = nullptr;
+        const double v = std::strtod(copy.c_str(), &stop);
+        if (stop != copy.c_str() && !std::isfinite(static_cast<float>(v))) {
+          return fmt::format("{}: '{}' is not a finite number (a vertex's values must be)", where(), word);
+        }
+        continue;
+      }
+      // v, v/vt, v//vn, v/vt/vn: each present index an integer an int holds.
+      for (size_t from = 0; from <= word.size();) {
+        size_t slash = word.find('/', from);
+        if (slash == std::string_view::npos) slash = word.size();
+        const std::string_view part = word.substr(from, slash - from);
+        if (!part.empty()) {
+          long long value = 0;
+          const std::errc ec = std::from_chars(part.data(), part.data() + part.size(), value).ec;
+          const bool fits = value <= std::numeric_limits<int>::max() && value >= std::numeric_limits<int>::min();
+          if (ec == std::errc::result_out_of_range || (ec == std::errc() && !fits)) {
+            return fmt::format("{}: face index {} is out of range", where(), part);
+          }
+        }
+        from = slash + 1;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 std::variant<Mesh, std::string> loadObjText(const std::filesystem::path& path, const std::string& text) {
+  if (auto problem = objNumberProblem(path, text)) return *problem;
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;

@@ -1,10 +1,13 @@
 #include "compiler/lower/InlineSource.h"
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <optional>
 
 #include <fmt/format.h>
+
+#include "compiler/ir/Fold.h"
 
 namespace mxc::lower {
 
@@ -76,8 +79,29 @@ class Parser {
   ExprId toFloat(ExprId e) { return typeOf(e) == Type::Int || typeOf(e) == Type::Bool ? b_.convert(e, Type::Float) : e; }
   static Operand of(ExprId e) { return Operand{e, nullptr, {}}; }
 
+  /// Counts the grammar's recursion (a parenthesis, an operand of ?:, a unary operator, an
+  /// index, a call's argument), so that nesting deeper than kMaxDepth is an error at its
+  /// position rather than a stack overflow.
+  class Nesting {
+   public:
+    explicit Nesting(Parser& p) : p_(p) {
+      if (++p_.depth_ > kMaxDepth) p_.fail(fmt::format("the expression nests more than {} levels (parentheses, operands, prefix operators)", kMaxDepth));
+    }
+    ~Nesting() { --p_.depth_; }
+    Nesting(const Nesting&) = delete;
+    Nesting& operator=(const Nesting&) = delete;
+
+   private:
+    Parser& p_;
+  };
+  /// Far beyond any expression written by hand (a level is a parenthesis, an operand or a
+  /// prefix operator inside another), and far below what the stack holds: about ten frames of
+  /// a few hundred bytes per level, under 2 MB in all.
+  static constexpr int kMaxDepth = 1000;
+
   // --- Grammar (GLSL precedence, lowest first) ---
   Operand ternary() {
+    const Nesting nesting(*this);
     const size_t at = (skipSpace(), pos_);
     Operand condition = logicalOr();
     if (!accept("?")) return condition;
@@ -216,12 +240,17 @@ class Parser {
   Operand unary() {
     const size_t at = (skipSpace(), pos_);
     if (accept("-")) {
+      const Nesting nesting(*this);
       ExprId e = toFloat(value(unary(), at));
       if (!isNumeric(typeOf(e))) failAt(at, fmt::format("cannot negate a {}", name(e)));
       return of(b_.neg(e));
     }
-    if (accept("+")) return unary();
+    if (accept("+")) {
+      const Nesting nesting(*this);
+      return unary();
+    }
     if (accept("!")) {
+      const Nesting nesting(*this);
       ExprId e = value(unary(), at);
       if (typeOf(e) != Type::Bool) failAt(at, fmt::format("! takes a bool, not a {}", name(e)));
       return of(g_.op(Op::Not, Type::Bool, {e}));
@@ -237,7 +266,7 @@ class Parser {
         o = member(o, identifier(), at);
       } else if (accept("[")) {
         const size_t indexAt = (skipSpace(), pos_);
-        ExprId index = value(ternary(), indexAt);
+        ExprId index = folded(value(ternary(), indexAt));
         expect("]");
         o = of(element(value(o, at), index, at));
       } else {
@@ -297,6 +326,19 @@ class Parser {
     return result;
   }
 
+  /// `e` with its constant subexpressions folded (so that an index such as -1 or 3 - 1 is
+  /// known to be a constant and checked against the vector's size). The recursion follows
+  /// the expression just parsed, whose depth Nesting bounds.
+  ExprId folded(ExprId e) {
+    if (g_.isConstant(e) || g_[e].argCount == 0) return e;
+    std::vector<ExprId> args = g_.argsOf(e);
+    for (ExprId& a : args) a = folded(a);
+    const ir::Expr expr = g_[e];  // a copy: folding may grow the graph
+    const std::string text = ir::hasTextPayload(expr.op) ? g_.text(e) : std::string();
+    if (std::optional<ExprId> f = ir::foldExpression(g_, expr, args, text)) return *f;
+    return e;
+  }
+
   std::string_view identifier() {
     skipSpace();
     const size_t start = pos_;
@@ -350,6 +392,11 @@ class Parser {
     const double v = std::strtod(text.c_str(), &end);
     const size_t length = static_cast<size_t>(end - text.c_str());
     if (length == 0) fail("expected a number");
+    // A literal beyond a 32-bit float's range would reach the shader as inf (GLSL has no such
+    // literal); one below its smallest normal rounds towards 0, as GLSL's own literals do.
+    if (!std::isfinite(static_cast<float>(v))) {
+      fail(fmt::format("the number {} is outside the range of a 32-bit float", std::string_view(begin, length)));
+    }
     pos_ += length;
     if (pos_ < s_.size() && (s_[pos_] == 'f' || s_[pos_] == 'F' || s_[pos_] == 'u' || s_[pos_] == 'U')) ++pos_;
     // GLSL literals are ints or floats; arithmetic converts, so a float serves both.
@@ -379,6 +426,8 @@ class Parser {
         failAt(at, fmt::format("{}() takes {} argument{}, given {}", fn, count, count == 1 ? "" : "s", args.size()));
       }
     };
+    // Every check of the arguments' count comes before the first read of args[i], in its own
+    // statement: C++ evaluates a call's arguments in an unspecified order.
     if (fn.substr(0, 3) == "mx_") fn.remove_prefix(3);
     for (ExprId& a : args) a = toFloat(a);
     auto same = [&](size_t count) {
@@ -405,7 +454,10 @@ class Parser {
         {"transpose", Op::Transpose}, {"inverse", Op::Inverse},
     };
     for (const Unary& u : kUnary) {
-      if (fn == u.name) return g_.op(u.op, same(1), {args[0]});
+      if (fn == u.name) {
+        const Type t = same(1);
+        return g_.op(u.op, t, {args[0]});
+      }
     }
     if (fn == "min" || fn == "max" || fn == "pow" || fn == "mod") {
       const Type t = same(2);
@@ -413,12 +465,19 @@ class Parser {
       return g_.op(op, t, {args[0], args[1]});
     }
     if (fn == "atan") {
+      if (args.empty()) arity(1);
       if (args.size() == 1) args.push_back(b_.f(1.0f));  // atan(y) = atan(y, 1)
-      return g_.op(Op::Atan2, same(2), {args[0], args[1]});
+      const Type t = same(2);
+      return g_.op(Op::Atan2, t, {args[0], args[1]});
     }
-    if (fn == "clamp") return g_.op(Op::Clamp, same(3), {args[0], args[1], args[2]});
-    if (fn == "smoothstep") return g_.op(Op::SmoothStep, same(3), {args[0], args[1], args[2]});
-    if (fn == "step") return g_.op(Op::Step, same(2), {args[0], args[1]});
+    if (fn == "clamp" || fn == "smoothstep") {
+      const Type t = same(3);
+      return g_.op(fn == "clamp" ? Op::Clamp : Op::SmoothStep, t, {args[0], args[1], args[2]});
+    }
+    if (fn == "step") {
+      const Type t = same(2);
+      return g_.op(Op::Step, t, {args[0], args[1]});
+    }
     if (fn == "mix") {
       arity(3);
       // mix(x, y, a): a is a float or of x's type.
@@ -430,17 +489,22 @@ class Parser {
       return b_.lerp(args[0], args[1], args[2]);
     }
     if (fn == "dot" || fn == "length" || fn == "distance" || fn == "determinant") {
-      if (fn == "length") return g_.op(Op::Length, Type::Float, {(arity(1), args[0])});
-      if (fn == "determinant") return g_.op(Op::Determinant, Type::Float, {(arity(1), args[0])});
+      if (fn == "length" || fn == "determinant") {
+        arity(1);
+        return g_.op(fn == "length" ? Op::Length : Op::Determinant, Type::Float, {args[0]});
+      }
       same(2);
       if (fn == "dot") return b_.dot(args[0], args[1]);
       return g_.op(Op::Length, Type::Float, {b_.sub(args[0], args[1])});
     }
     if (fn == "cross") {
-      if (same(2) != Type::Vec3) failAt(at, "cross() takes two vec3");
+      if (same(2) != Type::Vec3) failAt(at, "cross() takes two vec3");  // same() checked the arity
       return g_.op(Op::Cross, Type::Vec3, {args[0], args[1]});
     }
-    if (fn == "reflect") return g_.op(Op::Reflect, same(2), {args[0], args[1]});
+    if (fn == "reflect") {
+      const Type t = same(2);
+      return g_.op(Op::Reflect, t, {args[0], args[1]});
+    }
     if (fn == "matrix_mul") {
       arity(2);
       return arithmetic(Op::Mul, args[0], args[1], at);
@@ -470,18 +534,29 @@ class Parser {
   ir::ExprGraph& g_;
   std::string_view s_;
   size_t pos_ = 0;
+  int depth_ = 0;
 };
 
 }  // namespace
 
 ir::ExprId lowerInlineSource(Context& c, const NodeRef& n, const doc::Implementation& implementation,
                              std::string_view output, ir::Type type) {
+  // The source as the message quotes it: a long one is cut (at a character's start), so that
+  // the message's reason still shows (Diagnostics cuts a message at 1000 bytes).
+  std::string_view shown = implementation.sourcecode;
+  std::string cut;
+  if (shown.size() > 160) {
+    size_t end = 120;
+    while (end > 0 && (static_cast<unsigned char>(shown[end]) & 0xC0) == 0x80) --end;
+    cut = fmt::format("{}... ({} characters)", shown.substr(0, end), shown.size());
+    shown = cut;
+  }
   auto report = [&](size_t at, const std::string& why) {
     c.error(n.node->node->location,
             fmt::format("<{}> '{}' is implemented by inline source code (implementation '{}', {}): \"{}\": at "
                         "character {}: {}",
                         n.node->category(), n.node->name(), implementation.name, implementation.location.str(),
-                        implementation.sourcecode, at + 1, why));
+                        shown, at + 1, why));
     return ir::kNoExpr;
   };
   if (n.node->signature && n.node->signature->outputs.size() > 1) {

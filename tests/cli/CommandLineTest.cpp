@@ -4,8 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
 #include <string>
+#include <vector>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "cli/CommandSpec.h"
 #include "support/CommandSupport.h"
 
 namespace mxc::test {
@@ -48,6 +54,69 @@ TEST(CommandLine, DashIsStandardOutputForEveryOutput) {
   r = mxc("compile " + two.string() + " -o - --material B");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   fs::remove(two);
+}
+
+// `mxc compile --library DIR FILE -o OUT` failed with "no document to compile": a list option
+// took every word after it, FILE included. Every repeatable option of every command takes one
+// value per occurrence, before or after the positional.
+TEST(CommandLine, EachOptionTakesOneValuePerOccurrenceBeforeOrAfterTheDocument) {
+  const cli::CommandSpec top = cli::describeCommandLine();
+  std::vector<std::pair<std::vector<std::string>, const cli::CommandSpec*>> commands;
+  for (const cli::CommandSpec& c : top.commands) {
+    if (c.commands.empty()) commands.push_back({{c.name}, &c});
+    for (const cli::CommandSpec& sub : c.commands) commands.push_back({{c.name, sub.name}, &sub});
+  }
+  const std::string folderA = fs::temp_directory_path().string(), folderB = sourceDir().string();
+  std::set<std::string> checked;
+  for (const auto& [path, command] : commands) {
+    std::string positional;
+    for (const cli::OptionSpec& o : command->options) {
+      if (!o.positional.empty()) positional = o.positional;
+    }
+    for (const cli::OptionSpec& o : command->options) {
+      // The command's other required options, given once (render's -o, eval's --dirs).
+      std::vector<std::string> required;
+      for (const cli::OptionSpec& other : command->options) {
+        if (other.required && !other.names.empty() && &other != &o) required.insert(required.end(), {other.names.front(), "x.csv"});
+      }
+      if (!o.repeatable || o.names.empty() || o.value.empty()) continue;
+      const std::string& name = o.names.front();
+      // Values the option's own check accepts.
+      std::string a = folderA, b = folderB;
+      if (!o.choices.empty()) a = o.choices.front(), b = o.choices.back();
+      else if (o.number) a = "1", b = "2";
+      else if (o.value == "INPUT=VALUE") a = "base_weight=1", b = "coat_weight=1";
+      const std::string joined = fmt::format("{}", fmt::join(path, " "));
+      std::vector<std::string> before = path;
+      before.insert(before.end(), {name, a, "doc.mtlx"});
+      before.insert(before.end(), required.begin(), required.end());
+      std::vector<std::string> after = path;
+      after.insert(after.end(), {"doc.mtlx", name, a, name, b});
+      after.insert(after.end(), required.begin(), required.end());
+      try {
+        const cli::ParsedCommandLine first = cli::parseCommandLineWords(before);
+        EXPECT_EQ(first.command, joined);
+        EXPECT_EQ(first.values.at(name), std::vector<std::string>{a}) << joined << " " << name << " " << a << " doc.mtlx";
+        if (!positional.empty()) {
+          EXPECT_EQ(first.values.at(positional), std::vector<std::string>{"doc.mtlx"}) << joined << " " << name;
+        }
+        const cli::ParsedCommandLine second = cli::parseCommandLineWords(after);
+        EXPECT_EQ(second.values.at(name), (std::vector<std::string>{a, b})) << joined << " doc.mtlx " << name;
+        if (!positional.empty()) {
+          EXPECT_EQ(second.values.at(positional), std::vector<std::string>{"doc.mtlx"}) << joined << " " << name;
+        }
+      } catch (const std::exception& e) {
+        ADD_FAILURE() << joined << " " << name << ": " << e.what();
+      }
+      checked.insert(joined + " " + name);
+    }
+  }
+  // The cases among them (24 options in all today).
+  for (const char* c : {"compile --library", "compile --search-path", "inspect --library", "render -o", "render --set",
+                        "eval --param", "bench accuracy --library"}) {
+    EXPECT_EQ(checked.count(c), 1u) << c;
+  }
+  EXPECT_GE(checked.size(), 20u);
 }
 
 TEST(CommandLine, HelpShowsTheDefaults) {

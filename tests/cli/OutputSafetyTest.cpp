@@ -178,6 +178,44 @@ TEST(OutputSafety, StandardOutputErrorsExit3) {
   EXPECT_EQ(mxc("compile -q " + corpus(kDefault), "", ">&-").exitCode, 0);
 }
 
+// Standard output cannot be taken back: the regular files of the set are replaced only once it
+// was written. Before, `-o - --glsl g.glsl >/dev/full` exited 3 with g.glsl already replaced.
+TEST(OutputSafety, AFailedStandardOutputReplacesNoFileOfTheSet) {
+  TempFolder folder("stdout_first");
+  writeText(folder / "g.glsl", "old");
+  writeText(folder / "a.exr", "old");
+  CommandRun r = mxc("compile " + corpus(kDefault) + " -o - --glsl " + (folder / "g.glsl").string(), "", ">/dev/full");
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_NE(r.err.find("standard output"), std::string::npos) << r.err;
+  EXPECT_EQ(readFileBytes(folder / "g.glsl"), "old");
+  r = mxc("render " + corpus(kDefault) + " -o " + (folder / "a.exr").string() + " -o - --format png --size 16 --spp 1", "",
+          ">/dev/full");
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  EXPECT_EQ(readFileBytes(folder / "a.exr"), "old");
+  expectNoTemporaries(folder);
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"a.exr", "g.glsl"}));
+  // With standard output writable, both are written.
+  r = mxc("compile " + corpus(kDefault) + " -o - --glsl " + (folder / "g.glsl").string(), "", ">/dev/null");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(readFileBytes(folder / "g.glsl").rfind("#version", 0), 0u);
+}
+
+// `-o dir/` names no file: refused for two materials as for one, not written as dir/_first.
+TEST(OutputSafety, AFolderAsTheOutputOfSeveralMaterialsIsRefused) {
+  TempFolder folder("folder_output");
+  writeText(folder / "two.mtlx", kTwoMaterials);
+  fs::create_directory(folder / "out");
+  for (const std::string command : {"compile", "render"}) {
+    for (const std::string& output : {(folder / "out").string() + "/", (folder / "out").string()}) {
+      const std::string options = command == "render" ? " --size 16 --spp 1" : "";
+      CommandRun r = mxc(command + " " + (folder / "two.mtlx").string() + " -o " + output + options);
+      EXPECT_EQ(r.exitCode, 3) << command << " -o " << output << ": " << r.err;
+      EXPECT_NE(r.err.find("it is a directory"), std::string::npos) << r.err;
+      EXPECT_TRUE(fs::is_empty(folder / "out")) << command << " -o " << output;
+    }
+  }
+}
+
 // --- Outputs against inputs and each other ------------------------------------------------
 
 TEST(OutputSafety, AnOutputThatIsAnInputIsAUsageError) {

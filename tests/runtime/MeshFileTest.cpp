@@ -110,6 +110,19 @@ TEST(ObjMesh, RefusesMalformedFilesNamingThem) {
   const fs::path nan = writeTemp("nan.obj", "v 0 0 0\nv 1 0 0\nv 0 1e39 0\nf 1 2 3\n");
   const std::string why = loadError(nan);
   EXPECT_NE(why.find("nan.obj"), std::string::npos) << why;
+  // tinyobjloader reads nan and inf as 0, and wraps an index beyond an int to -1 (the last
+  // vertex): refused at their line and column.
+  for (const char* value : {"nan", "inf", "-inf", "1e400", "NaN"}) {
+    const fs::path bad = writeTemp("bad_value.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 ") + value + " 0\nf 1 2 3\n");
+    const std::string message = loadError(bad);
+    EXPECT_NE(message.find("bad_value.obj:3:5: '" + std::string(value) + "' is not a finite number"), std::string::npos)
+        << message;
+  }
+  const fs::path wraps = writeTemp("wraps.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999\n");
+  EXPECT_NE(loadError(wraps).find("wraps.obj:4:7: face index 99999999999999999999 is out of range"), std::string::npos)
+      << loadError(wraps);
+  const fs::path wrapsSlash = writeTemp("wraps2.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/4294967297\n");
+  EXPECT_NE(loadError(wrapsSlash).find("face index 4294967297 is out of range"), std::string::npos) << loadError(wrapsSlash);
   const fs::path absent = writeTemp("absent.obj", "");
   fs::remove(absent);
   EXPECT_NE(loadError(absent).find("absent.obj"), std::string::npos);

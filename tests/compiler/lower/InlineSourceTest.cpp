@@ -128,6 +128,45 @@ TEST(InlineSource, MistakesAreReportedWithTheImplementationAndTheCharacter) {
   EXPECT_NE(trailing.error.find("unexpected ')' after the expression"), std::string::npos) << trailing.error;
 }
 
+TEST(InlineSource, ABuiltInGivenTooFewArgumentsIsAnErrorNotACrash) {
+  // Before the fix the first argument was read before its count was checked (a crash, exit
+  // 139, under every one of these).
+  for (const char* call : {"sin()", "abs()", "atan()", "clamp(1.0)", "step(1.0)", "smoothstep(0.0, 1.0)", "normalize()",
+                           "reflect({{in}})", "floor()", "length()", "determinant()", "cross({{in}})", "min(1.0)"}) {
+    Emitted e = probe("vector3", "0.1, 0.2, 0.3", std::string("vec3(") + call + ")");
+    EXPECT_NE(e.error.find("argument"), std::string::npos) << call << ": " << e.error;
+    EXPECT_NE(e.error.find("given "), std::string::npos) << call << ": " << e.error;
+  }
+}
+
+TEST(InlineSource, NestingDeeperThanTheLimitIsReportedAtItsPosition) {
+  // 1000 levels parse (GLSL written by hand never comes near); a million would overflow the stack.
+  const std::string ok = std::string(999, '(') + "{{in}}" + std::string(999, ')');
+  expectColor(probe("float", "0.5", "vec3" + ok), {0.5f, 0.5f, 0.5f});
+  const std::string deep = std::string(1000000, '(') + "{{in}}" + std::string(1000000, ')');
+  Emitted e = probe("float", "0.5", "vec3" + deep);
+  EXPECT_NE(e.error.find("nests more than 1000 levels"), std::string::npos) << e.error.substr(0, 300);
+  // Level 1 is the whole expression, 2 vec3's argument (character 6), k + 1 the inside of the
+  // k-th parenthesis: level 1001 starts at character 1005.
+  EXPECT_NE(e.error.find("at character 1005"), std::string::npos) << e.error.substr(0, 300);
+  EXPECT_NE(e.error.find("... (2000010 characters)"), std::string::npos) << e.error.substr(0, 300);
+  Emitted minus = probe("float", "0.5", "vec3(" + std::string(1000000, '-') + "{{in}})");
+  EXPECT_NE(minus.error.find("nests more than 1000 levels"), std::string::npos) << minus.error.substr(0, 300);
+}
+
+TEST(InlineSource, AConstantIndexOutsideTheVectorAndAnInfiniteLiteralAreErrors) {
+  // [-1] read the last component silently; [3 - 1] is a constant and reads z.
+  Emitted negative = probe("vector3", "0.1, 0.2, 0.3", "vec3({{in}}[-1])");
+  EXPECT_NE(negative.error.find("index -1 is outside a vec3"), std::string::npos) << negative.error;
+  EXPECT_NE(probe("vector3", "0.1, 0.2, 0.3", "vec3({{in}}[1 + 2])").error.find("index 3 is outside a vec3"), std::string::npos);
+  expectColor(probe("vector3", "0.1, 0.2, 0.3", "vec3({{in}}[3 - 1])"), {0.3f, 0.3f, 0.3f});
+  // 1e400 reached glslang as inf ("undeclared identifier" at a generated line).
+  Emitted huge = probe("float", "0.5", "vec3(1e400 * {{in}})");
+  EXPECT_NE(huge.error.find("the number 1e400 is outside the range of a 32-bit float"), std::string::npos) << huge.error;
+  EXPECT_NE(huge.error.find("at character 6"), std::string::npos) << huge.error;
+  expectColor(probe("float", "0.5", "vec3(1e-400 + {{in}})"), {0.5f, 0.5f, 0.5f});
+}
+
 TEST(InlineSource, BadStructLiteralsAreReportedAtTheirPosition) {
   Emitted tooFew = probe("texcoord_struct", "{0.1}", "vec3({{in}}.ss)");
   EXPECT_NE(tooFew.error.find("texcoord_struct has 2 members (ss, tt), the value gives 1"), std::string::npos)
