@@ -148,8 +148,6 @@ double relativeRms(const std::vector<double>& values, const std::vector<double>&
   return std::sqrt(sum / double(reference.size()));  // reference is not empty
 }
 
-/// RMS error over the reference's RMS: the relative error of a signal with zeros and peaks
-/// (f cos, an image). NaN when the reference is 0 everywhere.
 /// Mean absolute difference over the views and the three channels.
 double meanAbsolute(const std::vector<glm::vec3>& values, const std::vector<glm::dvec3>& reference) {
   double sum = 0.0;
@@ -159,6 +157,8 @@ double meanAbsolute(const std::vector<glm::vec3>& values, const std::vector<glm:
   return reference.empty() ? NAN : sum / (3.0 * double(reference.size()));  // > 0 views
 }
 
+/// RMS error over the reference's RMS: the relative error of a signal with zeros and peaks
+/// (f cos, an image). NaN when the reference is 0 everywhere.
 double normalisedRms(const std::vector<double>& values, const std::vector<double>& reference) {
   double error = 0.0, signal = 0.0;
   for (size_t i = 0; i < reference.size(); ++i) {

@@ -6,11 +6,11 @@
 #include "cli/CommandLine.h"
 
 #include <algorithm>
-#include <functional>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -67,6 +67,14 @@ CLI::Validator finiteNumber(bool nonNegative) {
 
 /// Set while parseCommandLineWords parses: the commands' callbacks then run nothing.
 thread_local bool tParseOnly = false;
+
+/// Runs `action` when `command` is parsed, its result the exit code (but under
+/// parseCommandLineWords, which parses only).
+void onRun(CLI::App& command, int& exitCode, std::function<int()> action) {
+  command.callback([action = std::move(action), &exitCode] {
+    if (!tParseOnly) exitCode = action();
+  });
+}
 
 void addLibraryOptions(CLI::App& command, LibraryOptions& options) {
   command.add_option("--library", options.folders,
@@ -169,7 +177,7 @@ void registerInspect(CLI::App& app, int& exitCode) {
   addInputOptions(*command, options->inputs);
   addSearchPathOption(*command, options->inputs);
   addLibraryOptions(*command, options->libraries);
-  command->callback([options, &exitCode] { if (tParseOnly) return; exitCode = runInspect(*options); });
+  onRun(*command, exitCode, [options] { return runInspect(*options); });
 }
 
 void registerCompile(CLI::App& app, int& exitCode) {
@@ -236,7 +244,7 @@ void registerCompile(CLI::App& app, int& exitCode) {
           },
           ""));
   addMaterialOptions(*command, options->materials);
-  command->callback([options, &exitCode] { if (tParseOnly) return; exitCode = runCompile(*options); });
+  onRun(*command, exitCode, [options] { return runCompile(*options); });
 }
 
 void registerEval(CLI::App& app, int& exitCode) {
@@ -251,7 +259,7 @@ void registerEval(CLI::App& app, int& exitCode) {
   command->add_option("-o,--output", options->output, "Write the CSV here (atomically) instead of stdout");
   addMaterialOptions(*command, options->materials);
   addDeviceOptions(*command, options->device);
-  command->callback([options, &exitCode] { if (tParseOnly) return; exitCode = runEval(*options); });
+  onRun(*command, exitCode, [options] { return runEval(*options); });
 }
 
 void registerFurnace(CLI::App& app, int& exitCode) {
@@ -268,7 +276,7 @@ void registerFurnace(CLI::App& app, int& exitCode) {
   command->add_option("-o,--output", options->output, "Write the JSON here (atomically) instead of stdout");
   addMaterialOptions(*command, options->materials);
   addDeviceOptions(*command, options->device);
-  command->callback([options, &exitCode] { if (tParseOnly) return; exitCode = runFurnace(*options); });
+  onRun(*command, exitCode, [options] { return runFurnace(*options); });
 }
 
 void registerRender(CLI::App& app, int& exitCode) {
@@ -329,11 +337,11 @@ void registerRender(CLI::App& app, int& exitCode) {
   command->add_option("--fov", options->fovDegrees, "Vertical field of view in degrees")->check(CLI::Range(1.0, 170.0));
   addMaterialOptions(*command, options->materials);
   addDeviceOptions(*command, options->device);
-  command->callback([options, command, &exitCode] { if (tParseOnly) return;
+  onRun(*command, exitCode, [options, command] {
     for (const CLI::Option* option : command->get_options()) {
       if (option->count() > 0 && !option->get_lnames().empty()) options->explicitOptions.push_back("--" + option->get_lnames()[0]);
     }
-    exitCode = runRender(*options);
+    return runRender(*options);
   });
 }
 
@@ -370,7 +378,7 @@ void registerBench(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(8, 4096));
   addLibraryOptions(*command, options->libraries);
   addDeviceOptions(*command, options->device);
-  command->callback([options, &exitCode] { if (tParseOnly) return; exitCode = runAccuracyBench(*options); });
+  onRun(*command, exitCode, [options] { return runAccuracyBench(*options); });
 
   auto specialize = std::make_shared<SpecializationBenchOptions>();
   command = bench->add_subcommand(
@@ -395,7 +403,7 @@ void registerBench(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(1, 100));
   addLibraryOptions(*command, specialize->libraries);
   addDeviceOptions(*command, specialize->device);
-  command->callback([specialize, &exitCode] { if (tParseOnly) return; exitCode = runSpecializationBench(*specialize); });
+  onRun(*command, exitCode, [specialize] { return runSpecializationBench(*specialize); });
 }
 
 /// -q and -v on every command (cli/Verbosity.h): one setting for the process.
@@ -513,6 +521,14 @@ std::vector<std::string> choicesOf(const std::string& type) {
   return out;
 }
 
+/// An option's names as the command line spells them, short ones first ("-o", "--output").
+std::vector<std::string> optionNames(const CLI::Option& option) {
+  std::vector<std::string> names;
+  for (const std::string& n : option.get_snames()) names.push_back("-" + n);
+  for (const std::string& n : option.get_lnames()) names.push_back("--" + n);
+  return names;
+}
+
 CommandSpec describe(const CLI::App& app) {
   CommandSpec spec;
   spec.name = app.get_name();
@@ -520,8 +536,7 @@ CommandSpec describe(const CLI::App& app) {
   for (const CLI::Option* option : app.get_options()) {
     if (option->get_group().empty()) continue;  // hidden
     OptionSpec o;
-    for (const std::string& n : option->get_snames()) o.names.push_back("-" + n);
-    for (const std::string& n : option->get_lnames()) o.names.push_back("--" + n);
+    o.names = optionNames(*option);
     if (option->get_positional()) o.positional = option->get_name(true, false);
     if (option->get_type_size() != 0) {
       const std::string type = option->get_type_name();
@@ -553,9 +568,7 @@ CommandSpec describeCommandLine() {
 
 /// The name OptionSpec gives an option first (describe()).
 static std::string firstName(const CLI::Option& option) {
-  if (option.get_positional()) return option.get_name(true, false);
-  if (!option.get_snames().empty()) return "-" + option.get_snames().front();
-  return "--" + option.get_lnames().front();
+  return option.get_positional() ? option.get_name(true, false) : optionNames(option).front();
 }
 
 ParsedCommandLine parseCommandLineWords(const std::vector<std::string>& words) {

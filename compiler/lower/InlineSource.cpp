@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -327,16 +328,24 @@ class Parser {
   }
 
   /// `e` with its constant subexpressions folded (so that an index such as -1 or 3 - 1 is
-  /// known to be a constant and checked against the vector's size). The recursion follows
-  /// the expression just parsed, whose depth Nesting bounds.
+  /// known to be a constant and checked against the vector's size). An index may read an
+  /// input, whose upstream graph can be deep and shares nodes: each node is folded once
+  /// (`done`), and below kMaxDepth levels the rest is left as it is (the index is then
+  /// dynamic, as any index that is not a constant).
   ExprId folded(ExprId e) {
-    if (g_.isConstant(e) || g_[e].argCount == 0) return e;
+    std::unordered_map<ExprId, ExprId> done;
+    return folded(e, 0, done);
+  }
+  ExprId folded(ExprId e, int depth, std::unordered_map<ExprId, ExprId>& done) {
+    if (g_.isConstant(e) || g_[e].argCount == 0 || depth > kMaxDepth) return e;
+    if (auto known = done.find(e); known != done.end()) return known->second;
     std::vector<ExprId> args = g_.argsOf(e);
-    for (ExprId& a : args) a = folded(a);
+    for (ExprId& a : args) a = folded(a, depth + 1, done);
     const ir::Expr expr = g_[e];  // a copy: folding may grow the graph
     const std::string text = ir::hasTextPayload(expr.op) ? g_.text(e) : std::string();
-    if (std::optional<ExprId> f = ir::foldExpression(g_, expr, args, text)) return *f;
-    return e;
+    const ExprId result = ir::foldExpression(g_, expr, args, text).value_or(e);
+    done.emplace(e, result);
+    return result;
   }
 
   std::string_view identifier() {
