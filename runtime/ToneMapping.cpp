@@ -1,5 +1,8 @@
 #include "runtime/ToneMapping.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/common.hpp>
 
 namespace mxc::rt {
@@ -49,6 +52,10 @@ glm::vec3 pbrNeutral(glm::vec3 color) {
 }
 
 glm::vec3 applyToneMapping(ToneMapping tone, glm::vec3 color) {
+  // A NaN channel (which `render` reports as an error) shows as 0 rather than as whatever its
+  // conversion to 8 bits makes of it; one beyond 1e30 (an overflowed sum, inf included) is
+  // 1e30, where every curve has long saturated and PBR Neutral's arithmetic stays finite.
+  for (int c = 0; c < 3; ++c) color[c] = std::isnan(color[c]) ? 0.0f : std::min(color[c], 1e30f);
   switch (tone) {
     case ToneMapping::None: return glm::clamp(color, 0.0f, 1.0f);
     case ToneMapping::AcesFit: return {acesFit(color.r), acesFit(color.g), acesFit(color.b)};

@@ -36,6 +36,9 @@ const char* toneMappingDescription(ToneMapping tone);
 /// Narkowicz 2015, "ACES Filmic Tone Mapping Curve": x (a x + b) / (x (c x + d) + e).
 inline float acesFit(float v) {
   const float x = std::max(v, 0.0f);
+  // Above 1e4 the curve is past 1 (1.03 there, rising to 2.51 / 2.43) and clamps to 1, as it
+  // does here without x * x overflowing to inf / inf = NaN (from 1.8e19 on); inf lands here too.
+  if (x > 1e4f) return 1.0f;
   // The denominator is >= e = 0.14 > 0 for x >= 0.
   return std::clamp(x * (2.51f * x + 0.03f) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
 }

@@ -1,5 +1,8 @@
 // The tone curves of 8-bit outputs (runtime/ToneMapping.h).
 
+#include <cmath>
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -46,6 +49,25 @@ TEST(ToneMapping, CurvesAreMonotoneBoundedAndContinuous) {
   EXPECT_GT(rt::applyToneMapping(ToneMapping::AcesFit, glm::vec3(1000.0f)).r, 0.999f);
   EXPECT_GT(rt::applyToneMapping(ToneMapping::PbrNeutral, glm::vec3(1000.0f)).r, 0.999f);
   EXPECT_EQ(rt::applyToneMapping(ToneMapping::None, glm::vec3(0.3f, 2.0f, -1.0f)), glm::vec3(0.3f, 1.0f, 0.0f));
+}
+
+TEST(ToneMapping, HugeInfiniteAndNaNRadianceGiveDisplayValuesInTheUnitRange) {
+  // A 3e38 environment texel rendered a 1.2e35 pixel: ACES's x * x overflowed to inf / inf, and
+  // the PNG held NaN with exit 0. Huge and infinite radiance is white, NaN black.
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  for (ToneMapping tone : {ToneMapping::None, ToneMapping::AcesFit, ToneMapping::PbrNeutral}) {
+    for (float huge : {1e19f, 1.2e35f, 3.4e38f, inf}) {
+      const glm::vec3 y = rt::applyToneMapping(tone, glm::vec3(huge, huge, 0.5f * huge));
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_GE(y[c], 0.999f) << rt::toneMappingName(tone) << " at " << huge;
+        EXPECT_LE(y[c], 1.0f) << rt::toneMappingName(tone) << " at " << huge;
+      }
+    }
+    // (With an infinite channel beside it, PBR Neutral's desaturation would rightly whiten it.)
+    const glm::vec3 y = rt::applyToneMapping(tone, glm::vec3(nan, 0.5f, 0.25f));
+    EXPECT_EQ(y.r, 0.0f) << rt::toneMappingName(tone);
+    EXPECT_TRUE(y.g > 0.0f && y.g < 1.0f && y.b > 0.0f && y.b < 1.0f) << rt::toneMappingName(tone);
+  }
 }
 
 TEST(ToneMapping, PbrNeutralKeepsTheOrderOfChannelsInItsShoulder) {
