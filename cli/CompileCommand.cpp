@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "cli/CompileBatch.h"
+#include "cli/Depfile.h"
 #include "cli/InterfaceOutputs.h"
 #include "cli/OutputSet.h"
 #include "cli/ExitCode.h"
@@ -30,32 +31,6 @@ glsl::ShaderKind kindOf(const std::string& stage) {
 }
 
 namespace {
-
-
-/// A path in a Makefile rule, as Make and Ninja read it: spaces and '#' escaped with a
-/// backslash, '$' doubled.
-std::string makeEscape(const std::string& path) {
-  std::string out;
-  for (char c : path) {
-    if (c == ' ' || c == '#') out += '\\';
-    if (c == '$') out += '$';
-    out += c;
-  }
-  return out;
-}
-
-/// The depfile of a compile: every file written depends on every file read (the document, its
-/// includes, library files, image files), each once, in a stable order.
-std::string depfileText(const std::vector<std::filesystem::path>& written, std::vector<std::filesystem::path> read) {
-  for (auto& path : read) path = std::filesystem::absolute(path).lexically_normal();
-  std::sort(read.begin(), read.end());
-  read.erase(std::unique(read.begin(), read.end()), read.end());
-  std::string out;
-  for (const auto& path : written) out += (out.empty() ? "" : " ") + makeEscape(path.string());
-  out += ":";
-  for (const auto& path : read) out += " \\\n  " + makeEscape(path.string());
-  return out + "\n";
-}
 
 /// One material to compile, in the pipeline of its document.
 struct Unit {
@@ -182,7 +157,13 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
     for (MaterialPipeline* pipeline : pipelines) {
       for (std::filesystem::path& path : pipeline->inputFiles()) inputs.push_back(std::move(path));
     }
-    if (printError(outputs.stage(options.depfile, depfileText(written, inputs)))) return kOutputFailed;
+    std::string error;
+    const auto depfile = depfileText(written, inputs, error);
+    if (!depfile) {
+      std::fprintf(stderr, "error: --depfile %s: %s; nothing written\n", options.depfile.c_str(), error.c_str());
+      return kOutputFailed;
+    }
+    if (printError(outputs.stage(options.depfile, *depfile))) return kOutputFailed;
   }
   // All or nothing: a SPIR-V module that was not produced leaves every output as it was.
   if (!outputs.complete()) {
