@@ -19,6 +19,8 @@
 #include "cli/Verbosity.h"
 #include "compiler/document/Document.h"
 #include "compiler/glsl/ShaderBuilder.h"
+#include "compiler/glsl/ShaderInterface.h"
+#include "compiler/target/Target.h"
 #include "compiler/spirv/SpirvCompiler.h"
 
 namespace mxc::cli {
@@ -106,6 +108,12 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
              millisecondsSince(stage));
     }
     session.printDiagnostics();
+    // Whether every target's devices take the shader's textures (its interface's descriptors:
+    // the material's and mxc's own), whichever target this compile writes.
+    if (auto warning = target::textureLimitWarning(
+            target::resourcesOfInterface(glsl::shaderInterfaceJson(material, shader, kind, {})))) {
+      std::fprintf(stderr, "warning: material %s: %s\n", material.name.c_str(), warning->c_str());
+    }
     if (!options.glsl.empty()) {
       // The GLSL is produced even when glslang rejects it, so that the failing line can be read.
       const auto path = perMaterialPath(options.glsl, material.name, several);

@@ -1,11 +1,14 @@
 #include "runtime/ComputeKernel.h"
 
+#include "runtime/DescriptorLimits.h"
+
 namespace mxc::rt {
 
 ComputeKernel::ComputeKernel(VulkanContext& context, const std::vector<uint32_t>& spirv,
                              const std::vector<VkDescriptorType>& bindings, uint32_t pushConstantBytes)
     : context_(context), pushBytes_(pushConstantBytes) {
   descriptors_ = std::make_unique<DescriptorSet>(context, bindings, VK_SHADER_STAGE_COMPUTE_BIT);
+  checkDescriptorLimits(context, {descriptors_.get()});  // lavapipe crashes on a layout beyond them
   module_ = std::make_unique<ShaderModule>(context, spirv);
   VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
   VkDescriptorSetLayout setLayout = descriptors_->layout();

@@ -12,6 +12,7 @@
 
 #include "compiler/common/Parallel.h"
 #include "compiler/glsl/Contract.h"
+#include "runtime/DescriptorLimits.h"
 #include "runtime/Descriptors.h"
 
 namespace mxc::rt {
@@ -436,6 +437,8 @@ void Renderer::drawItems(const std::vector<DrawItem>& items, const std::vector<s
       if (i >= items.size()) throw std::logic_error("Renderer::drawItems: a group names an item that does not exist");
     }
   }
+  // Before anything is made: a layout beyond the device's limits would crash lavapipe.
+  for (const DrawItem& item : items) checkDescriptorLimits(context_, item.sets);
   VkDevice device = context_.device();
   Frame f(context_);
   f.color = context_.createImage(s.width, s.height, VK_FORMAT_R32G32B32A32_SFLOAT,

@@ -159,6 +159,7 @@ VulkanContext::VulkanContext(const DeviceOptions& options) {
   physical_ = devices[static_cast<size_t>(chosen)];
   deviceName_ = properties[static_cast<size_t>(chosen)].deviceName;
   maxImageDimension2D_ = properties[static_cast<size_t>(chosen)].limits.maxImageDimension2D;
+  limits_ = properties[static_cast<size_t>(chosen)].limits;
 
   uint32_t families = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physical_, &families, nullptr);

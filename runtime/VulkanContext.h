@@ -65,6 +65,8 @@ class VulkanContext {
   const std::string& deviceName() const { return deviceName_; }
   /// The largest width or height of a 2D image the device takes (VkPhysicalDeviceLimits).
   uint32_t maxImageDimension2D() const { return maxImageDimension2D_; }
+  /// The device's limits (VkPhysicalDeviceLimits), for checks such as runtime/DescriptorLimits.h.
+  const VkPhysicalDeviceLimits& limits() const { return limits_; }
   /// Each device as "INDEX: NAME (TYPE), Vulkan X.Y.Z, DRIVER DRIVER-INFO" (the driver from
   /// VK_KHR_driver_properties where the device has it: "llvmpipe Mesa 22.3.6 (LLVM 15.0.6)"),
   /// or why Vulkan cannot be used.
@@ -130,6 +132,7 @@ class VulkanContext {
   VkFence fence_ = VK_NULL_HANDLE;
   std::string deviceName_;
   uint32_t maxImageDimension2D_ = 4096;  // the least any Vulkan 1.0 device guarantees
+  VkPhysicalDeviceLimits limits_{};
   std::unique_ptr<std::vector<std::string>> messages_ = std::make_unique<std::vector<std::string>>();
 };
 

@@ -16,14 +16,19 @@ struct TargetInfo {
   Target target;
   std::string_view name;
   std::string_view extension;
+  TextureLimit textures;
 };
 
-constexpr std::array<TargetInfo, 6> kTargets{{{Target::Spirv, "spirv", ".spv"},
-                                              {Target::Glsl, "glsl", ".glsl"},
-                                              {Target::Essl, "essl", ".essl"},
-                                              {Target::Msl, "msl", ".metal"},
-                                              {Target::Hlsl, "hlsl", ".hlsl"},
-                                              {Target::Wgsl, "wgsl", ".wgsl"}}};
+// The textures per stage every implementation of a target takes. Each texture of an mxc shader
+// is one sampled image and one sampler in every target (SPIR-V's combined image samplers are
+// split by SPIRV-Cross and naga), so the lesser of the two limits counts.
+constexpr std::array<TargetInfo, 6> kTargets{
+    {{Target::Spirv, "spirv", ".spv", {16, "Vulkan's required maxPerStageDescriptorSamplers"}},
+     {Target::Glsl, "glsl", ".glsl", {16, "OpenGL 4.5's required GL_MAX_TEXTURE_IMAGE_UNITS"}},
+     {Target::Essl, "essl", ".essl", {16, "OpenGL ES 3.2's required GL_MAX_TEXTURE_IMAGE_UNITS"}},
+     {Target::Msl, "msl", ".metal", {16, "Metal's sampler argument table"}},
+     {Target::Hlsl, "hlsl", ".hlsl", {16, "Direct3D 12's samplers per stage at resource binding tier 1"}},
+     {Target::Wgsl, "wgsl", ".wgsl", {16, "WebGPU's default maxSampledTexturesPerShaderStage and maxSamplersPerShaderStage"}}}};
 
 const TargetInfo& info(Target target) {
   for (const TargetInfo& t : kTargets) {
@@ -36,6 +41,20 @@ const TargetInfo& info(Target target) {
 
 std::string_view targetName(Target target) { return info(target).name; }
 std::string_view fileExtension(Target target) { return info(target).extension; }
+TextureLimit guaranteedTextures(Target target) { return info(target).textures; }
+
+std::optional<std::string> textureLimitWarning(const std::vector<Resource>& resources) {
+  const auto textures = static_cast<uint32_t>(std::count_if(
+      resources.begin(), resources.end(), [](const Resource& r) { return r.kind == Resource::Kind::Texture; }));
+  std::vector<std::string> exceeded;
+  for (const TargetInfo& t : kTargets) {
+    if (textures > t.textures.perStage) exceeded.push_back(fmt::format("{} ({}, {})", t.name, t.textures.perStage, t.textures.source));
+  }
+  if (exceeded.empty()) return std::nullopt;
+  return fmt::format("the shader samples {} textures in one stage (mxc's own among them), more than {} guarantee{}: it "
+                     "runs only on devices that take more",
+                     textures, fmt::join(exceeded, ", "), exceeded.size() == 1 ? "s" : "");
+}
 bool isText(Target target) { return target != Target::Spirv; }
 
 std::optional<Target> parseTarget(std::string_view name) {

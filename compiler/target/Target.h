@@ -31,6 +31,14 @@ std::string targetNames();
 /// The file extension a target's shader is written with: ".spv", ".glsl", ".essl", ".metal",
 /// ".hlsl", ".wgsl".
 std::string_view fileExtension(Target target);
+/// The textures per shader stage every device or implementation of a target takes, and where
+/// that figure comes from.
+struct TextureLimit {
+  uint32_t perStage = 0;
+  std::string_view source;
+};
+TextureLimit guaranteedTextures(Target target);
+
 /// The target a file extension names (".spv" and the above, also ".msl"), if any.
 std::optional<Target> targetOfExtension(std::string_view extension);
 /// Whether the target is a text (every one but SPIR-V).
@@ -68,6 +76,10 @@ std::vector<Placement> placeResources(const std::vector<Resource>& resources, Ta
 /// The resources of a shader interface (compiler/glsl/ShaderInterface.h) as its "descriptors"
 /// list them.
 std::vector<Resource> resourcesOfInterface(const nlohmann::json& interface);
+
+/// The targets whose guaranteed texture limit a shader of `resources` exceeds, as a warning
+/// naming each with its figure; nothing when every target takes it.
+std::optional<std::string> textureLimitWarning(const std::vector<Resource>& resources);
 
 /// A Placement as the interface JSON writes it in a descriptor's "target" member.
 nlohmann::json placementJson(const Placement& placement, Target target);

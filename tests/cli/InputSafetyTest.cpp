@@ -119,6 +119,65 @@ TEST(InputSafety, ImagesBeyondTheDeviceLimitAreDownsampled) {
   EXPECT_NE(r.err.find("box-filtered by 2 to 10000x2"), std::string::npos) << r.err;
 }
 
+/// A material summing `count` image nodes, each of its own 2x2 file in `folder`.
+std::string manyTexturesDocument(const TempFolder& folder, int count) {
+  std::string body;
+  for (int k = 0; k < count; ++k) {
+    const std::string file = "t" + std::to_string(k) + ".exr";
+    EXPECT_FALSE(rt::writeImage(folder / file, rt::RgbaImage{2, 2, std::vector<float>(16, 0.01f * float(k))}).has_value());
+    body += "  <image name=\"i" + std::to_string(k) + "\" type=\"color3\"><input name=\"file\" type=\"filename\" value=\"" +
+            file + "\"/></image>\n";
+    if (k > 0) {
+      body += "  <add name=\"a" + std::to_string(k) + "\" type=\"color3\"><input name=\"in1\" type=\"color3\" nodename=\"" +
+              (k == 1 ? std::string("i0") : "a" + std::to_string(k - 1)) + "\"/><input name=\"in2\" type=\"color3\" nodename=\"i" +
+              std::to_string(k) + "\"/></add>\n";
+    }
+  }
+  body += "  <open_pbr_surface name=\"s\" type=\"surfaceshader\"><input name=\"base_color\" type=\"color3\" nodename=\"a" +
+          std::to_string(count - 1) + "\"/></open_pbr_surface>\n"
+          "  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"s\"/></surfacematerial>\n";
+  return mtlx(body);
+}
+
+TEST(InputSafety, MoreTexturesThanTheDeviceTakesAreAnErrorNotACrash) {
+  // Lavapipe takes 32 samplers per stage; a fragment stage holds the material's textures, the
+  // albedo tables and the environment: 30 fit, 31 do not (40 crashed inside the device).
+  TempFolder folder("textures");
+  writeText(folder / "fits.mtlx", manyTexturesDocument(folder, 30));
+  CommandRun fits = mxc("render " + (folder / "fits.mtlx").string() + " -o " + (folder / "fits.png").string() +
+                        " --size 8 --spp 1 --validation");
+  EXPECT_EQ(fits.exitCode, 0) << fits.err;
+  EXPECT_TRUE(fs::exists(folder / "fits.png"));
+  writeText(folder / "many.mtlx", manyTexturesDocument(folder, 40));
+  CommandRun render = mxc("render " + (folder / "many.mtlx").string() + " -o " + (folder / "many.png").string() +
+                          " --size 8 --spp 1 --validation");
+  EXPECT_EQ(render.exitCode, 1) << render.err;
+  EXPECT_NE(render.err.find("error: the vertex stage binds 41 samplers (one per texture), and this device"), std::string::npos)
+      << render.err;
+  EXPECT_NE(render.err.find("takes at most 32 per stage (maxPerStageDescriptorSamplers)"), std::string::npos) << render.err;
+  EXPECT_FALSE(fs::exists(folder / "many.png"));
+  writeText(folder / "d.csv", "0,0,1,0,0,1\n");
+  CommandRun eval = mxc("eval " + (folder / "many.mtlx").string() + " --dirs " + (folder / "d.csv").string());
+  EXPECT_EQ(eval.exitCode, 1) << eval.err;
+  EXPECT_NE(eval.err.find("the compute stage binds 41 samplers"), std::string::npos) << eval.err;
+}
+
+TEST(InputSafety, CompileSaysWhichTargetsTakeTooFewTextures) {
+  // Every target guarantees 16 textures per stage; a raster shader adds the albedo tables and the
+  // environment to the material's textures.
+  TempFolder folder("texture_targets");
+  writeText(folder / "14.mtlx", manyTexturesDocument(folder, 14));
+  CommandRun fits = mxc("compile " + (folder / "14.mtlx").string() + " -q -o " + (folder / "a.wgsl").string());
+  EXPECT_EQ(fits.exitCode, 0) << fits.err;
+  EXPECT_EQ(fits.err.find("warning"), std::string::npos) << fits.err;
+  writeText(folder / "15.mtlx", manyTexturesDocument(folder, 15));
+  CommandRun over = mxc("compile " + (folder / "15.mtlx").string() + " -q -o " + (folder / "b.wgsl").string());
+  EXPECT_EQ(over.exitCode, 0) << over.err;
+  EXPECT_NE(over.err.find("warning: material M: the shader samples 17 textures in one stage"), std::string::npos) << over.err;
+  EXPECT_NE(over.err.find("wgsl (16, WebGPU's default maxSampledTexturesPerShaderStage"), std::string::npos) << over.err;
+  EXPECT_NE(over.err.find("spirv (16, Vulkan's required maxPerStageDescriptorSamplers)"), std::string::npos) << over.err;
+}
+
 TEST(InputSafety, ThousandsOfErrorsPrintAFewHundred) {
   TempFolder folder("errors");
   std::string body;
