@@ -66,7 +66,7 @@ int runInspect(const InspectOptions& options) {
     }
   } else {
     inspect::InspectInput input{*resolved, diagnostics, session.workspace.libraryInfo};
-    report = options.json  ? inspect::inspectJson(input).dump(2) + "\n"
+    report = options.json  ? inspect::inspectJson(input) + "\n"
              : options.dot ? inspect::inspectDot(input)
                            : inspect::inspectText(input);
   }

@@ -26,8 +26,9 @@ struct InspectInput {
 /// The materials, their shader nodes with every input (set, default, connected; with its
 /// source line) as an indented tree, then the graphs and nodes no material reaches.
 std::string inspectText(const InspectInput& input);
-/// The same content as JSON; schema "mxc-inspect-1", described in docs/inspect-json.md.
-nlohmann::json inspectJson(const InspectInput& input);
+/// The same content as JSON text (indented by 2, without a final line break); schema
+/// "mxc-inspect-1", described in docs/inspect-json.md.
+std::string inspectJson(const InspectInput& input);
 /// A Graphviz digraph: nodes, graphs as clusters, connections as edges labelled by input.
 std::string inspectDot(const InspectInput& input);
 

@@ -78,89 +78,135 @@ json nodeJson(const ResolvedNode& n) {
   return j;
 }
 
+/// The report's text as nlohmann's dump(2) writes the whole object, written one member (and
+/// one element of the long arrays) at a time: no tree of the whole document is ever built, so
+/// a document of 100,000 nodes needs the text and one node's JSON. Destroying a large tree
+/// allocates (nlohmann::json flattens it through a vector), and running out of memory there
+/// would end the process (std::terminate) instead of exit 4.
+class ReportWriter {
+ public:
+  /// Members must come in the order of their names (dump's std::map order).
+  void member(std::string_view key, const json& value) {
+    open(key);
+    text_ += indented(value.dump(2), 2);
+  }
+  void beginArray(std::string_view key) {
+    open(key);
+    text_ += '[';
+    elements_ = 0;
+  }
+  void element(const json& value) {
+    text_ += elements_++ ? ",\n    " : "\n    ";
+    text_ += indented(value.dump(2), 4);
+  }
+  void endArray() { text_ += elements_ ? "\n  ]" : "]"; }
+  std::string finish() { return std::move(text_) + "\n}"; }
+
+ private:
+  void open(std::string_view key) {
+    text_ += members_++ ? ",\n  " : "{\n  ";
+    text_ += json(std::string(key)).dump();
+    text_ += ": ";
+  }
+  static std::string indented(const std::string& dumped, size_t spaces) {
+    std::string out;
+    out.reserve(dumped.size());
+    for (char c : dumped) {
+      out += c;
+      if (c == '\n') out.append(spaces, ' ');
+    }
+    return out;
+  }
+  std::string text_;
+  size_t members_ = 0, elements_ = 0;
+};
+
 }  // namespace
 
-json inspectJson(const InspectInput& input) {
+std::string inspectJson(const InspectInput& input) {
   const resolve::ResolvedDocument& rd = input.document;
   const doc::Document& d = *rd.document;
-  json out;
-  out["schema"] = "mxc-inspect-1";
-
-  json includes = json::array();
-  for (const doc::Include& include : d.includes) includes.push_back(include.href);
-  out["document"] = {{"path", d.path()},
-                     {"version", d.version},
-                     {"colorspace", d.colorspace},
-                     {"includes", includes},
-                     {"upgrades", d.upgradeNotes}};
-
-  json libraries = json::array();
-  for (const LibraryInfo& l : input.libraries) libraries.push_back({{"name", l.name}, {"nodedefs", l.nodedefs}});
-  out["libraries"] = libraries;
-
-  json materials = json::array();
-  for (const resolve::ResolvedMaterial& m : rd.materials) {
-    json shaders = json::array();
-    for (const auto& s : m.shaders) shaders.push_back({{"input", s.input}, {"node", nodeId(*s.node)}});
-    materials.push_back({{"name", m.node->name()},
-                         {"node", nodeId(*m.node)},
-                         {"category", m.node->category()},
-                         {"location", locationJson(m.node->node->location)},
-                         {"shaders", shaders}});
-  }
-  out["materials"] = materials;
-
-  json nodes = json::array();
-  for (const auto& n : rd.top.nodes) nodes.push_back(nodeJson(*n));
-  json graphs = json::array();
-  for (const auto& g : rd.graphs) {
-    json interface = json::array();
-    for (const ResolvedInput& in : g->interface) interface.push_back(inputJson(in));
-    json outputs = json::array();
-    for (const ResolvedInput& in : g->outputs) outputs.push_back(inputJson(in));
-    json members = json::array();
-    for (const auto& n : g->nodes) {
-      nodes.push_back(nodeJson(*n));
-      members.push_back(nodeId(*n));
-    }
-    graphs.push_back({{"name", g->name()},
-                      {"nodedef", g->implements ? json(g->implements->name) : json(nullptr)},
-                      {"location", locationJson(g->graph->location)},
-                      {"interface", interface},
-                      {"outputs", outputs},
-                      {"nodes", members}});
-  }
-  out["nodes"] = nodes;
-  out["graphs"] = graphs;
-
-  json nodedefs = json::array();
-  for (const doc::Document* doc : rd.documents) {
-    for (const doc::NodeDef& nd : doc->nodedefs) nodedefs.push_back(nd.name);
-  }
-  out["nodedefs"] = nodedefs;
-
-  json looks = json::array();
-  for (const doc::Document* doc : rd.documents) {
-    for (const doc::Look& look : doc->looks) {
-      json assigns = json::array();
-      for (const doc::MaterialAssign& a : look.assigns) {
-        assigns.push_back({{"name", a.name}, {"material", a.material}, {"geom", a.geom}, {"collection", a.collection}});
-      }
-      looks.push_back({{"name", look.name}, {"location", locationJson(look.location)}, {"assigns", assigns}});
-    }
-  }
-  out["looks"] = looks;
+  ReportWriter out;
 
   json diagnostics = json::array();
   for (const Diagnostic& diag : input.diagnostics.all()) {
     std::string_view severity = diag.severity == Severity::Error ? "error" : diag.severity == Severity::Warning ? "warning" : "note";
     diagnostics.push_back({{"severity", severity}, {"message", diag.message}, {"location", locationJson(diag.location)}});
   }
-  out["diagnostics"] = diagnostics;
+  out.member("diagnostics", diagnostics);
   // Beyond Diagnostics::kMaxKept messages only counts are kept.
-  out["diagnostics_omitted"] = {{"errors", input.diagnostics.omittedErrors()},
-                                {"warnings", input.diagnostics.omittedWarnings()}};
-  return out;
+  out.member("diagnostics_omitted", {{"errors", input.diagnostics.omittedErrors()},
+                                     {"warnings", input.diagnostics.omittedWarnings()}});
+
+  json includes = json::array();
+  for (const doc::Include& include : d.includes) includes.push_back(include.href);
+  out.member("document", {{"path", d.path()},
+                          {"version", d.version},
+                          {"colorspace", d.colorspace},
+                          {"includes", includes},
+                          {"upgrades", d.upgradeNotes}});
+
+  out.beginArray("graphs");
+  for (const auto& g : rd.graphs) {
+    json interface = json::array();
+    for (const ResolvedInput& in : g->interface) interface.push_back(inputJson(in));
+    json outputs = json::array();
+    for (const ResolvedInput& in : g->outputs) outputs.push_back(inputJson(in));
+    json members = json::array();
+    for (const auto& n : g->nodes) members.push_back(nodeId(*n));
+    out.element({{"name", g->name()},
+                 {"nodedef", g->implements ? json(g->implements->name) : json(nullptr)},
+                 {"location", locationJson(g->graph->location)},
+                 {"interface", interface},
+                 {"outputs", outputs},
+                 {"nodes", members}});
+  }
+  out.endArray();
+
+  json libraries = json::array();
+  for (const LibraryInfo& l : input.libraries) libraries.push_back({{"name", l.name}, {"nodedefs", l.nodedefs}});
+  out.member("libraries", libraries);
+
+  out.beginArray("looks");
+  for (const doc::Document* doc : rd.documents) {
+    for (const doc::Look& look : doc->looks) {
+      json assigns = json::array();
+      for (const doc::MaterialAssign& a : look.assigns) {
+        assigns.push_back({{"name", a.name}, {"material", a.material}, {"geom", a.geom}, {"collection", a.collection}});
+      }
+      out.element({{"name", look.name}, {"location", locationJson(look.location)}, {"assigns", assigns}});
+    }
+  }
+  out.endArray();
+
+  out.beginArray("materials");
+  for (const resolve::ResolvedMaterial& m : rd.materials) {
+    json shaders = json::array();
+    for (const auto& s : m.shaders) shaders.push_back({{"input", s.input}, {"node", nodeId(*s.node)}});
+    out.element({{"name", m.node->name()},
+                 {"node", nodeId(*m.node)},
+                 {"category", m.node->category()},
+                 {"location", locationJson(m.node->node->location)},
+                 {"shaders", shaders}});
+  }
+  out.endArray();
+
+  out.beginArray("nodedefs");
+  for (const doc::Document* doc : rd.documents) {
+    for (const doc::NodeDef& nd : doc->nodedefs) out.element(nd.name);
+  }
+  out.endArray();
+
+  // The document's nodes, then each graph's, as the graphs list them.
+  out.beginArray("nodes");
+  for (const auto& n : rd.top.nodes) out.element(nodeJson(*n));
+  for (const auto& g : rd.graphs) {
+    for (const auto& n : g->nodes) out.element(nodeJson(*n));
+  }
+  out.endArray();
+
+  out.member("schema", "mxc-inspect-1");
+  return out.finish();
 }
 
 }  // namespace mxc::inspect
