@@ -1,4 +1,5 @@
 #include "cli/Verbosity.h"
+#include "compiler/common/JsonText.h"
 #include "compiler/glsl/Contract.h"
 #include "cli/EvalCommand.h"
 
@@ -205,7 +206,10 @@ int runFurnace(const FurnaceOptions& options) {
     report["materials"].push_back(std::move(m));
   }
   if (!device.checkValidation()) return kInvalidDocument;
-  return writeReport(outputs, options.output, report.dump(2) + "\n");
+  bool lossy = false;
+  std::string text = jsonText(report, 2, &lossy) + "\n";
+  if (lossy) std::fprintf(stderr, "warning: %s\n", notUtf8Warning("the JSON report").c_str());
+  return writeReport(outputs, options.output, std::move(text));
 }
 
 }  // namespace mxc::cli

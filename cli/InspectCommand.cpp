@@ -9,6 +9,7 @@
 #include "cli/ExitCode.h"
 #include "cli/MaterialPipeline.h"
 #include "cli/Session.h"
+#include "compiler/common/JsonText.h"
 #include "compiler/driver/Compiler.h"
 #include "compiler/inspect/Inspect.h"
 #include "compiler/ir/Print.h"
@@ -47,6 +48,7 @@ int runInspect(const InspectOptions& options) {
   bool failed = diagnostics.hasErrors();
   if (failed && !options.partial) return stop();
   std::string report;
+  bool lossy = false;  // a name that is not UTF-8 in a JSON report
   if (options.ir) {
     const std::vector<ir::Material>& materials = compiler.materials();
     session.printDiagnostics();
@@ -59,17 +61,18 @@ int runInspect(const InspectOptions& options) {
                        {"accuracy", {{"tier", accuracyName(accuracy)}, {"description", accuracyDescription(accuracy)}}},
                        {"materials", nlohmann::json::array()}};
       for (const ir::Material& m : materials) j["materials"].push_back(ir::materialJson(m));
-      report = j.dump(2) + "\n";
+      report = jsonText(j, 2, &lossy) + "\n";
     } else {
       report = fmt::format("accuracy: {} ({})\n\n", accuracyName(accuracy), accuracyDescription(accuracy));
       for (const ir::Material& m : materials) report += ir::printMaterial(m, &document->source()) + "\n";
     }
   } else {
     inspect::InspectInput input{*resolved, diagnostics, session.workspace.libraryInfo};
-    report = options.json  ? inspect::inspectJson(input) + "\n"
+    report = options.json  ? inspect::inspectJson(input, &lossy) + "\n"
              : options.dot ? inspect::inspectDot(input)
                            : inspect::inspectText(input);
   }
+  if (lossy) std::fprintf(stderr, "warning: %s\n", notUtf8Warning("the JSON report").c_str());
   if (printError(session.checkOutputsAreNotSources(outputs))) return kUsage;
   if (printError(outputs.stage(output, std::move(report)))) return kOutputFailed;
   if (printError(outputs.commit())) return kOutputFailed;

@@ -11,6 +11,7 @@
 #include "cli/InspectCommand.h"
 #include "cli/OutputSet.h"
 #include "cli/SceneDocuments.h"
+#include "compiler/common/JsonText.h"
 #include "compiler/driver/Effects.h"
 
 namespace mxc::cli {
@@ -85,7 +86,9 @@ int runInspectEffects(const InspectOptions& options) {
       report.push_back({&m, materialEffects(m, shader, facts, accuracy)});
     }
   }
-  std::string text = options.json ? effectsJson(report, facts).dump(2) + "\n" : effectsText(report, facts);
+  bool lossy = false;
+  std::string text = options.json ? jsonText(effectsJson(report, facts), 2, &lossy) + "\n" : effectsText(report, facts);
+  if (lossy) std::fprintf(stderr, "warning: %s\n", notUtf8Warning("the JSON report").c_str());
   if (printError(session.checkOutputsAreNotSources(outputs))) return kUsage;
   if (printError(outputs.stage(output, std::move(text)))) return kOutputFailed;
   if (printError(outputs.commit())) return kOutputFailed;

@@ -1,5 +1,6 @@
 #include "cli/InterfaceOutputs.h"
 
+#include <cstdio>
 #include <algorithm>
 #include <map>
 #include <mutex>
@@ -7,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "compiler/common/Quote.h"
+#include "compiler/common/JsonText.h"
 #include "compiler/common/Diagnostic.h"
 #include "compiler/glsl/ShaderInterface.h"
 #include "compiler/spirv/SpirvCompiler.h"
@@ -51,7 +54,7 @@ std::optional<target::Translation> vertexStageIn(Compiler& compiler, const std::
   for (const target::Placement& p : placements) {
     if (std::find(bound.begin(), bound.end(), std::pair(p.resource.set, p.resource.binding)) == bound.end()) continue;
     own.push_back(p);
-    key += fmt::format(" {}.{}={}", p.resource.set, p.resource.binding, target::placementJson(p, target).dump());
+    key += fmt::format(" {}.{}={}", p.resource.set, p.resource.binding, jsonText(target::placementJson(p, target), -1));
   }
   static std::mutex mutex;  // batch workers
   static std::map<std::string, target::Translation> translated;
@@ -129,7 +132,10 @@ Staged stageShaderOutputs(OutputSet& outputs, const fs::path& path, bool interfa
   if (auto why = outputs.stage(path, std::move(text))) return error = *why, Staged::OutputFailed;
   if (!interface) return Staged::Ok;
   describeTarget(description, target, placements, fragmentEntry, vertexEntry);
-  if (auto why = outputs.stage(json, description.dump(2) + "\n")) return error = *why, Staged::OutputFailed;
+  bool lossy = false;
+  std::string jsonContent = jsonText(description, 2, &lossy) + "\n";
+  if (lossy) std::fprintf(stderr, "warning: %s\n", notUtf8Warning(quotedValue(json.string())).c_str());
+  if (auto why = outputs.stage(json, std::move(jsonContent))) return error = *why, Staged::OutputFailed;
   if (raster) {
     if (auto why = outputs.stage(vertexPath(path), std::move(vertexText))) return error = *why, Staged::OutputFailed;
   }

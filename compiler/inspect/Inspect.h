@@ -28,7 +28,8 @@ struct InspectInput {
 std::string inspectText(const InspectInput& input);
 /// The same content as JSON text (indented by 2, without a final line break); schema
 /// "mxc-inspect-1", described in docs/inspect-json.md.
-std::string inspectJson(const InspectInput& input);
+/// `lossy` as jsonText's (compiler/common/JsonText.h).
+std::string inspectJson(const InspectInput& input, bool* lossy = nullptr);
 /// A Graphviz digraph: nodes, graphs as clusters, connections as edges labelled by input.
 std::string inspectDot(const InspectInput& input);
 

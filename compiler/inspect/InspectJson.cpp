@@ -2,6 +2,8 @@
 
 #include "compiler/inspect/Inspect.h"
 
+#include "compiler/common/JsonText.h"
+
 namespace mxc::inspect {
 
 using nlohmann::json;
@@ -88,7 +90,7 @@ class ReportWriter {
   /// Members must come in the order of their names (dump's std::map order).
   void member(std::string_view key, const json& value) {
     open(key);
-    text_ += indented(value.dump(2), 2);
+    text_ += indented(jsonText(value, 2, &lossy_), 2);
   }
   void beginArray(std::string_view key) {
     open(key);
@@ -97,15 +99,16 @@ class ReportWriter {
   }
   void element(const json& value) {
     text_ += elements_++ ? ",\n    " : "\n    ";
-    text_ += indented(value.dump(2), 4);
+    text_ += indented(jsonText(value, 2, &lossy_), 4);
   }
   void endArray() { text_ += elements_ ? "\n  ]" : "]"; }
   std::string finish() { return std::move(text_) + "\n}"; }
+  bool lossy() const { return lossy_; }
 
  private:
   void open(std::string_view key) {
     text_ += members_++ ? ",\n  " : "{\n  ";
-    text_ += json(std::string(key)).dump();
+    text_ += jsonText(json(std::string(key)), -1, &lossy_);
     text_ += ": ";
   }
   static std::string indented(const std::string& dumped, size_t spaces) {
@@ -119,11 +122,12 @@ class ReportWriter {
   }
   std::string text_;
   size_t members_ = 0, elements_ = 0;
+  bool lossy_ = false;
 };
 
 }  // namespace
 
-std::string inspectJson(const InspectInput& input) {
+std::string inspectJson(const InspectInput& input, bool* lossy) {
   const resolve::ResolvedDocument& rd = input.document;
   const doc::Document& d = *rd.document;
   ReportWriter out;
@@ -206,6 +210,7 @@ std::string inspectJson(const InspectInput& input) {
   out.endArray();
 
   out.member("schema", "mxc-inspect-1");
+  if (lossy && out.lossy()) *lossy = true;
   return out.finish();
 }
 

@@ -3,6 +3,7 @@
 // million errors, damaged images, and an mxc moved away from its build tree.
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <sys/stat.h>
 
@@ -209,6 +210,28 @@ TEST(InputSafety, CompileSaysWhichTargetsTakeTooFewTextures) {
   EXPECT_NE(over.err.find("warning: material M: the shader samples 17 textures in one stage"), std::string::npos) << over.err;
   EXPECT_NE(over.err.find("wgsl (16, WebGPU's default maxSampledTexturesPerShaderStage"), std::string::npos) << over.err;
   EXPECT_NE(over.err.find("spirv (16, Vulkan's required maxPerStageDescriptorSamplers)"), std::string::npos) << over.err;
+}
+
+TEST(InputSafety, AFolderNameThatIsNotUtf8GivesJsonWithAWarning) {
+  // JSON is UTF-8; a path is any bytes. The JSON library's exception reached the user (exit 1).
+  TempFolder folder("not_utf8");
+  const fs::path odd = folder / "bad\xff" "dir";
+  fs::create_directories(odd);
+  fs::copy_file(corpus("openpbr-presets/open_pbr_default.mtlx"), odd / "m.mtlx");
+  const std::string warning = "with bytes that are not UTF-8; JSON holds only UTF-8, so each such byte is written as U+FFFD";
+  CommandRun compile = mxc("compile '" + (odd / "m.mtlx").string() + "' -q -o '" + (odd / "m.spv").string() + "'");
+  EXPECT_EQ(compile.exitCode, 0) << compile.err;
+  EXPECT_NE(compile.err.find("warning: \"" + folder.path().string() + "/bad\\xFFdir/m.json\" holds a name"), std::string::npos)
+      << compile.err;
+  EXPECT_NE(compile.err.find(warning), std::string::npos) << compile.err;
+  const auto description = nlohmann::json::parse(readFileBytes(odd / "m.json"));
+  EXPECT_EQ(description["documentFolder"], folder.path().string() + "/bad\xef\xbf\xbd" "dir");
+  for (const std::string options : {"--json", "--ir --json", "--effects --json"}) {
+    CommandRun inspect = mxc("inspect '" + (odd / "m.mtlx").string() + "' " + options);
+    EXPECT_EQ(inspect.exitCode, 0) << options << ": " << inspect.err;
+    EXPECT_NE(inspect.err.find("warning: the JSON report holds a name"), std::string::npos) << options << ": " << inspect.err;
+    EXPECT_NO_THROW(nlohmann::json::parse(inspect.out)) << options;
+  }
 }
 
 TEST(InputSafety, ThousandsOfErrorsPrintAFewHundred) {
