@@ -112,6 +112,7 @@ std::optional<std::string> chooseCamera(const RenderOptions& options, const Mesh
   if (!options.cameraUp.empty()) {
     if (auto why = vector(options.cameraUp, "--camera-up", camera.up)) return why;
   }
+  if (auto why = rt::scaleProblem(bounds, camera)) return why;
   if (auto why = rt::cameraProblem(camera)) return fmt::format("the camera: {}", *why);
   return std::nullopt;
 }

@@ -1,6 +1,7 @@
 #include "cli/Scene.h"
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <set>
 
@@ -256,6 +257,9 @@ bool readScene(Checker& c, const json& root, const std::filesystem::path& folder
     if (cam.contains("target") && !c.vector3(cam["target"], "camera.target", -kHuge, kHuge, camera.target)) return false;
     if (cam.contains("up") && !c.vector3(cam["up"], "camera.up", -kHuge, kHuge, camera.up)) return false;
     if (cam.contains("fov") && !c.number(cam["fov"], "camera.fov", 1.0f, 170.0f, camera.fovDegrees)) return false;
+    // The camera's own sizes first (a unit scene stands in for the objects, checked at render):
+    // a far camera made the up vector test below fail on an overflowed length.
+    if (auto why = rt::scaleProblem({glm::vec3(0.0f), 1.0f}, camera)) return c.fail("camera", *why);
     if (auto why = rt::cameraProblem(camera)) return c.fail("camera", *why);
     scene.camera = camera;
   }
@@ -300,20 +304,35 @@ bool isSceneFile(const std::filesystem::path& path) {
 
 std::variant<Scene, std::string> readScene(const std::filesystem::path& path) {
   auto bytes = readInputFile(path, kMaxSceneBytes);
-  if (auto* why = std::get_if<1>(&bytes)) return fmt::format("cannot read the scene '{}': {}", path.string(), *why);
+  if (auto* why = std::get_if<1>(&bytes)) return fmt::format("error: cannot read the scene '{}': {}", path.string(), *why);
   const std::string& text = std::get<0>(bytes);
+  // A byte offset (0-based) as "file:line:column".
+  auto position = [&](size_t offset) {
+    offset = std::min(offset, text.size());
+    const size_t line = size_t(std::count(text.begin(), text.begin() + long(offset), '\n')) + 1;
+    const size_t lineStart = text.rfind('\n', offset == 0 ? 0 : offset - 1);
+    const size_t column = offset - (lineStart == std::string::npos || offset == 0 ? 0 : lineStart + 1) + 1;
+    return fmt::format("{}:{}:{}", path.string(), line, column);
+  };
   json root;
   try {
     root = json::parse(text);
   } catch (const json::parse_error& e) {
-    // The byte offset nlohmann reports (1-based, at the offending character) as line:column.
-    const size_t offset = std::min(e.byte > 0 ? e.byte - 1 : 0, text.size());
-    const size_t line = size_t(std::count(text.begin(), text.begin() + long(offset), '\n')) + 1;
-    const size_t lineStart = text.rfind('\n', offset == 0 ? 0 : offset - 1);
-    const size_t column = offset - (lineStart == std::string::npos || offset == 0 ? 0 : lineStart + 1) + 1;
+    // nlohmann's byte offset is 1-based, at the offending character.
     std::string message = e.what();
     if (const size_t colon = message.find(": syntax error"); colon != std::string::npos) message = message.substr(colon + 2);
-    return fmt::format("{}:{}:{}: error: not valid JSON: {}", path.string(), line, column, message);
+    return fmt::format("{}: error: not valid JSON: {}", position(e.byte > 0 ? e.byte - 1 : 0), message);
+  } catch (const json::out_of_range& e) {
+    // A number beyond a double (1e400): nlohmann gives the number ("number overflow parsing
+    // '1e400'") but no offset; its first occurrence as a token of the text is where it stands.
+    const std::string message = e.what();
+    const size_t open = message.find('\''), close = message.rfind('\'');
+    if (open == std::string::npos || close <= open) return fmt::format("{}: error: not valid JSON: {}", path.string(), message);
+    const std::string number = message.substr(open + 1, close - open - 1);
+    size_t at = text.find(number);
+    while (at != std::string::npos && at > 0 && std::strchr("0123456789.-+eE", text[at - 1])) at = text.find(number, at + 1);
+    return fmt::format("{}: error: the number {} is beyond the range of a double", at == std::string::npos ? path.string() : position(at),
+                       number);
   }
   Scene scene;
   scene.file = path;

@@ -137,6 +137,10 @@ int renderSceneData(const Scene& scene, const RenderOptions& options, std::map<s
     // From the front and a little above, so that a floor is seen rather than its edge.
     settings.camera = rt::frameBounds(bounds, scene.viewDirection, 45.0f, float(settings.width) / float(settings.height));
   }
+  if (auto why = rt::scaleProblem(bounds, settings.camera)) {
+    std::fprintf(stderr, "%s: error: %s\n", source.c_str(), why->c_str());
+    return kInvalidDocument;
+  }
 
   // Documents, and each object's material: its own, else its document's look.
   Session session;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -39,6 +40,33 @@ void fitClipPlanes(Camera& camera, const MeshBounds& bounds) {
   // In front of the sphere: half the gap, so nothing of the mesh is clipped; from inside it,
   // a fixed share of the far plane keeps the depth buffer's precision bounded.
   camera.nearPlane = std::max(0.5f * (distance - radius), 1e-4f * camera.farPlane);
+}
+
+std::optional<std::string> scaleProblem(const MeshBounds& bounds, const Camera& camera) {
+  // Each component is compared before any length is taken: a length of 1e20 squares to inf.
+  // Written so that NaN fails each test: a bound computed from an overflowed transform is NaN.
+  auto largestComponent = [](glm::vec3 v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); };
+  const float reach = largestComponent(bounds.center) + bounds.radius;
+  if (!(std::isfinite(reach) && reach <= kLargestSceneRadius)) {
+    const std::string size = std::isfinite(reach) ? fmt::format("reaches {:g} units from the origin", double(reach))
+                                                  : std::string("overflows 32-bit floats (its transforms or its mesh)");
+    return fmt::format("the scene {}, and mxc renders scenes within {:g} units of the origin (the shaders compute in "
+                       "32-bit floats): scale it down",
+                       size, double(kLargestSceneRadius));
+  }
+  if (!(bounds.radius >= kSmallestSceneRadius)) {
+    return fmt::format("the scene's bounding sphere has a radius of {:g} units, and mxc renders radii of {:g} units and "
+                       "more (the shaders compute in 32-bit floats): scale it up",
+                       double(bounds.radius), double(kSmallestSceneRadius));
+  }
+  for (const auto& [point, name] : {std::pair{camera.eye, "position"}, std::pair{camera.target, "target"}}) {
+    if (!(largestComponent(point) <= kLargestCameraDistance)) {
+      return fmt::format("the camera's {} is {:g} units from the origin, and mxc renders within {:g} (the shaders "
+                         "compute in 32-bit floats)",
+                         name, double(largestComponent(point)), double(kLargestCameraDistance));
+    }
+  }
+  return std::nullopt;
 }
 
 std::optional<std::string> cameraProblem(const Camera& camera) {

@@ -33,6 +33,20 @@ Camera frameBounds(const MeshBounds& bounds, glm::vec3 direction, float fovDegre
 /// past the sphere's back.
 void fitClipPlanes(Camera& camera, const MeshBounds& bounds);
 
+/// The sizes a render takes, in world units: the scene's bounding radius, how far it reaches from
+/// the origin, and the camera's distance from the origin. The shaders compute in 32-bit floats:
+/// squared lengths of 1e20 overflow (FLT_MAX is 3.4e38), and below a radius of 1e-6 the
+/// framing's floors and the shaders' offsets are larger than the scene; both rendered a blank
+/// image. Measured on the framed unit sphere scaled by 1e-5 to 1e9: the image of the unit one
+/// within 6e-5; from 1e10 its shading is wrong (0.49 at worst), from 1e20 and below 1e-7 blank.
+constexpr float kSmallestSceneRadius = 1e-5f;
+constexpr float kLargestSceneRadius = 1e9f;
+constexpr float kLargestCameraDistance = 1e10f;
+
+/// Why a scene of `bounds` seen by `camera` is outside those sizes (naming the size and the
+/// range), or nullopt.
+std::optional<std::string> scaleProblem(const MeshBounds& bounds, const Camera& camera);
+
 /// Why a camera cannot render ("the eye is at the target", "up is along the view direction",
 /// "the field of view must be in (0, 180) degrees"), or nullopt.
 std::optional<std::string> cameraProblem(const Camera& camera);

@@ -139,6 +139,9 @@ TEST(Scene, MalformedFieldsAreRefusedNamingTheField) {
       {head + objects + R"(, "render": {"tonemap": "filmic"}})", "render.tonemap: expected one of aces, neutral, none"},
       {head + objects + R"(, "render": {"accuracy": "exact"}})", "render.accuracy: expected one of fast, balanced, reference"},
       {"[1, 2]", "(top level): expected an object"},
+      // A far camera overflowed a length and was called "up along the view direction".
+      {head + objects + R"(, "camera": {"position": [1e20, 0, 0]}})",
+       "camera: the camera's position is 1e+20 units from the origin, and mxc renders within 1e+10"},
   };
   for (const auto& [text, message] : cases) {
     const std::string error = readScene("bad.json", text);
@@ -149,6 +152,12 @@ TEST(Scene, MalformedFieldsAreRefusedNamingTheField) {
   const std::string error = readScene("syntax.json", "{\n  \"mxc_scene\": 1,\n  \"documents\": [\"a\",]\n}\n");
   EXPECT_NE(error.find("syntax.json:3:"), std::string::npos) << error;
   EXPECT_NE(error.find("not valid JSON"), std::string::npos) << error;
+  // A number beyond a double: the JSON library names it but gives no position (it was its raw
+  // message, without file or line).
+  const std::string huge = readScene("huge.json", "{\"mxc_scene\": 1,\n \"objects\": [{\"scale\": 1e400}]}");
+  EXPECT_NE(huge.find("huge.json:2:24: error: the number 1e400 is beyond the range of a double"), std::string::npos) << huge;
+  EXPECT_EQ(cli::readScene("/nonexistent/scene.json").index(), 1u);
+  EXPECT_EQ(std::get<std::string>(cli::readScene("/nonexistent/scene.json")).rfind("error: cannot read the scene", 0), 0u);
 }
 
 TEST(SceneRender, RendersTheStillLifeExample) {
@@ -204,6 +213,42 @@ TEST(SceneRender, ALookAssignsMaterialsByObjectName) {
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("objects[0] ('a'): no document of the scene has a material named 'Green'"), std::string::npos) << r.err;
   for (const fs::path& p : {document, scene, badLook, badMaterial}) fs::remove(p);
+}
+
+TEST(SceneRender, ScenesTooSmallOrTooLargeForFloatsAreRefusedNotBlank) {
+  // A sphere scaled by 1e-12 or 1e20 rendered the background alone, with exit 0.
+  const fs::path document = twoMaterials();
+  for (const auto& [scale, message] : std::vector<std::pair<std::string, std::string>>{
+           {"1e-12", "error: the scene's bounding sphere has a radius of 1e-12 units, and mxc renders radii of 1e-05 units and more"},
+           {"1e20", "error: the scene overflows 32-bit floats"},
+           {"1e10", "error: the scene reaches 1e+10 units from the origin, and mxc renders scenes within 1e+09"}}) {
+    SCOPED_TRACE(scale);
+    const fs::path scene = writeTemp("scale.json", R"({"mxc_scene": 1, "documents": [")" + document.string() + R"("],
+      "objects": [{"name": "ball", "mesh": "sphere", "material": "Red", "scale": )" + scale + R"(}], "render": {"size": 16, "spp": 1}})");
+    const fs::path out = fs::temp_directory_path() / "mxc_scale.png";
+    const CommandRun run = mxc("render " + scene.string() + " -o " + out.string());
+    EXPECT_EQ(run.exitCode, 1) << run.err;
+    EXPECT_NE(run.err.find(message), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(out));
+    fs::remove(scene);
+  }
+  // The ends of the range render the sphere as the unit one does (framed, so the same image).
+  std::vector<rt::RgbaImage> images;
+  for (const std::string scale : {"1e-5", "1", "1e9"}) {
+    const fs::path scene = writeTemp("scale.json", R"({"mxc_scene": 1, "documents": [")" + document.string() + R"("],
+      "objects": [{"name": "ball", "mesh": "sphere", "material": "Red", "scale": )" + scale + R"(}], "render": {"size": 16, "spp": 1}})");
+    images.push_back(renderCommand(scene.string()));
+    fs::remove(scene);
+  }
+  ASSERT_EQ(images.size(), 3u);
+  for (const rt::RgbaImage& image : images) ASSERT_EQ(image.width, 16u);
+  EXPECT_GT(images[1].at(8, 8)[3], 0.5f) << "the unit sphere covers the centre";
+  for (size_t k : {0u, 2u}) {
+    double difference = 0.0;
+    for (size_t i = 0; i < images[1].pixels.size(); ++i) difference = std::max(difference, double(std::abs(images[k].pixels[i] - images[1].pixels[i])));
+    EXPECT_LT(difference, 0.01) << "scale " << (k == 0 ? "1e-5" : "1e9");
+  }
+  fs::remove(document);
 }
 
 TEST(SceneRender, ASpotLightLightsOnlyItsCone) {
