@@ -29,6 +29,11 @@ struct TargetIdentity {
 std::optional<std::string> OutputSet::declare(const fs::path& path, const std::string& option) {
   auto resolved = resolveOutput(path);
   if (auto* error = std::get_if<std::string>(&resolved)) return fmt::format("{}: {}", option, *error);
+  // Once per folder: a batch declares a hundred thousand outputs in a few.
+  const OutputTarget& target = std::get<OutputTarget>(resolved);
+  if (target.kind == OutputTarget::Kind::File && probedFolders_.insert(target.path.parent_path().native()).second) {
+    if (auto problem = folderProblem(target)) return fmt::format("{}: {}", option, *problem);
+  }
   entries_.push_back({std::move(std::get<OutputTarget>(resolved)), option, std::nullopt, std::nullopt});
   byRequested_.try_emplace(entries_.back().target.requested.native(), entries_.size() - 1);  // the first keeps it
   return std::nullopt;

@@ -17,6 +17,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "compiler/common/OutputFile.h"
@@ -57,6 +58,7 @@ class OutputSet {
   std::vector<Entry> entries_;
   /// The first entry of each requested path (stage() looks outputs up by it).
   std::unordered_map<std::string, size_t> byRequested_;
+  std::unordered_set<std::string> probedFolders_;  ///< folders a file was created in (folderProblem)
 };
 
 /// Prints "error: MESSAGE" to stderr when there is a message; returns whether there was one.

@@ -105,6 +105,19 @@ std::variant<OutputTarget, std::string> resolveOutput(const fs::path& requested)
   return target;
 }
 
+std::optional<std::string> folderProblem(const OutputTarget& target) {
+  const fs::path folder = target.path.has_parent_path() ? target.path.parent_path() : fs::path(".");
+  std::string probe = (folder / ".mxc-XXXXXX").string();
+  auto held = TemporaryFiles::lock();  // registered while it exists, so a signal removes it too
+  const int fd = ::mkostemp(probe.data(), O_CLOEXEC);
+  if (fd < 0) return fmt::format("cannot write {}: {}", quoted(target.requested), std::strerror(errno));
+  TemporaryFiles::add(probe);
+  ::close(fd);
+  ::unlink(probe.c_str());
+  TemporaryFiles::remove(probe);
+  return std::nullopt;
+}
+
 bool sameExistingFile(const fs::path& a, const fs::path& b) {
   struct stat sa {}, sb {};
   if (::stat(a.c_str(), &sa) != 0 || ::stat(b.c_str(), &sb) != 0) return false;

@@ -35,6 +35,12 @@ struct OutputTarget {
 /// of symbolic links).
 std::variant<OutputTarget, std::string> resolveOutput(const std::filesystem::path& requested);
 
+/// Whether a file can be created beside `target` (a File target): a temporary is made there and
+/// removed. Its folder's permission bits do not say (root writes anywhere they forbid; a
+/// read-only mount or /sys refuses anyone), so a command checks this before its work rather
+/// than finding it when it writes, after minutes of rendering.
+std::optional<std::string> folderProblem(const OutputTarget& target);
+
 /// True when the two paths name one existing file (same device and inode: hard links, symbolic
 /// links and different spellings included).
 bool sameExistingFile(const std::filesystem::path& a, const std::filesystem::path& b);
@@ -82,6 +88,7 @@ class TemporaryFiles {
 
  private:
   friend class StagedFile;
+  friend std::optional<std::string> folderProblem(const OutputTarget& target);
   static void add(const std::string& path);
   static void remove(const std::string& path);
 };

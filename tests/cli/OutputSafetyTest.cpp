@@ -309,6 +309,29 @@ TEST(OutputSafety, ASetOfOutputsIsCommittedTogether) {
                                       "m_second.json", "m_second.spv", "m_second.vert.spv", "texdir", "two.mtlx"}));
 }
 
+TEST(OutputSafety, AnUnwritableFolderIsFoundBeforeTheWork) {
+  // It was found when the image was written, after the render (10.9 s for a large one); a
+  // missing folder was found at once. Root writes where permissions forbid, so as root the test
+  // uses /sys, which refuses everyone.
+  TempFolder folder("unwritable");
+  fs::path locked = folder / "locked";
+  fs::create_directories(locked);
+  fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec);
+  if (::geteuid() == 0) locked = "/sys";
+  const CommandRun r = mxc("render " + corpus(kDefault) + " -o " + (locked / "x.png").string() + " --size 16 --spp 1");
+  EXPECT_EQ(r.exitCode, 3) << r.err;
+  // The option's name says the declaration refused it (a late write failure does not name it).
+  EXPECT_NE(r.err.find("error: -o: cannot write '" + (locked / "x.png").string() + "': Permission denied"), std::string::npos)
+      << r.err;
+  const CommandRun c = mxc("compile " + corpus(kDefault) + " -q -o " + (folder / "ok.spv").string() + " --glsl " +
+                           (locked / "x.glsl").string());
+  EXPECT_EQ(c.exitCode, 3) << c.err;
+  EXPECT_NE(c.err.find("error: --glsl: cannot write"), std::string::npos) << c.err;
+  fs::permissions(folder / "locked", fs::perms::owner_all);
+  EXPECT_EQ(folder.entries(), (std::vector<std::string>{"locked"})) << "nothing written, no temporary left";
+  EXPECT_TRUE(fs::is_empty(folder / "locked"));
+}
+
 TEST(OutputSafety, TerminationSignalsRemoveTemporariesAndCommitNothing) {
   TempFolder folder("signals");
   const fs::path doc = folder / "two.mtlx";
