@@ -81,8 +81,19 @@ bool finite(const Mesh& mesh) {
 
 /// tinygltf's file access, through readInputFile: a buffer URI naming a FIFO or /dev/zero is
 /// refused instead of blocking or filling memory; nothing is ever written.
-bool gltfFileExists(const std::string& path, void*) { return !inputFileProblem(path); }
-std::string gltfExpandPath(const std::string& path, void*) { return path; }
+// Anything that exists "exists" for tinygltf, so that reading it says why it cannot be read (a
+// FIFO, a folder, /dev/zero) rather than tinygltf's "File not found".
+bool gltfFileExists(const std::string& path, void*) {
+  const auto problem = inputFileProblem(path);
+  return !problem || *problem != "it does not exist";
+}
+// tinygltf joins the file's folder and a buffer's URI with a '/': an absolute URI ("/dev/zero",
+// a path reference of RFC 3986, s. 4.2) gives "folder//dev/zero", which names a file under the
+// folder. The folder is passed normalised (no "//" of its own), so a "//" is where the URI starts.
+std::string gltfExpandPath(const std::string& path, void*) {
+  const size_t absolute = path.find("//");
+  return absolute == std::string::npos ? path : path.substr(absolute + 1);
+}
 bool gltfReadFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
   auto bytes = readInputFile(path, kMaxMeshBytes);
   if (auto* why = std::get_if<1>(&bytes)) {
@@ -313,7 +324,7 @@ std::variant<Mesh, std::string> loadGltf(const std::filesystem::path& path, cons
   loader.SetFsCallbacks({&gltfFileExists, &gltfExpandPath, &gltfReadFile, &gltfRefuseWrite, nullptr});
   tinygltf::Model model;
   std::string err, warn;
-  const std::string base = path.parent_path().empty() ? std::string(".") : path.parent_path().string();
+  const std::string base = path.parent_path().empty() ? std::string(".") : path.parent_path().lexically_normal().string();
   const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                                        static_cast<unsigned int>(bytes.size()), base)
                          : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()), base);

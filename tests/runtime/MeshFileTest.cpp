@@ -3,6 +3,7 @@
 // file refused with a message naming it.
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <cstring>
@@ -179,6 +180,29 @@ fs::path triangleGltf(const std::string& name, const std::string& node, int inde
                   {"bufferView": 3, "componentType": 5123, "count": )" +
                            std::to_string(indexCount) + R"(, "type": "SCALAR"}]})";
   return writeTemp(name, json);
+}
+
+TEST(GltfMesh, ABufferThatIsNotARegularFileIsNamedForWhatItIs) {
+  // tinygltf said "File not found" for a FIFO, a folder and /dev/zero (an absolute URI was
+  // looked up under the file's folder).
+  const fs::path folder = fs::temp_directory_path() / ("mxc_gltf_buffers_" + std::to_string(::getpid()));
+  fs::remove_all(folder);
+  fs::create_directories(folder / "adir");
+  ASSERT_EQ(::mkfifo((folder / "fifo").c_str(), 0600), 0);
+  for (const auto& [uri, what] : std::vector<std::pair<std::string, std::string>>{
+           {"fifo", "it is a FIFO (named pipe), not a regular file"},
+           {"adir", "it is a directory, not a file"},
+           {"/dev/zero", "cannot read '/dev/zero': it is a character device, not a regular file"},
+           {"missing.bin", "File not found : missing.bin"}}) {
+    const fs::path file = folder / "m.gltf";
+    std::ofstream(file) << R"({"asset":{"version":"2.0"},"buffers":[{"uri":")" << uri
+                        << R"(","byteLength":36}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+                        << R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],)"
+                        << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})";
+    const std::string error = loadError(file);
+    EXPECT_NE(error.find(what), std::string::npos) << uri << ": " << error;
+  }
+  fs::remove_all(folder);
 }
 
 TEST(GltfMesh, ReadsAPrimitiveUnderItsNodeTransform) {
