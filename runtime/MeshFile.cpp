@@ -23,6 +23,7 @@
 #include <tiny_obj_loader.h>
 
 #include "compiler/common/InputFile.h"
+#include "runtime/Camera.h"
 #include "runtime/Tangents.h"
 
 namespace mxc::rt {
@@ -67,13 +68,31 @@ std::string lower(std::string s) {
   return s;
 }
 
-bool finite(const Mesh& mesh) {
+/// Why a loaded mesh cannot be rendered, positions first: a position that is NaN or infinite,
+/// positions beyond what the shaders' 32-bit floats take (runtime/Camera.h; the normals and
+/// tangents computed from such positions overflow too: a 1e10 triangle's edges cross to 1e20,
+/// whose squared length is inf), then any other value that is NaN or infinite. Each value is
+/// tested alone: a sum of finite values can overflow.
+std::optional<std::string> valueProblem(const Mesh& mesh) {
+  float reach = 0.0f;
   for (const Vertex& v : mesh.vertices) {
-    const float sum = v.position.x + v.position.y + v.position.z + v.normal.x + v.normal.y + v.normal.z + v.uv.x + v.uv.y +
-                      v.tangent.x + v.tangent.y + v.tangent.z;
-    if (!std::isfinite(sum)) return false;
+    for (int k = 0; k < 3; ++k) {
+      if (!std::isfinite(v.position[k])) return std::string("the mesh holds NaN or infinite positions");
+      reach = std::max(reach, std::abs(v.position[k]));
+    }
   }
-  return true;
+  if (reach > kLargestSceneRadius) {
+    return fmt::format("the mesh reaches {:g} units from the origin, and mxc renders meshes within {:g} (the shaders "
+                       "compute in 32-bit floats): scale it down",
+                       double(reach), double(kLargestSceneRadius));
+  }
+  for (const Vertex& v : mesh.vertices) {
+    const float values[] = {v.normal.x, v.normal.y, v.normal.z, v.uv.x, v.uv.y, v.tangent.x, v.tangent.y, v.tangent.z, v.tangent.w};
+    for (float value : values) {
+      if (!std::isfinite(value)) return std::string("the mesh holds NaN or infinite normals, tangents or texture coordinates");
+    }
+  }
+  return std::nullopt;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -542,8 +561,8 @@ std::variant<Mesh, std::string> loadMesh(const std::filesystem::path& path) {
   auto bytes = readInputFile(path, kMaxMeshBytes);
   if (auto* why = std::get_if<1>(&bytes)) return fmt::format("cannot read the mesh '{}': {}", path.string(), *why);
   auto mesh = extension == ".obj" ? loadObjText(path, std::get<0>(bytes)) : loadGltf(path, std::get<0>(bytes), extension == ".glb");
-  if (auto* loaded = std::get_if<Mesh>(&mesh); loaded && !finite(*loaded)) {
-    return fmt::format("{}: the mesh holds NaN or infinite values", path.string());
+  if (auto* loaded = std::get_if<Mesh>(&mesh)) {
+    if (auto problem = valueProblem(*loaded)) return fmt::format("{}: {}", path.string(), *problem);
   }
   return mesh;
 }

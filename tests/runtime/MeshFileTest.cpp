@@ -119,6 +119,12 @@ TEST(ObjMesh, RefusesMalformedFilesNamingThem) {
     EXPECT_NE(message.find("bad_value.obj:3:5: '" + std::string(value) + "' is not a finite number"), std::string::npos)
         << message;
   }
+  // A finite triangle 1e10 across: its normal overflowed and it was "NaN or infinite values".
+  const fs::path huge = writeTemp("huge.obj", "v 0 0 0\nv 1e10 0 0\nv 0 1e10 0\nf 1 2 3\n");
+  EXPECT_NE(loadError(huge).find("huge.obj: the mesh reaches 1e+10 units from the origin, and mxc renders meshes within 1e+09"),
+            std::string::npos)
+      << loadError(huge);
+  EXPECT_TRUE(std::holds_alternative<Mesh>(loadMesh(writeTemp("large.obj", "v 0 0 0\nv 1e9 0 0\nv 0 1e9 0\nf 1 2 3\n"))));
   const fs::path wraps = writeTemp("wraps.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999\n");
   EXPECT_NE(loadError(wraps).find("wraps.obj:4:7: face index 99999999999999999999 is out of range"), std::string::npos)
       << loadError(wraps);
