@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <new>
+#include <string_view>
 
 #include "cli/CommandLine.h"
 #include "cli/ExitCode.h"
@@ -15,9 +16,15 @@ int main(int argc, char** argv) {
   try {
     // Deep node graphs recurse deeply in resolution and lowering: commands run on a large stack.
     mxc::runWithLargeStack([&] { exitCode = runCommandLine(argc, argv); });
-  } catch (const std::bad_alloc&) {
-    // Unwinding has removed every temporary of the command (OutputSet, StagedFile).
-    std::fprintf(stderr, "error: out of memory\n");
+  } catch (const std::bad_alloc& e) {
+    // Unwinding has removed every temporary of the command (OutputSet, StagedFile). A Vulkan
+    // call says which call and which memory (rt::VulkanOutOfMemory); operator new says nothing.
+    const std::string_view what = e.what();
+    if (what == std::bad_alloc().what()) {
+      std::fprintf(stderr, "error: out of memory\n");
+    } else {
+      std::fprintf(stderr, "error: out of memory: %s\n", e.what());
+    }
     exitCode = kOutOfMemory;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -10,6 +10,10 @@
 namespace mxc::rt {
 
 void check(VkResult result, const char* what) {
+  if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY) {
+    throw VulkanOutOfMemory(fmt::format("{} failed: {} memory ran out", what,
+                                        result == VK_ERROR_OUT_OF_DEVICE_MEMORY ? "the device's" : "the host's"));
+  }
   if (result != VK_SUCCESS) throw VulkanError(fmt::format("{} failed (VkResult {})", what, static_cast<int>(result)));
 }
 

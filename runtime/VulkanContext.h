@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,6 +19,18 @@ namespace mxc::rt {
 class VulkanError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+/// A Vulkan call that ran out of device or host memory (VK_ERROR_OUT_OF_DEVICE_MEMORY,
+/// VK_ERROR_OUT_OF_HOST_MEMORY): a std::bad_alloc, so that it ends a command as running out of
+/// memory does (exit 4, cli/Main.cpp), with what ran out.
+class VulkanOutOfMemory : public std::bad_alloc {
+ public:
+  explicit VulkanOutOfMemory(std::string what) : what_(std::move(what)) {}
+  const char* what() const noexcept override { return what_.c_str(); }
+
+ private:
+  std::string what_;
 };
 
 /// Throws VulkanError naming the call when `result` is not VK_SUCCESS.

@@ -139,6 +139,20 @@ TEST(InputSafety, InspectJsonRunsOutOfMemoryCleanlyAtEveryLimit) {
   EXPECT_GT(refused, 0);
 }
 
+TEST(InputSafety, RunningOutOfDeviceMemoryIsExit4) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit this test sets";
+#endif
+  // Lavapipe's device memory is the process's: an 8192 x 8192 float image (1 GiB) in 3 GB of
+  // address space. It was exit 1, "vkAllocateMemory failed (VkResult -2)".
+  TempFolder folder("device_memory");
+  CommandRun r = mxc("render " + corpus(kDefault) + " -o " + (folder / "big.exr").string() + " --size 8192 --spp 1",
+                     "ulimit -v 3000000;");
+  EXPECT_EQ(r.exitCode, 4) << r.err;
+  EXPECT_NE(r.err.find("error: out of memory: vkAllocateMemory failed: the device's memory ran out"), std::string::npos) << r.err;
+  EXPECT_TRUE(folder.entries().empty()) << "no image and no temporary";
+}
+
 TEST(InputSafety, ImagesBeyondTheDeviceLimitAreDownsampled) {
   // Lavapipe takes 16384 texels per side: a 20000 x 4 image went to vkCreateImage as it was.
   TempFolder folder("large");
