@@ -27,6 +27,7 @@ struct Limit {
   const char* what;
   uint32_t Counts::*count;  // nullptr: resources()
   uint32_t VkPhysicalDeviceLimits::*limit;
+  const char* name;  // the member's name, for the message
 };
 
 uint32_t countOf(const Counts& counts, const Limit& limit) {
@@ -35,29 +36,27 @@ uint32_t countOf(const Counts& counts, const Limit& limit) {
 
 }  // namespace
 
+// A limit's member and its name, written once.
+#define MXC_LIMIT(member) &VkPhysicalDeviceLimits::member, #member
+
 std::optional<std::string> descriptorLimitProblem(const VkPhysicalDeviceLimits& limits, const std::string& device,
                                                   const std::vector<const DescriptorSet*>& sets) {
   static const Limit perStage[] = {
-      {"samplers (one per texture)", &Counts::samplers, &VkPhysicalDeviceLimits::maxPerStageDescriptorSamplers},
-      {"sampled images (one per texture)", &Counts::sampledImages, &VkPhysicalDeviceLimits::maxPerStageDescriptorSampledImages},
-      {"uniform buffers", &Counts::uniformBuffers, &VkPhysicalDeviceLimits::maxPerStageDescriptorUniformBuffers},
-      {"storage buffers", &Counts::storageBuffers, &VkPhysicalDeviceLimits::maxPerStageDescriptorStorageBuffers},
-      {"storage images", &Counts::storageImages, &VkPhysicalDeviceLimits::maxPerStageDescriptorStorageImages},
-      {"resources", nullptr, &VkPhysicalDeviceLimits::maxPerStageResources}};
+      {"samplers (one per texture)", &Counts::samplers, MXC_LIMIT(maxPerStageDescriptorSamplers)},
+      {"sampled images (one per texture)", &Counts::sampledImages, MXC_LIMIT(maxPerStageDescriptorSampledImages)},
+      {"uniform buffers", &Counts::uniformBuffers, MXC_LIMIT(maxPerStageDescriptorUniformBuffers)},
+      {"storage buffers", &Counts::storageBuffers, MXC_LIMIT(maxPerStageDescriptorStorageBuffers)},
+      {"storage images", &Counts::storageImages, MXC_LIMIT(maxPerStageDescriptorStorageImages)},
+      {"resources", nullptr, MXC_LIMIT(maxPerStageResources)}};
   static const Limit perLayout[] = {
-      {"samplers (one per texture)", &Counts::samplers, &VkPhysicalDeviceLimits::maxDescriptorSetSamplers},
-      {"sampled images (one per texture)", &Counts::sampledImages, &VkPhysicalDeviceLimits::maxDescriptorSetSampledImages},
-      {"uniform buffers", &Counts::uniformBuffers, &VkPhysicalDeviceLimits::maxDescriptorSetUniformBuffers},
-      {"storage buffers", &Counts::storageBuffers, &VkPhysicalDeviceLimits::maxDescriptorSetStorageBuffers},
-      {"storage images", &Counts::storageImages, &VkPhysicalDeviceLimits::maxDescriptorSetStorageImages}};
+      {"samplers (one per texture)", &Counts::samplers, MXC_LIMIT(maxDescriptorSetSamplers)},
+      {"sampled images (one per texture)", &Counts::sampledImages, MXC_LIMIT(maxDescriptorSetSampledImages)},
+      {"uniform buffers", &Counts::uniformBuffers, MXC_LIMIT(maxDescriptorSetUniformBuffers)},
+      {"storage buffers", &Counts::storageBuffers, MXC_LIMIT(maxDescriptorSetStorageBuffers)},
+      {"storage images", &Counts::storageImages, MXC_LIMIT(maxDescriptorSetStorageImages)}};
+#undef MXC_LIMIT
   static const std::pair<VkShaderStageFlagBits, const char*> stages[] = {
       {VK_SHADER_STAGE_VERTEX_BIT, "vertex"}, {VK_SHADER_STAGE_FRAGMENT_BIT, "fragment"}, {VK_SHADER_STAGE_COMPUTE_BIT, "compute"}};
-  static const char* const names[] = {"maxPerStageDescriptorSamplers", "maxPerStageDescriptorSampledImages",
-                                      "maxPerStageDescriptorUniformBuffers", "maxPerStageDescriptorStorageBuffers",
-                                      "maxPerStageDescriptorStorageImages", "maxPerStageResources"};
-  static const char* const layoutNames[] = {"maxDescriptorSetSamplers", "maxDescriptorSetSampledImages",
-                                            "maxDescriptorSetUniformBuffers", "maxDescriptorSetStorageBuffers",
-                                            "maxDescriptorSetStorageImages"};
   // Textures are the descriptors a material adds: their count is what a message can tell the
   // user to change.
   uint32_t textures = 0;
@@ -75,7 +74,7 @@ std::optional<std::string> descriptorLimitProblem(const VkPhysicalDeviceLimits& 
       if (need > limit) {
         return fmt::format("the {} stage binds {} {}, and this device ({}) takes at most {} per stage ({}): the "
                            "material reads too many textures (the pipeline binds {}, mxc's own among them)",
-                           stageName, need, perStage[k].what, device, limit, names[k], textures);
+                           stageName, need, perStage[k].what, device, limit, perStage[k].name, textures);
       }
     }
   }
@@ -87,7 +86,7 @@ std::optional<std::string> descriptorLimitProblem(const VkPhysicalDeviceLimits& 
     const uint32_t need = countOf(all, perLayout[k]), limit = limits.*perLayout[k].limit;
     if (need > limit) {
       return fmt::format("the pipeline binds {} {}, and this device ({}) takes at most {} ({})", need, perLayout[k].what,
-                         device, limit, layoutNames[k]);
+                         device, limit, perLayout[k].name);
     }
   }
   return std::nullopt;

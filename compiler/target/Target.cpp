@@ -41,7 +41,6 @@ const TargetInfo& info(Target target) {
 
 std::string_view targetName(Target target) { return info(target).name; }
 std::string_view fileExtension(Target target) { return info(target).extension; }
-TextureLimit guaranteedTextures(Target target) { return info(target).textures; }
 
 std::optional<std::string> textureLimitWarning(const std::vector<Resource>& resources) {
   const auto textures = static_cast<uint32_t>(std::count_if(

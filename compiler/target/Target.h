@@ -32,12 +32,11 @@ std::string targetNames();
 /// ".hlsl", ".wgsl".
 std::string_view fileExtension(Target target);
 /// The textures per shader stage every device or implementation of a target takes, and where
-/// that figure comes from.
+/// that figure comes from (textureLimitWarning's table).
 struct TextureLimit {
   uint32_t perStage = 0;
   std::string_view source;
 };
-TextureLimit guaranteedTextures(Target target);
 
 /// The target a file extension names (".spv" and the above, also ".msl"), if any.
 std::optional<Target> targetOfExtension(std::string_view extension);
