@@ -13,6 +13,7 @@
 #include <new>
 
 #include "compiler/common/OutputFile.h"
+#include "compiler/common/TerminationSignals.h"
 
 namespace mxc::cli {
 
@@ -28,9 +29,7 @@ namespace {
 sigset_t terminationSignals() {
   sigset_t set;
   sigemptyset(&set);
-  for (int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGPIPE}) {
-    sigaddset(&set, signal);
-  }
+  for (int signal : kTerminationSignals) sigaddset(&set, signal);
   return set;
 }
 

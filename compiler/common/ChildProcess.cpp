@@ -12,6 +12,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "compiler/common/TerminationSignals.h"
+
 extern char** environ;
 
 namespace mxc {
@@ -73,9 +75,8 @@ std::optional<ProcessResult> runProcess(const std::vector<std::string>& argv, co
   sigset_t none, defaults;
   sigemptyset(&none);
   sigemptyset(&defaults);
-  for (int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGPIPE, SIGXFSZ}) {
-    sigaddset(&defaults, signal);
-  }
+  for (int signal : kTerminationSignals) sigaddset(&defaults, signal);
+  sigaddset(&defaults, SIGXFSZ);
   posix_spawnattr_setsigmask(&attributes, &none);
   posix_spawnattr_setsigdefault(&attributes, &defaults);
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
