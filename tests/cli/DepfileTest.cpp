@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <functional>
 
 #include "support/CommandSupport.h"
 
@@ -85,6 +86,20 @@ std::string ninjaPath(const std::string& path) {
   return out;
 }
 
+/// The dry run `dryRun` in `folder` finds the rule up to date while `input` is older than the
+/// output, and out of date (`wouldRebuild` of its output) once the input is newer.
+void expectTracksInput(const TempFolder& folder, const fs::path& input, const std::string& dryRun,
+                       const std::function<bool(const std::string&)>& wouldRebuild) {
+  setAge(input, std::chrono::seconds(-100));
+  const auto [fresh, freshCode] = shell(folder.path(), dryRun);
+  EXPECT_EQ(freshCode, 0) << fresh;
+  EXPECT_FALSE(wouldRebuild(fresh)) << "up to date after the build: " << fresh;
+  setAge(input, std::chrono::seconds(100));
+  const auto [stale, staleCode] = shell(folder.path(), dryRun);
+  EXPECT_EQ(staleCode, 0) << stale;
+  EXPECT_TRUE(wouldRebuild(stale)) << "out of date once the input is newer: " << stale;
+}
+
 const char* const kAwkwardNames[] = {"plain", "my doc", "x#1", "cost$5", "c:d", "b\\ c", "b\\c", "b\\\\ c", "[x]{y}@!~,+", "\xc3\xa9t\xc3\xa9"};
 
 TEST(Depfile, GnuMakeReadsEachNameBackAsTheFileItNames) {
@@ -97,14 +112,7 @@ TEST(Depfile, GnuMakeReadsEachNameBackAsTheFileItNames) {
     writeText(folder / "dep.d", word(output.string()) + ": \\\n  " + word(input.string()) + "\n");
     // The depfile's rule is the first, so the default goal; the pattern rule gives it a recipe.
     writeText(folder / "Makefile", "include dep.d\n%.glsl:\n\t@echo REMADE\n");
-    setAge(input, std::chrono::seconds(-100));
-    const auto [fresh, freshCode] = shell(folder.path(), "make -n");
-    EXPECT_EQ(freshCode, 0) << fresh;
-    EXPECT_EQ(fresh.find("REMADE"), std::string::npos) << "up to date after the build: " << fresh;
-    setAge(input, std::chrono::seconds(100));
-    const auto [stale, staleCode] = shell(folder.path(), "make -n");
-    EXPECT_EQ(staleCode, 0) << stale;
-    EXPECT_NE(stale.find("REMADE"), std::string::npos) << "out of date once the input is newer: " << stale;
+    expectTracksInput(folder, input, "make -n", [](const std::string& out) { return out.find("REMADE") != std::string::npos; });
   }
 }
 
@@ -121,13 +129,8 @@ TEST(Depfile, NinjaReadsEachNameBackAsTheFileItNames) {
                                       "  deps = gcc\nbuild " + ninjaPath(output.string()) + ": gen\n");
     const auto [built, builtCode] = shell(folder.path(), "ninja");
     ASSERT_EQ(builtCode, 0) << built;
-    const auto [fresh, freshCode] = shell(folder.path(), "ninja -n");
-    EXPECT_EQ(freshCode, 0) << fresh;
-    EXPECT_NE(fresh.find("no work to do"), std::string::npos) << "up to date after the build: " << fresh;
-    setAge(input, std::chrono::seconds(100));
-    const auto [stale, staleCode] = shell(folder.path(), "ninja -n");
-    EXPECT_EQ(staleCode, 0) << stale;
-    EXPECT_EQ(stale.find("no work to do"), std::string::npos) << "out of date once the input is newer: " << stale;
+    expectTracksInput(folder, input, "ninja -n",
+                      [](const std::string& out) { return out.find("no work to do") == std::string::npos; });
   }
 }
 
