@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "compiler/common/Quote.h"
+
 namespace mxc::doc {
 
 namespace {
@@ -220,10 +222,15 @@ PortT Builder::buildPort(const xml::Element& e, const Scope& outer) {
                        fmt::format("'{}' has both an interfacename and a node connection; give one", port.name));
   }
 
+  // MaterialX 1.22-1.26 connected a node's input by a parameter of type `opgraphnode` whose
+  // value names the node (1.34 made it a nodename); its type, the node's, is set by the upgrade.
+  const bool nodeReference = legacy_ && port.type == "opgraphnode";
+  if (nodeReference) port.nodename = e.attributeOr("value", "");
+
   // Outputs of nodedefs give `default` where inputs give `value`. An output default may name a
   // geometric property instead of a value (ND_flake2d's flakenormal defaults to "Nworld").
-  const xml::Attribute* valueAttribute = e.findAttribute("value");
-  if (const xml::Attribute* d = e.findAttribute("default"); d && !valueAttribute) {
+  const xml::Attribute* valueAttribute = nodeReference ? nullptr : e.findAttribute("value");
+  if (const xml::Attribute* d = e.findAttribute("default"); d && !valueAttribute && !nodeReference) {
     if (std::is_same_v<PortT, Output> && isValidName(d->value) && componentCount(valueTypeOf(port.type)) > 1) {
       port.defaultgeomprop = d->value;
     } else {
@@ -243,17 +250,31 @@ PortT Builder::buildPort(const xml::Element& e, const Scope& outer) {
     // typedef's members (the typedef may come from a library).
     if (!port.type.empty() && isStandardTypeName(port.type)) {
       ValueError error;
-      port.value = tryParseValue(valueTypeOf(port.type), valueAttribute->value, &error);
+      ValueError ignored;
+      port.value = tryParseValue(valueTypeOf(port.type), valueAttribute->value, &error, &ignored);
+      // Point inside the value when it was not rewritten by entity decoding.
+      auto inside = [&](size_t offset) {
+        return e.document().locationOf(valueAttribute->valueOffset + (valueAttribute->decoded ? 0u : static_cast<uint32_t>(offset)));
+      };
       if (!port.value) {
-        // Point inside the value when it was not rewritten by entity decoding.
-        const uint32_t shift = valueAttribute->decoded ? 0u : static_cast<uint32_t>(error.offset);
-        diagnostics_.error(e.document().locationOf(valueAttribute->valueOffset + shift),
-                           fmt::format("invalid {} value \"{}\" for '{}': {}", port.type, valueAttribute->value,
-                                       port.name, error.message));
+        diagnostics_.error(inside(error.offset), fmt::format("invalid {} value {} for '{}': {}", port.type,
+                                                             quotedValue(valueAttribute->value), port.name, error.message));
+      } else if (!ignored.message.empty()) {
+        diagnostics_.warning(inside(ignored.offset), fmt::format("{} value {} for '{}': {}", port.type,
+                                                                 quotedValue(valueAttribute->value), port.name, ignored.message));
       }
     }
   }
-  for (const xml::Element& child : e.children()) unexpectedChild(child, e.name());
+  for (const xml::Element& child : e.children()) {
+    // MaterialX 1.22-1.26 connected a graph output by its child <parameter name="in"
+    // type="opgraphnode" value="NODE"/> (1.34 made it the output's nodename).
+    if (legacy_ && std::is_same_v<PortT, Output> && child.name() == "parameter" &&
+        child.attributeOr("type", "") == "opgraphnode") {
+      if (child.attributeOr("name", "") == "in") port.nodename = child.attributeOr("value", "");
+      continue;
+    }
+    unexpectedChild(child, e.name());
+  }
   return port;
 }
 
@@ -346,7 +367,10 @@ NodeDef Builder::buildNodeDef(const xml::Element& e, const Scope& outer) {
     // category `shaderprogram`; up to 1.36 a nodedef gave its output type as a `type`
     // attribute, for an output named "out".
     def.legacyShader = e.findAttribute("shadertype") != nullptr;
-    if (e.name() == "shader") def.node = qualified(scope, e.attributeOr("shaderprogram", ""));
+    // MaterialX 1.22-1.23 named the shader's program `shadername` (1.24 made it `node`).
+    if (e.name() == "shader") {
+      def.node = qualified(scope, e.attributeOr("shaderprogram", e.attributeOr("shadername", e.attributeOr("node", ""))));
+    }
     std::string_view type = def.legacyShader ? "surfaceshader" : currentType(e.attributeOr("type", ""));
     if (!type.empty() && type != "multioutput" && def.outputs.empty()) {
       Output out;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -183,6 +184,139 @@ int convertSwizzleNodes(Document& doc, ScopeNodes scope) {
     n.inputs.clear();
     n.inputs.push_back(value);
   }
+  // The nodedef a swizzle named (ND_swizzle_color3_color3, ...) is gone: the node it became is
+  // matched by its signature.
+  for (Node& n : *scope.nodes) {
+    if (n.nodedef.starts_with("ND_swizzle_")) n.nodedef = {};
+  }
+  return edits;
+}
+
+/// The nodes an upgrade adds to a scope, appended to it once the scope's nodes are no longer
+/// walked. Nodes are named by the index `add` returns: a reference would not survive the next.
+struct AddedNodes {
+  Document& doc;
+  ScopeNodes scope;
+  std::vector<Node> nodes;
+
+  /// A node of `category` and `type` at `near`'s place, named from `base` uniquely in the scope.
+  size_t add(std::string_view category, std::string_view type, const std::string& base, const Node& near) {
+    std::string name = scope.uniqueName(base);
+    for (int i = 2; std::any_of(nodes.begin(), nodes.end(), [&](const Node& a) { return a.name == name; }); ++i) {
+      name = scope.uniqueName(base + "_" + std::to_string(i));
+    }
+    Node node;
+    node.category = category;
+    node.type = type;
+    node.location = near.location;
+    node.name = doc.own(name);
+    nodes.push_back(std::move(node));
+    return nodes.size() - 1;
+  }
+  /// The input `name` of type `type` connected to added node `k`.
+  Input connection(std::string_view name, std::string_view type, size_t k) const {
+    Input in;
+    in.name = name;
+    in.type = type;
+    in.nodename = nodes[k].name;
+    in.location = nodes[k].location;
+    return in;
+  }
+  /// `from` as the input `name` (its binding kept: a value, a connection or an interface
+  /// name), or a value input of `type` written `fallback` when `from` is absent.
+  Input moved(const Input* from, std::string_view name, std::string_view type, std::string_view fallback,
+              SourceLocation where) {
+    Input in;
+    if (from) in = *from;
+    in.name = name;
+    in.type = type;
+    in.element = {};
+    if (!from) {
+      in.location = where;
+      in.valueLocation = where;
+      in.valueString = doc.own(std::string(fallback));
+      in.value = tryParseValue(valueTypeOf(type), *in.valueString);
+    }
+    return in;
+  }
+  void commit() {
+    for (Node& n : nodes) scope.nodes->push_back(std::move(n));
+    nodes.clear();
+  }
+};
+
+// MaterialX 1.39 changed normalmap (its specification's "normalmap" and the 1.39 changes): the
+// `space` input is gone, the nodedef ND_normalmap became ND_normalmap_float (a vector2 scale
+// has its own), and the bitangent is an input. An object-space normal map, a remapped normal
+// with no frame, becomes normalize(in * 2 - 1); a tangent-space one keeps its node, and where
+// the 1.38 document gave a normal or a tangent without a bitangent, the bitangent 1.38 derived,
+// normalize(cross(normal, tangent)), is given explicitly.
+int upgradeNormalMaps(Document& doc, ScopeNodes scope) {
+  int edits = 0;
+  AddedNodes added{doc, scope, {}};
+  for (Node& n : *scope.nodes) {
+    if (n.category != "normalmap") continue;
+    if (n.nodedef == "ND_normalmap") n.nodedef = "ND_normalmap_float", ++edits;
+    const Input* space = n.findInput("space");
+    const bool objectSpace = space && space->valueString && *space->valueString == "object";
+    const std::string base(n.name);
+    if (objectSpace) {
+      const size_t scaled = added.add("multiply", "vector3", base + "_decode", n);
+      added.nodes[scaled].inputs.push_back(added.moved(n.findInput("in"), "in1", "vector3", "0.5, 0.5, 1", n.location));
+      added.nodes[scaled].inputs.push_back(added.moved(nullptr, "in2", "float", "2", n.location));
+      const size_t centred = added.add("subtract", "vector3", base + "_centre", n);
+      added.nodes[centred].inputs.push_back(added.connection("in1", "vector3", scaled));
+      added.nodes[centred].inputs.push_back(added.moved(nullptr, "in2", "float", "1", n.location));
+      n.category = "normalize";
+      if (!n.nodedef.empty()) n.nodedef = "ND_normalize_vector3";
+      n.inputs.clear();
+      n.inputs.push_back(added.connection("in", "vector3", centred));
+      ++edits;
+      continue;
+    }
+    if (space) std::erase_if(n.inputs, [](const Input& i) { return i.name == "space"; }), ++edits;
+    const Input* normal = n.findInput("normal");
+    const Input* tangent = n.findInput("tangent");
+    if ((normal || tangent) && !n.findInput("bitangent")) {
+      // The one of the two not given is the geometry's own (the nodedef's defaultgeomprop).
+      const size_t cross = added.add("crossproduct", "vector3", base + "_cross", n);
+      for (auto [port, name, geomprop] : {std::tuple{normal, "in1", "normal"}, std::tuple{tangent, "in2", "tangent"}}) {
+        if (port) {
+          Input in = added.moved(port, name, "vector3", "", n.location);
+          added.nodes[cross].inputs.push_back(in);
+          continue;
+        }
+        const size_t frame = added.add(geomprop, "vector3", base + "_" + geomprop, n);
+        added.nodes[frame].inputs.push_back(added.moved(nullptr, "space", "string", "world", n.location));
+        Input in = added.connection(name, "vector3", frame);
+        added.nodes[cross].inputs.push_back(in);
+      }
+      const size_t unit = added.add("normalize", "vector3", base + "_bitangent", n);
+      added.nodes[unit].inputs.push_back(added.connection("in", "vector3", cross));
+      n.inputs.push_back(added.connection("bitangent", "vector3", unit));
+      ++edits;
+    }
+  }
+  added.commit();
+  return edits;
+}
+
+// MaterialX 1.39 gave switch 10 inputs where 1.38 had 5, and a constant `which` of 5 or more,
+// out of range in 1.38, chose in1 there: it is set to 0 so that it still does.
+int upgradeSwitchSelectors(Document& doc, ScopeNodes scope) {
+  int edits = 0;
+  for (Node& n : *scope.nodes) {
+    if (n.category != "switch") continue;
+    Input* which = n.findInput("which");
+    if (!which || which->isConnected() || !which->value) continue;
+    const ValueType type = which->value->type();
+    const bool outOfRange = (type == ValueType::Integer && which->value->as<int32_t>() >= 5) ||
+                            (type == ValueType::Float && which->value->as<float>() >= 5.0f);
+    if (!outOfRange) continue;
+    which->valueString = doc.own("0");
+    which->value = tryParseValue(type, "0");
+    ++edits;
+  }
   return edits;
 }
 
@@ -193,8 +327,12 @@ void upgradeTo139(Document& doc, Diagnostics& diagnostics) {
   int atan2 = 0;
   int radius = 0;
   int swizzles = 0;
+  int normalmaps = 0;
+  int switches = 0;
   for (ScopeNodes scope : scopesOf(doc)) {
     swizzles += convertSwizzleNodes(doc, scope);
+    normalmaps += upgradeNormalMaps(doc, scope);
+    switches += upgradeSwitchSelectors(doc, scope);
     atan2 += renameAtan2Inputs(scope);
     radius += convertSubsurfaceRadius(doc, scope);
     foldThinFilmLayers(doc, scope, diagnostics);
@@ -202,6 +340,8 @@ void upgradeTo139(Document& doc, Diagnostics& diagnostics) {
   if (atan2) doc.upgradeNotes.push_back(fmt::format("{} atan2 inputs renamed to iny/inx", atan2));
   if (radius) doc.upgradeNotes.push_back(fmt::format("{} subsurface_bsdf radius inputs made color3", radius));
   if (swizzles) doc.upgradeNotes.push_back(fmt::format("{} swizzle nodes made dot (with channels) or constant nodes", swizzles));
+  if (normalmaps) doc.upgradeNotes.push_back(fmt::format("{} normalmap changes (space, bitangent, ND_normalmap_float)", normalmaps));
+  if (switches) doc.upgradeNotes.push_back(fmt::format("{} switch selectors of 5 or more set to 0", switches));
   doc.link();
 }
 

@@ -52,6 +52,26 @@ void applyOverrides(const LegacyMaterial& material, const NodeDef& def, Node& sh
   }
 }
 
+/// MaterialX 1.22-1.26 connected a shader's input to a graph output on the <shader> itself:
+/// `graphname` (1.25: `opgraph`) names the graph and `graphoutput` its output. MaterialX's 1.34
+/// upgrade moves each to a binding of every shaderref of that shader; a binding the shaderref
+/// makes itself wins.
+void bindGraphOutputs(const NodeDef& def, Node& shader) {
+  for (const Input& declared : def.inputs) {
+    if (!declared.element.valid()) continue;
+    const std::string_view graph = declared.element.attributeOr("graphname", declared.element.attributeOr("opgraph", ""));
+    const std::string_view output = declared.element.attributeOr("graphoutput", "");
+    if (graph.empty() || output.empty() || shader.findInput(declared.name)) continue;
+    Input bound;
+    bound.name = declared.name;
+    bound.type = declared.type;
+    bound.nodegraph = graph;
+    bound.output = output;
+    bound.location = declared.location;
+    shader.inputs.push_back(bound);
+  }
+}
+
 // MaterialX 1.38 replaced the <material> element by material nodes: each <shaderref> becomes a
 // shader node (its bindings become inputs), and a surfacematerial node of the material's name
 // connects them, one input per shader type.
@@ -96,6 +116,7 @@ void convertMaterials(Document& doc, Diagnostics& diagnostics) {
       shader.inputs = ref.bindings;
       shader.tokens = ref.tokens;
       if (def) applyOverrides(material, *def, shader);
+      if (def) bindGraphOutputs(*def, shader);
 
       if (!materialNode) {
         materialNode.emplace();
@@ -332,6 +353,24 @@ int upgradeBsdfsOf138(Document& doc, ScopeNodes scope) {
   return edits;
 }
 
+// MaterialX 1.22-1.26 forms inside a scope: a node input of type `opgraphnode` (the builder
+// made it a connection) takes the connected node's type, or color3 when there is no such node
+// (MaterialX's 1.34 upgrade); constant's input `color` is `value` since 1.26.
+int upgradeNodesOf126(ScopeNodes scope, Version version) {
+  int edits = 0;
+  for (Node& n : *scope.nodes) {
+    for (Input& in : n.inputs) {
+      if (in.type == "opgraphnode") {
+        const Node* source = scope.find(in.nodename);
+        in.type = source && !source->type.empty() ? source->type : std::string_view("color3");
+        ++edits;
+      }
+      if (version < Version{1, 26} && n.category == "constant" && in.name == "color") in.name = "value", ++edits;
+    }
+  }
+  return edits;
+}
+
 /// A filename as 1.36 writes it: MaterialX 1.35's %UDIM and %UVTILE are <UDIM> and <UVTILE>.
 int renameFilenameTokens(Document& doc, Port& port) {
   if (port.type != "filename" || !port.valueString) return 0;
@@ -360,6 +399,7 @@ void upgradeTo138(Document& doc, Diagnostics& diagnostics) {
   int bsdfs = 0;
   int filenames = 0;
   for (ScopeNodes scope : scopesOf(doc)) {
+    if (version < Version{1, 34}) renamed += upgradeNodesOf126(scope, version);
     if (version < Version{1, 37}) renamed += renameNodesOf137(scope);
     bsdfs += upgradeBsdfsOf138(doc, scope);
     if (version < Version{1, 36}) scope.forEachPort([&](Port& port) { filenames += renameFilenameTokens(doc, port); });

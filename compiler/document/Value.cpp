@@ -75,7 +75,19 @@ std::vector<Token> splitNumbers(std::string_view text) {
   return out;
 }
 
-std::optional<float> parseFloat(const Token& token, ValueError& error) {
+/// MaterialX reads each number as a C++ stream does (`std::stringstream >> value`, its
+/// Value.cpp): the longest prefix that is a number, the rest of the component ignored, so its
+/// own test suite's "0.5.0" is 0.5 and an integer written "2.5" is 2. mxc reads the same
+/// numbers and says, through `ignored`, where it read past something (the first such place).
+void noteIgnored(const Token& token, const char* begin, const char* end, std::string_view read, ValueError* ignored) {
+  if (!ignored || !ignored->message.empty()) return;
+  const auto used = static_cast<size_t>(end - begin) + (token.text.data() == begin ? 0u : 1u);  // the '+' skipped
+  ignored->offset = token.offset + used;
+  ignored->message = fmt::format("'{}' is read as {}, as MaterialX reads it: '{}' after the number is ignored", token.text,
+                                 read, token.text.substr(used));
+}
+
+std::optional<float> parseFloat(const Token& token, ValueError& error, ValueError* ignored) {
   std::string_view t = token.text;
   if (t.empty()) {
     error = {token.offset, "expected a number"};
@@ -89,19 +101,21 @@ std::optional<float> parseFloat(const Token& token, ValueError& error) {
     error = {token.offset, fmt::format("'{}' is out of the range of a 32-bit float", token.text)};
     return std::nullopt;
   }
-  if (ec != std::errc() || end != t.data() + t.size()) {
+  if (ec != std::errc()) {
     error = {token.offset, fmt::format("'{}' is not a number", token.text)};
     return std::nullopt;
   }
-  // from_chars accepts "inf" and "nan"; a material parameter must be finite.
+  // from_chars accepts "inf" and "nan"; a material parameter must be finite (and MaterialX's
+  // stream does not read them).
   if (!std::isfinite(value)) {
     error = {token.offset, fmt::format("'{}' is not a finite number", token.text)};
     return std::nullopt;
   }
+  if (end != t.data() + t.size()) noteIgnored(token, t.data(), end, formatFloat(value), ignored);
   return value;
 }
 
-std::optional<int32_t> parseInteger(const Token& token, ValueError& error) {
+std::optional<int32_t> parseInteger(const Token& token, ValueError& error, ValueError* ignored) {
   std::string_view t = token.text;
   if (!t.empty() && t[0] == '+') t.remove_prefix(1);
   int32_t value = 0;
@@ -110,20 +124,21 @@ std::optional<int32_t> parseInteger(const Token& token, ValueError& error) {
     error = {token.offset, fmt::format("'{}' does not fit a 32-bit integer", token.text)};
     return std::nullopt;
   }
-  if (t.empty() || ec != std::errc() || end != t.data() + t.size()) {
+  if (t.empty() || ec != std::errc()) {
     error = {token.offset, fmt::format("'{}' is not an integer", token.text)};
     return std::nullopt;
   }
+  if (end != t.data() + t.size()) noteIgnored(token, t.data(), end, std::to_string(value), ignored);
   return value;
 }
 
 /// Parses exactly `count` floats (count > 0), or a multiple of `count` when `array` is set.
 std::optional<std::vector<float>> parseFloats(std::string_view text, size_t count, bool array, std::string_view name,
-                                              ValueError& error) {
+                                              ValueError& error, ValueError* ignored) {
   std::vector<float> out;
   std::vector<Token> tokens = splitNumbers(text);
   for (const Token& token : tokens) {
-    std::optional<float> f = parseFloat(token, error);
+    std::optional<float> f = parseFloat(token, error, ignored);
     if (!f) return std::nullopt;
     out.push_back(*f);
   }
@@ -184,7 +199,7 @@ int componentCount(ValueType type) {
   }
 }
 
-std::variant<Value, ValueError> parseValue(ValueType type, std::string_view text) {
+std::variant<Value, ValueError> parseValue(ValueType type, std::string_view text, ValueError* ignored) {
   ValueError error;
   auto fail = [&]() -> std::variant<Value, ValueError> { return error; };
   switch (type) {
@@ -203,7 +218,7 @@ std::variant<Value, ValueError> parseValue(ValueType type, std::string_view text
     case ValueType::Integer: {
       std::vector<Token> tokens = splitNumbers(text);
       if (tokens.size() != 1) return ValueError{0, fmt::format("an integer value needs 1 number, found {}", tokens.size())};
-      auto i = parseInteger(tokens[0], error);
+      auto i = parseInteger(tokens[0], error, ignored);
       if (!i) return fail();
       return Value(type, *i);
     }
@@ -216,7 +231,7 @@ std::variant<Value, ValueError> parseValue(ValueType type, std::string_view text
     case ValueType::Matrix33:
     case ValueType::Matrix44: {
       const auto n = static_cast<size_t>(componentCount(type));
-      auto f = parseFloats(text, n, false, typeName(type), error);
+      auto f = parseFloats(text, n, false, typeName(type), error, ignored);
       if (!f) return fail();
       const std::vector<float>& v = *f;
       switch (type) {
@@ -246,31 +261,31 @@ std::variant<Value, ValueError> parseValue(ValueType type, std::string_view text
     case ValueType::IntegerArray: {
       std::vector<int32_t> out;
       for (const Token& t : splitNumbers(text)) {
-        auto i = parseInteger(t, error);
+        auto i = parseInteger(t, error, ignored);
         if (!i) return fail();
         out.push_back(*i);
       }
       return Value(type, std::move(out));
     }
     case ValueType::FloatArray: {
-      auto f = parseFloats(text, 1, true, "floatarray", error);
+      auto f = parseFloats(text, 1, true, "floatarray", error, ignored);
       if (!f) return fail();
       return Value(type, std::move(*f));
     }
     case ValueType::Vector2Array: {
-      auto f = parseFloats(text, 2, true, "vector2array", error);
+      auto f = parseFloats(text, 2, true, "vector2array", error, ignored);
       if (!f) return fail();
       return Value(type, group<glm::vec2>(*f));
     }
     case ValueType::Vector3Array:
     case ValueType::Color3Array: {
-      auto f = parseFloats(text, 3, true, typeName(type), error);
+      auto f = parseFloats(text, 3, true, typeName(type), error, ignored);
       if (!f) return fail();
       return Value(type, group<glm::vec3>(*f));
     }
     case ValueType::Vector4Array:
     case ValueType::Color4Array: {
-      auto f = parseFloats(text, 4, true, typeName(type), error);
+      auto f = parseFloats(text, 4, true, typeName(type), error, ignored);
       if (!f) return fail();
       return Value(type, group<glm::vec4>(*f));
     }
@@ -286,8 +301,8 @@ std::variant<Value, ValueError> parseValue(ValueType type, std::string_view text
   return ValueError{0, "unknown type"};
 }
 
-std::optional<Value> tryParseValue(ValueType type, std::string_view text, ValueError* error) {
-  auto result = parseValue(type, text);
+std::optional<Value> tryParseValue(ValueType type, std::string_view text, ValueError* error, ValueError* ignored) {
+  auto result = parseValue(type, text, ignored);
   if (auto* v = std::get_if<Value>(&result)) return std::move(*v);
   if (error) *error = std::get<ValueError>(result);
   return std::nullopt;

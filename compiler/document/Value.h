@@ -92,11 +92,14 @@ struct ValueError {
 
 /// Parses a document value string of the given type (whitespace around components is allowed;
 /// floats must be finite; integers must fit 32 bits). Types without literal values accept only
-/// the empty string.
-std::variant<Value, ValueError> parseValue(ValueType type, std::string_view text);
+/// the empty string. Each number is read as MaterialX reads it, its longest prefix that is a
+/// number ("0.5.0" is 0.5, an integer "2.5" is 2); where something after a number was ignored,
+/// `ignored` (when given) says where and what, for a warning.
+std::variant<Value, ValueError> parseValue(ValueType type, std::string_view text, ValueError* ignored = nullptr);
 
 /// Parses, and returns nullopt with `error` filled on failure.
-std::optional<Value> tryParseValue(ValueType type, std::string_view text, ValueError* error = nullptr);
+std::optional<Value> tryParseValue(ValueType type, std::string_view text, ValueError* error = nullptr,
+                                   ValueError* ignored = nullptr);
 
 /// Formats a float the shortest way that reads back to the same float ("0.8", "1", "1e-05").
 std::string formatFloat(float value);

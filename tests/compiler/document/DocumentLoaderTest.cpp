@@ -197,6 +197,102 @@ TEST(DocumentModel, Upgrades138SwizzleNodes) {
   EXPECT_EQ(v, (std::vector<float>{0.3f, 0.0f, 0.1f}));
 }
 
+// MaterialX 1.39 renamed ND_normalmap to ND_normalmap_float and removed normalmap's `space`:
+// an object-space map becomes normalize(in * 2 - 1), a tangent-space one given a normal or a
+// tangent gets the bitangent 1.38 derived, normalize(cross(N, T)). A swizzle's nodedef name
+// goes with the swizzle, and a switch's constant `which` of 5 or more (in1 in 1.38) becomes 0.
+// (MaterialX's test suite: stdlib/upgrade/syntax_1_38.mtlx.)
+TEST(DocumentModel, Upgrades138NormalMapsSwizzleNodeDefsAndSwitches) {
+  const std::string text =
+      "<materialx version=\"1.38\">\n"
+      "  <constant name=\"t\" type=\"vector3\"/>\n"
+      "  <normalmap name=\"named\" type=\"vector3\" nodedef=\"ND_normalmap\">\n"
+      "    <input name=\"in\" type=\"vector3\" nodename=\"t\"/>\n"
+      "  </normalmap>\n"
+      "  <normalmap name=\"object\" type=\"vector3\" nodedef=\"ND_normalmap\">\n"
+      "    <input name=\"in\" type=\"vector3\" nodename=\"t\"/>\n"
+      "    <input name=\"space\" type=\"string\" value=\"object\"/>\n"
+      "  </normalmap>\n"
+      "  <normalmap name=\"framed\" type=\"vector3\">\n"
+      "    <input name=\"in\" type=\"vector3\" nodename=\"t\"/>\n"
+      "    <input name=\"space\" type=\"string\" value=\"tangent\"/>\n"
+      "    <input name=\"tangent\" type=\"vector3\" nodename=\"t\"/>\n"
+      "  </normalmap>\n"
+      "  <swizzle name=\"s\" type=\"color3\" nodedef=\"ND_swizzle_color3_color3\">\n"
+      "    <input name=\"in\" type=\"color3\" value=\"0.4, 0.5, 0.6\"/>\n"
+      "    <input name=\"channels\" type=\"string\" value=\"bgr\"/>\n"
+      "  </swizzle>\n"
+      "  <switch name=\"far\" type=\"float\">\n"
+      "    <input name=\"in1\" type=\"float\" value=\"1\"/>\n"
+      "    <input name=\"which\" type=\"integer\" value=\"7\"/>\n"
+      "  </switch>\n"
+      "  <switch name=\"near\" type=\"float\">\n"
+      "    <input name=\"which\" type=\"integer\" value=\"4\"/>\n"
+      "  </switch>\n"
+      "</materialx>\n";
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(text);
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  const resolve::ResolvedNode* named = r.top.findNode("named");
+  ASSERT_NE(named, nullptr);
+  ASSERT_NE(named->nodedef, nullptr);
+  EXPECT_EQ(named->nodedef->name, "ND_normalmap_float");
+  EXPECT_EQ(named->findInput("space"), nullptr);
+
+  const resolve::ResolvedNode* object = r.top.findNode("object");
+  ASSERT_NE(object, nullptr);
+  EXPECT_EQ(object->category(), "normalize");
+  const resolve::ResolvedNode* centred = object->findInput("in")->upstream.node;
+  ASSERT_NE(centred, nullptr);
+  EXPECT_EQ(centred->category(), "subtract");
+  EXPECT_FLOAT_EQ(centred->findInput("in2")->value->as<float>(), 1.0f);
+  const resolve::ResolvedNode* decoded = centred->findInput("in1")->upstream.node;
+  ASSERT_NE(decoded, nullptr);
+  EXPECT_EQ(decoded->category(), "multiply");
+  EXPECT_EQ(decoded->findInput("in1")->upstream.node->name(), "t");
+  EXPECT_FLOAT_EQ(decoded->findInput("in2")->value->as<float>(), 2.0f);
+
+  const resolve::ResolvedNode* framed = r.top.findNode("framed");
+  ASSERT_NE(framed, nullptr);
+  const resolve::ResolvedInput* bitangent = framed->findInput("bitangent");
+  ASSERT_NE(bitangent, nullptr);
+  ASSERT_EQ(bitangent->source, resolve::InputSource::Connection);
+  EXPECT_EQ(bitangent->upstream.node->category(), "normalize");
+  const resolve::ResolvedNode* cross = bitangent->upstream.node->findInput("in")->upstream.node;
+  ASSERT_NE(cross, nullptr);
+  EXPECT_EQ(cross->category(), "crossproduct");
+  EXPECT_EQ(cross->findInput("in1")->upstream.node->category(), "normal");  // the geometry's normal
+  EXPECT_EQ(cross->findInput("in2")->upstream.node->name(), "t");            // the tangent given
+
+  const resolve::ResolvedNode* s = r.top.findNode("s");
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->category(), "constant");
+  EXPECT_EQ(s->nodedef->name, "ND_constant_color3");
+  EXPECT_EQ(r.top.findNode("far")->findInput("which")->value->as<int32_t>(), 0);
+  EXPECT_EQ(r.top.findNode("near")->findInput("which")->value->as<int32_t>(), 4);
+}
+
+// A number MaterialX's reader takes (the longest prefix that is a number: its test suite's
+// vector_math.mtlx writes "0.5.0") is read as it reads it, with a warning after the number.
+TEST(DocumentModel, NumbersMaterialXReadsAreReadWithAWarning) {
+  const std::string text =
+      "<materialx version=\"1.39\">\n"
+      "  <constant name=\"c\" type=\"vector3\">\n"
+      "    <input name=\"value\" type=\"vector3\" value=\"1, 0.5.0, 2\"/>\n"
+      "  </constant>\n"
+      "</materialx>\n";
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(text);
+  EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  const resolve::ResolvedNode* c = r.top.findNode("c");
+  ASSERT_NE(c, nullptr);
+  ASSERT_TRUE(c->findInput("value")->value.has_value());
+  EXPECT_EQ(c->findInput("value")->value->components(), (std::vector<float>{1.0f, 0.5f, 2.0f}));
+  const std::string messages = context.diagnostics.format();
+  EXPECT_NE(messages.find(":3:53: warning: vector3 value \"1, 0.5.0, 2\" for 'value': '0.5.0' is read as 0.5"), std::string::npos)
+      << messages;
+}
+
 TEST(DocumentModel, ReadsACorpusDocument) {
   Context context;
   const doc::Document* d =

@@ -1,4 +1,4 @@
-// Upgrading MaterialX 1.25-1.37 documents (compiler/document/UpgradeLegacy.cpp): the results
+// Upgrading MaterialX 1.22-1.37 documents (compiler/document/UpgradeLegacy.cpp): the results
 // are the ones MaterialX 1.39.5's own upgrade gives for the same text (read with
 // MaterialX.readFromXmlFile and written back), checked here on the resolved graph.
 
@@ -48,6 +48,72 @@ TEST(UpgradeLegacy, A137MaterialBecomesAShaderNodeAndASurfacematerial) {
   EXPECT_FLOAT_EQ(inputOf(r, "angle", "inx")->value->as<float>(), 0.5f);
   EXPECT_FLOAT_EQ(inputOf(r, "angle", "iny")->value->as<float>(), 1.0f);
   EXPECT_EQ(inputOf(r, "turned", "axis")->value->as<glm::vec3>(), glm::vec3(0, 0, 1));
+}
+
+// MaterialX 1.22 (its test suite's stdlib/upgrade/syntax_1_22.mtlx): an <opgraph> of constants
+// whose input is `color`, graph outputs connected by a child <parameter type="opgraphnode">, a
+// node input connected the same way, a <shader shadername=> whose inputs name a graph output
+// (graphname, graphoutput), and a material with a shaderref of the shader's name. The 1.39 form:
+// a standard_surface node whose inputs are connected to the graph's outputs.
+TEST(UpgradeLegacy, A122OpGraphShaderAndMaterial) {
+  const char* text =
+      "<materialx require=\"matopgraph\" version=\"1.22\">\n"
+      "  <opgraph name=\"paint\">\n"
+      "    <constant name=\"tint\" type=\"color3\">\n"
+      "      <parameter name=\"color\" type=\"color3\" value=\"0.1, 0.6, 0.85\"/>\n"
+      "    </constant>\n"
+      "    <multiply name=\"half\" type=\"color3\">\n"
+      "      <parameter name=\"in1\" type=\"opgraphnode\" value=\"tint\"/>\n"
+      "      <parameter name=\"in2\" type=\"float\" value=\"0.5\"/>\n"
+      "    </multiply>\n"
+      "    <constant name=\"gloss\" type=\"float\">\n"
+      "      <parameter name=\"color\" type=\"float\" value=\"0.4\"/>\n"
+      "    </constant>\n"
+      "    <output name=\"color_out\" type=\"color3\">\n"
+      "      <parameter name=\"in\" type=\"opgraphnode\" value=\"half\"/>\n"
+      "    </output>\n"
+      "    <output name=\"rough_out\" type=\"float\">\n"
+      "      <parameter name=\"in\" type=\"opgraphnode\" value=\"gloss\"/>\n"
+      "    </output>\n"
+      "  </opgraph>\n"
+      "  <shader name=\"paint_shader\" shadertype=\"surface\" shadername=\"standard_surface\">\n"
+      "    <input name=\"base_color\" graphoutput=\"color_out\" graphname=\"paint\" type=\"color3\"/>\n"
+      "    <input name=\"specular_roughness\" graphoutput=\"rough_out\" graphname=\"paint\" type=\"float\"/>\n"
+      "  </shader>\n"
+      "  <material name=\"paint_material\">\n"
+      "    <shaderref name=\"paint_shader\" shadertype=\"surface\"/>\n"
+      "  </material>\n"
+      "</materialx>\n";
+  Context context;
+  resolve::ResolvedDocument r = context.resolve(text);
+  ASSERT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+  const resolve::ResolvedNode* material = r.top.findNode("paint_material");
+  ASSERT_NE(material, nullptr);
+  EXPECT_EQ(material->category(), "surfacematerial");
+  const resolve::ResolvedNode* shader = material->findInput("surfaceshader")->upstream.node;
+  ASSERT_NE(shader, nullptr);
+  EXPECT_EQ(shader->category(), "standard_surface");
+  const resolve::ResolvedInput* base = shader->findInput("base_color");
+  ASSERT_NE(base, nullptr);
+  ASSERT_EQ(base->source, resolve::InputSource::Connection);
+  ASSERT_NE(base->upstream.graph, nullptr);
+  EXPECT_EQ(base->upstream.graph->name(), "paint");
+  EXPECT_EQ(base->upstream.output, "color_out");
+  auto feeding = [](const resolve::ResolvedInput* port) {  // the node behind a graph output
+    const resolve::ResolvedInput* out = port->upstream.graph->findOutput(port->upstream.output);
+    return out ? out->upstream.node : nullptr;
+  };
+  const resolve::ResolvedNode* half = feeding(base);
+  ASSERT_NE(half, nullptr);
+  EXPECT_EQ(half->name(), "half");
+  const resolve::ResolvedInput* tint = half->findInput("in1");
+  ASSERT_EQ(tint->source, resolve::InputSource::Connection);
+  EXPECT_EQ(tint->type, "color3");  // the connected node's type
+  EXPECT_EQ(tint->upstream.node->findInput("value")->value->as<glm::vec3>(), glm::vec3(0.1f, 0.6f, 0.85f));
+  const resolve::ResolvedInput* rough = shader->findInput("specular_roughness");
+  ASSERT_EQ(rough->source, resolve::InputSource::Connection);
+  ASSERT_NE(feeding(rough), nullptr);
+  EXPECT_FLOAT_EQ(feeding(rough)->findInput("value")->value->as<float>(), 0.4f);
 }
 
 TEST(UpgradeLegacy, A137GraphGetsTheNewBsdfsLayersAndArtisticIor) {

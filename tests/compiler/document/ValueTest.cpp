@@ -91,11 +91,49 @@ TEST(Value, ErrorsPointAtTheBadComponent) {
   EXPECT_NE(parseError(ValueType::Vector2, "1,,2,3").message.find("needs 2 numbers, found 3"), std::string::npos);
   EXPECT_NE(parseError(ValueType::Float, " ").message.find("needs 1 number, found 0"), std::string::npos);
   EXPECT_NE(parseError(ValueType::Float, "nan").message.find("finite"), std::string::npos);
-  EXPECT_NE(parseError(ValueType::Float, "1.0f").message.find("not a number"), std::string::npos);
-  EXPECT_NE(parseError(ValueType::Integer, "1.5").message.find("not an integer"), std::string::npos);
+  EXPECT_NE(parseError(ValueType::Float, "f1").message.find("not a number"), std::string::npos);
+  EXPECT_NE(parseError(ValueType::Integer, "x1").message.find("not an integer"), std::string::npos);
   EXPECT_NE(parseError(ValueType::Integer, "1, 2").message.find("needs 1 number"), std::string::npos);
   EXPECT_NE(parseError(ValueType::Boolean, "1").message.find("true or false"), std::string::npos);
   EXPECT_NE(parseError(ValueType::None, "x").message.find("no literal values"), std::string::npos);
+}
+
+// MaterialX reads a number as a C++ stream does, its longest prefix that is a number (its own
+// test suite writes "0.5.0" in a matrix44, vector_math.mtlx); mxc reads the same value and says
+// where it read past something, pointing after the number.
+TEST(Value, NumbersAreReadAsMaterialXReadsThem) {
+  auto lenient = [](ValueType type, std::string_view text, ValueError& ignored) {
+    ValueError error;
+    std::optional<Value> v = tryParseValue(type, text, &error, &ignored);
+    EXPECT_TRUE(v.has_value()) << text << ": " << error.message;
+    return v.value_or(Value());
+  };
+  ValueError ignored;
+  EXPECT_EQ(lenient(ValueType::Vector3, "1, 0.5.0, 3", ignored).as<glm::vec3>(), glm::vec3(1.0f, 0.5f, 3.0f));
+  EXPECT_EQ(ignored.offset, 6u);
+  EXPECT_NE(ignored.message.find("'0.5.0' is read as 0.5, as MaterialX reads it: '.0' after the number is ignored"),
+            std::string::npos)
+      << ignored.message;
+  ignored = {};
+  EXPECT_FLOAT_EQ(lenient(ValueType::Float, "+1.0f", ignored).as<float>(), 1.0f);
+  EXPECT_EQ(ignored.offset, 4u);  // after "+1.0"
+  ignored = {};
+  EXPECT_EQ(lenient(ValueType::Integer, "2.5", ignored).as<int32_t>(), 2);
+  EXPECT_NE(ignored.message.find("'2.5' is read as 2"), std::string::npos) << ignored.message;
+  ignored = {};
+  EXPECT_EQ(lenient(ValueType::IntegerArray, "1, 2e3", ignored).as<std::vector<int32_t>>(), (std::vector<int32_t>{1, 2}));
+  EXPECT_EQ(ignored.offset, 4u);
+  // Only the first place is reported; a value read exactly leaves `ignored` empty.
+  ignored = {};
+  lenient(ValueType::Vector2, "1x, 2y", ignored);
+  EXPECT_EQ(ignored.offset, 1u);
+  ignored = {};
+  lenient(ValueType::Color3, "0.1, 0.2, 0.3", ignored);
+  EXPECT_TRUE(ignored.message.empty());
+  // What a stream cannot read stays an error: no number at the start, out of range, not finite.
+  EXPECT_NE(parseError(ValueType::Float, ".").message.find("not a number"), std::string::npos);
+  EXPECT_NE(parseError(ValueType::Float, "1e40x").message.find("out of the range"), std::string::npos);
+  EXPECT_NE(parseError(ValueType::Float, "infinity").message.find("finite"), std::string::npos);
 }
 
 TEST(Value, TypeNames) {
