@@ -39,10 +39,12 @@ void NodeLibrary::define(std::unordered_map<std::string_view, const T*>& table, 
 void NodeLibrary::addDocument(const doc::Document& document, Diagnostics& diagnostics) {
   documents_.push_back(&document);
   for (const doc::NodeDef& nd : document.nodedefs) {
-    if (nd.name.empty() || nd.node.empty()) continue;  // no name: reported by the builder; no node: no category
+    if (nd.name.empty()) continue;  // reported by the builder
+    // A nodedef without `node` defines no category, but is one by name: a node graph can
+    // implement it (MaterialX reads it so; its test suite's _options.mtlx keeps settings in one).
     const size_t before = nodedefs_.size();
     define(nodedefs_, nd, "nodedef", diagnostics);
-    if (nodedefs_.size() > before) byCategory_[nd.node].push_back(&nd);
+    if (nodedefs_.size() > before) (nd.node.empty() ? withoutCategory_ : byCategory_[nd.node]).push_back(&nd);
   }
   for (const doc::NodeGraph& g : document.nodegraphs) {
     if (g.name.empty()) continue;
@@ -169,7 +171,7 @@ void NodeLibrary::finalize(Diagnostics& diagnostics) {
                                       in->name, nd->name, in->defaultgeomprop));
       }
     }
-    if (sig.outputs.empty()) {
+    if (sig.outputs.empty() && !nd->node.empty()) {  // one of no category makes no node (_options.mtlx)
       diagnostics.error(nd->location, fmt::format("nodedef '{}' declares no <output> and inherits none", nd->name));
     }
     for (const doc::Output* out : sig.outputs) {
@@ -180,6 +182,14 @@ void NodeLibrary::finalize(Diagnostics& diagnostics) {
     }
     signatures_.emplace(nd, std::move(sig));
   }
+}
+
+std::vector<const doc::NodeDef*> NodeLibrary::nodeDefsWithoutCategory() const {
+  std::vector<const doc::NodeDef*> out;
+  for (const NodeLibrary* layer = this; layer; layer = layer->parent_) {
+    out.insert(out.end(), layer->withoutCategory_.begin(), layer->withoutCategory_.end());
+  }
+  return out;
 }
 
 const doc::NodeDef* NodeLibrary::findNodeDef(std::string_view name) const {

@@ -48,6 +48,8 @@ class NodeLibrary {
   bool hasCategory(std::string_view category) const;
   /// Every visible category, sorted (for suggestions in messages).
   std::vector<std::string_view> categories() const;
+  /// The nodedefs without a `node` attribute (no category; found by name only), every layer's.
+  std::vector<const doc::NodeDef*> nodeDefsWithoutCategory() const;
   const Signature& signature(const doc::NodeDef& nodedef) const;
   /// The node graph implementing a nodedef, or null (implemented in code, or not at all).
   const doc::NodeGraph* implementationGraph(const doc::NodeDef& nodedef) const;
@@ -82,6 +84,7 @@ class NodeLibrary {
   std::vector<const doc::Document*> documents_;
   std::unordered_map<std::string_view, const doc::NodeDef*> nodedefs_;
   std::unordered_map<std::string_view, std::vector<const doc::NodeDef*>> byCategory_;
+  std::vector<const doc::NodeDef*> withoutCategory_;
   std::unordered_map<std::string_view, const doc::NodeGraph*> graphs_;  // graphs with a name, for implementations
   std::unordered_map<std::string_view, const doc::NodeGraph*> implementations_;  // by nodedef name
   std::unordered_map<const doc::NodeGraph*, std::string_view> implemented_;       // graph -> nodedef name

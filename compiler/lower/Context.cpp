@@ -399,7 +399,8 @@ ir::ExprId Context::nodeValue(const NodeRef& n, std::string_view output) {
     ~Depth() { --depth; }
   } onPath(depth_);
   if (!n.node->nodedef) {
-    v = zero(b, type);  // the resolver reported why
+    reportUnknownCategory(*n.node);  // otherwise the resolver reported why
+    v = zero(b, type);
   } else if (n.node->signature && isClosureType(n.node->signature->outputType())) {
     error(n.node->node->location, fmt::format("node '{}' outputs a {}, which cannot be used as a value",
                                               n.node->name(), n.node->signature->outputType()));
@@ -520,12 +521,22 @@ Closure Context::closureInput(const NodeRef& n, std::string_view name) {
   return in ? closure(*in, *n.env) : Closure{};
 }
 
+void Context::reportUnknownCategory(const resolve::ResolvedNode& node) {
+  // A node of a category no nodedef defines is read (MaterialX reads and validates it so, and
+  // the resolver only warns): it is an error once something to compile depends on it.
+  if (!library.nodeDefsFor(node.category()).empty()) return;
+  if (!reportedUnknown_.insert(&node).second) return;
+  error(node.node->location, fmt::format("node '{}' is a <{}>, which no nodedef defines: the material cannot be compiled "
+                                         "without it",
+                                         node.name(), node.category()));
+}
+
 Closure Context::nodeClosure(const NodeRef& n, std::string_view output) {
   auto& cache = closures_[std::make_pair(n.node, n.env)];
   if (auto it = cache.find(std::string(output)); it != cache.end()) return it->second;
   Closure result;
   if (!n.node->nodedef) {
-    // reported by the resolver
+    reportUnknownCategory(*n.node);  // otherwise the resolver reported why
   } else if (ClosureRule rule = findClosureRule(n.node->category())) {
     result = rule(*this, n, output);
   } else if (Env* inner = inlineImplementation(n)) {

@@ -117,6 +117,8 @@ class Context {
 
   // --- Messages ---
   void error(SourceLocation where, std::string message);
+  /// An error at a node of a category no nodedef defines, once per node, when a material needs it.
+  void reportUnknownCategory(const resolve::ResolvedNode& node);
   void note(ir::Origin where, std::string message);
 
   /// Runs the node graph implementing `n`'s nodedef, binding its interface to `n`'s inputs.
@@ -130,6 +132,7 @@ class Context {
   bool tooDeepReported_ = false;  ///< the stack limit is reported once per material
   std::set<std::string> reportedParameters_;  ///< --param inputs reported as connected
   std::set<std::string> reportedSpaces_;      ///< unknown colour spaces, reported once each
+  std::set<const resolve::ResolvedNode*> reportedUnknown_;  ///< nodes of unknown categories, reported once each
   const resolve::ResolvedInput* interfaceInput(Env& env, std::string_view name, Env*& where);
   /// The value of a shading-node input with `--set` and `--param` applied; kNoExpr when neither
   /// names it.

@@ -523,6 +523,34 @@ TEST(Lowering, UnsupportedNodeIsAnErrorAtItsElement) {
   EXPECT_EQ(e.location.lineColumn().column, 3u);
 }
 
+// A node of a category no nodedef defines only warns while the document is read (as MaterialX
+// reads it); a material that needs it, as a value or as its shader, is an error at the node, once.
+TEST(Lowering, ANodeOfAnUnknownCategoryIsAnErrorWhereAMaterialNeedsIt) {
+  for (const bool asShader : {false, true}) {
+    Context context;
+    CompileRequest request;
+    request.document = "test.mtlx";
+    request.text = mtlx(asShader ? "  <glow name=\"g\" type=\"surfaceshader\"/>\n"
+                                   "  <surfacematerial name=\"m\" type=\"material\"><input name=\"surfaceshader\" "
+                                   "type=\"surfaceshader\" nodename=\"g\"/></surfacematerial>\n"
+                                 : "  <glow name=\"g\" type=\"color3\"/>\n"
+                                   "  <surface_unlit name=\"surf\" type=\"surfaceshader\"><input name=\"emission_color\" "
+                                   "type=\"color3\" nodename=\"g\"/><input name=\"transmission_color\" type=\"color3\" "
+                                   "nodename=\"g\"/></surface_unlit>\n");
+    Compiler compiler(context, request);
+    ASSERT_NE(compiler.resolved(), nullptr);
+    ASSERT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
+    compiler.materials();
+    Diagnostic e = context.firstError();
+    EXPECT_NE(e.message.find("node 'g' is a <glow>, which no nodedef defines"), std::string::npos)
+        << asShader << ": " << context.diagnostics.format();
+    EXPECT_EQ(e.location.line(), 3u);
+    size_t errors = 0;
+    for (const Diagnostic& d : context.diagnostics.all()) errors += d.severity == Severity::Error;
+    EXPECT_EQ(errors, 1u) << context.diagnostics.format();
+  }
+}
+
 TEST(Lowering, AGraphDeeperThanTheStackIsAnErrorNotACrash) {
   // A chain of 40,000 sin nodes on a 16 MiB stack: lowering recurses once per node on the
   // path, so it must stop with an error at the node where the stack runs short (the CLI's
