@@ -175,6 +175,12 @@ std::string ExprEmitter::texture(const std::string& path, const std::string& col
   return t.name;
 }
 
+std::string ExprEmitter::missing(const std::string& sampler) const {
+  size_t k = textures_.size() - 1;
+  for (size_t t = 0; t < textures_.size(); ++t) k = textures_[t].name == sampler ? t : k;
+  return fmt::format("(MXC_PARAMETER(mxc_params.missing_textures) & {}u) != 0u", 1u << (k % 32));
+}
+
 std::string ExprEmitter::emit(ExprId id) {
   const ir::Expr& e = m_.exprs[id];
   std::vector<ExprId> args = m_.exprs.argsOf(id);
@@ -313,15 +319,15 @@ std::string ExprEmitter::emit(ExprId id) {
                                        : fallback;
       // The harness sets bit k of missing_textures when texture k's file cannot be read: the
       // node's default is used instead (MaterialX "image": default "if the file cannot be read").
-      size_t k = textures_.size() - 1;
-      for (size_t t = 0; t < textures_.size(); ++t) k = textures_[t].name == sampler ? t : k;
-      std::string sample =
-          fmt::format("mxc_sample_image(MXC_SAMPLER2D_ARGUMENT({}), {}, {}, {}, {}, {}, (MXC_PARAMETER(mxc_params.missing_textures) & {}u) != 0u)", sampler,
-                      a(1), fallback4, int(sampling.uaddress), int(sampling.vaddress), int(sampling.filter),
-                      1u << (k % 32));
+      std::string sample = fmt::format("mxc_sample_image(MXC_SAMPLER2D_ARGUMENT({}), {}, {}, {}, {}, {}, {})", sampler, a(1),
+                                       fallback4, int(sampling.uaddress), int(sampling.vaddress), int(sampling.filter),
+                                       missing(sampler));
       value = n == 1 ? sample + ".r" : n == 2 ? sample + ".rg" : n == 3 ? sample + ".rgb" : sample;
       break;
     }
+    case Op::ImageMissing:
+      value = missing(texture(m_.exprs.text(args[0]), m_.exprs.text(id)));
+      break;
     case Op::HeightToNormal:
       procedural_ = true;
       value = fmt::format("mxc_heighttonormal({}, {}, {})", a(0), a(1), a(2));

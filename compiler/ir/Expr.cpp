@@ -66,7 +66,7 @@ std::string_view opName(Op op) {
       "tan", "asin", "acos", "atan2", "step", "smoothstep", "dot", "cross", "length", "normalize", "reflect",
       "refract", "splat", "construct", "extract", "swizzle", "greater", "greatereq", "equal", "and", "or", "not",
       "select", "matmul", "transpose", "determinant", "inverse", "luminance", "rgbtohsv", "hsvtorgb", "noise2d",
-      "noise3d", "fractal3d", "cellnoise2d", "cellnoise3d", "worleynoise2d", "worleynoise3d", "flake", "image", "normalmap",
+      "noise3d", "fractal3d", "cellnoise2d", "cellnoise3d", "worleynoise2d", "worleynoise3d", "flake", "image", "imagemissing", "normalmap",
       "heighttonormal", "rotate3d", "rotate2d", "transformpoint", "transformvector", "transformnormal", "local"};
   static_assert(sizeof(names) / sizeof(names[0]) == static_cast<size_t>(Op::Local) + 1,
                 "every Op has a name");
@@ -80,6 +80,7 @@ bool hasTextPayload(Op op) {
     case Op::Texture:
     case Op::Swizzle:
     case Op::ImageSample:
+    case Op::ImageMissing:
     case Op::TransformPoint:
     case Op::TransformVector:
     case Op::TransformNormal:

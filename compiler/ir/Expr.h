@@ -59,6 +59,7 @@ enum class Op : uint8_t {
   Noise2D, Noise3D, Fractal3D, CellNoise2D, CellNoise3D, WorleyNoise2D, WorleyNoise3D,
   Flake,        ///< (position in flake cells, probability): vec4(presence, rand, xi0, xi1) of the flake seen, 0 where none
   ImageSample,  ///< (texture, texcoord, default) with payload "uaddress,vaddress,filter"
+  ImageMissing,  ///< (texture) with payload its colour space: true where the texture's file could not be read
   NormalMap,    ///< (tangent-space sample, scale, normal, tangent, bitangent)
   HeightToNormal,  ///< (height, scale, texcoord): the height field's tangent-space normal, encoded in [0, 1]
   Rotate3D,     ///< (vector, degrees, axis)

@@ -280,11 +280,10 @@ ExprId texelsToWorkingSpace(Context& c, const NodeRef& n, ExprId sampled, const 
 /// space (clamped there: tile edges are the set's seams), the one under `uv` chosen; outside
 /// every tile, the node's default.
 ExprId sampleTiles(Context& c, const NodeRef& n, ExprId uv, Type type, const std::vector<Context::UdimTile>& tiles,
-                   const std::string& filter, const std::string& space) {
+                   const std::string& filter, const std::string& space, ExprId fallback) {
   ExprId tileU = c.b.unary(Op::Floor, c.b.extract(uv, 0));
   ExprId tileV = c.b.unary(Op::Floor, c.b.extract(uv, 1));
   ExprId local = c.b.sub(uv, c.b.construct(Type::Vec2, {tileU, tileV}));
-  ExprId fallback = in(c, n, "default");
   ExprId result = fallback;
   for (const Context::UdimTile& tile : tiles) {
     c.material.addImage(tile.file, c.origin(n, "file"));
@@ -301,18 +300,25 @@ ExprId sampleTiles(Context& c, const NodeRef& n, ExprId uv, Type type, const std
   }
   return result;
 }
-ExprId sample(Context& c, const NodeRef& n, ExprId uv, Type type, std::string_view uaddress, std::string_view vaddress) {
+/// The node's texture at `uv`, in the working space; `fallback` where the file cannot be read
+/// (the node's `default` unless given). `missing`, when asked for, is set to the condition
+/// "the file could not be read" (false for a UDIM set, whose tiles each fall back).
+ExprId sample(Context& c, const NodeRef& n, ExprId uv, Type type, std::string_view uaddress, std::string_view vaddress,
+              ExprId fallback = ir::kNoExpr, ExprId* missing = nullptr) {
+  if (fallback == ir::kNoExpr) fallback = in(c, n, "default");
   std::string filter = c.stringInput(n, "filtertype");
   if (filter.empty()) filter = "linear";
   const std::string space = texelSpace(c, n, type);
   if (std::vector<Context::UdimTile> tiles = c.udimTiles(n); !tiles.empty()) {
-    return texelsToWorkingSpace(c, n, sampleTiles(c, n, uv, type, tiles, filter, space), space);
+    if (missing) *missing = c.material.exprs.constantBool(false);
+    return texelsToWorkingSpace(c, n, sampleTiles(c, n, uv, type, tiles, filter, space, fallback), space);
   }
   const std::string file = c.imageFile(n);
   c.material.addImage(file, c.origin(n, "file"));
   ExprId texture = c.material.exprs.named(Op::Texture, Type::String, file);
-  ExprId sampled = c.material.exprs.opWithString(Op::ImageSample, type, {texture, uv, in(c, n, "default")},
+  ExprId sampled = c.material.exprs.opWithString(Op::ImageSample, type, {texture, uv, fallback},
                                                  fmt::format("{},{},{},{}", uaddress, vaddress, filter, space));
+  if (missing) *missing = c.material.exprs.opWithString(Op::ImageMissing, Type::Bool, {texture}, space);
   return texelsToWorkingSpace(c, n, sampled, space);
 }
 ExprId image(Context& c, const NodeRef& n, std::string_view, Type type) {
@@ -423,6 +429,59 @@ ExprId normalmap(Context& c, const NodeRef& n, std::string_view, Type) {
   if (c.b.type(scale) == Type::Float) scale = c.b.splat(scale, Type::Vec2);
   return c.material.exprs.op(Op::NormalMap, Type::Vec3,
                              {in(c, n, "in"), scale, in(c, n, "normal"), in(c, n, "tangent"), in(c, n, "bitangent")});
+}
+
+// --- The texture nodes of the UsdPreviewSurface specification (OpenUSD, "UsdPreviewSurface
+// Specification", 2.6: "Texture Reader", "Primvar Reader", "Transform2d") ---
+
+/// UsdUVTexture: the texture at st, each component times `scale` plus `bias`; where the file
+/// cannot be read, `fallback` as it is (not scaled: it stands for the output). wrapS and wrapT
+/// are black (transparent black outside [0, 1], then scaled and biased as a texel is), clamp,
+/// repeat (MaterialX's enum writes periodic) or mirror; useMetadata, which mxc's images do not
+/// carry, repeats. A one-channel texture gives (v, v, v, 1), a two-channel one (v, v, v, a), as
+/// the specification asks (runtime/ImageIOPlugin.cpp widens them so).
+ExprId usdUvTexture(Context& c, const NodeRef& n, std::string_view output, Type) {
+  auto address = [&](std::string_view name) {
+    const std::string mode = c.stringInput(n, name);
+    return mode == "black" || mode == "clamp" ? std::string("clamp") : mode == "mirror" ? mode : std::string("periodic");
+  };
+  const ExprId st = in(c, n, "st");
+  ExprId missing = ir::kNoExpr;
+  ExprId texel = sample(c, n, st, Type::Vec4, address("wrapS"), address("wrapT"), in(c, n, "fallback"), &missing);
+  const ExprId zero = c.b.f(0.0f), one = c.b.f(1.0f);
+  for (auto [wrap, axis] : {std::pair{"wrapS", 0}, std::pair{"wrapT", 1}}) {
+    if (c.stringInput(n, wrap) != "black") continue;
+    const ExprId x = c.b.extract(st, axis);
+    const ExprId inside = c.material.exprs.op(Op::And, Type::Bool, {c.material.exprs.op(Op::GreaterEq, Type::Bool, {x, zero}),
+                                                                     c.material.exprs.op(Op::GreaterEq, Type::Bool, {one, x})});
+    texel = c.b.select(inside, texel, c.b.vec(Type::Vec4, 0.0f));
+  }
+  const ExprId rgba = c.b.select(missing, in(c, n, "fallback"), c.b.add(c.b.mul(texel, in(c, n, "scale")), in(c, n, "bias")));
+  if (output == "rgba") return rgba;
+  if (output == "rgb") return c.material.exprs.opWithString(Op::Swizzle, Type::Vec3, {rgba}, "xyz");
+  const size_t k = std::string_view("rgba").find(output.empty() ? 'r' : output[0]);
+  return c.b.extract(rgba, k == std::string_view::npos ? 0 : static_cast<int>(k));
+}
+/// UsdPrimvarReader: the primvar `varname`, or `fallback` where the geometry has none. USD's
+/// names for what mxc's geometry carries are read as those: `st` is the first texture coordinate
+/// set, `displayColor` the vertex colour. A string or filename primvar cannot vary over a
+/// surface in a shader: the fallback.
+ExprId usdPrimvarReader(Context& c, const NodeRef& n, std::string_view, Type type) {
+  const ExprId fallback = in(c, n, "fallback");
+  if (type == Type::String) return fallback;
+  const std::string name = c.stringInput(n, "varname");
+  if (name == "st" && type == Type::Vec2) return c.material.exprs.named(Op::GeomProp, type, "UV0");
+  if (name == "displayColor" && (type == Type::Vec3 || type == Type::Vec4)) {
+    return c.material.exprs.named(Op::GeomProp, type, "color0");
+  }
+  return c.material.exprs.opWithString(Op::GeomProp, type, {fallback}, name);
+}
+/// UsdTransform2d: in scaled, then turned counter-clockwise by `rotation` degrees, then
+/// translated (the specification's order: scale, rotate, translate).
+ExprId usdTransform2d(Context& c, const NodeRef& n, std::string_view, Type) {
+  const ExprId scaled = c.b.mul(in(c, n, "in"), in(c, n, "scale"));
+  const ExprId turned = c.material.exprs.op(Op::Rotate2D, Type::Vec2, {scaled, in(c, n, "rotation")});
+  return c.b.add(turned, in(c, n, "translation"));
 }
 
 // --- Procedural 2D shapes and waves (MaterialX 1.39 "Procedural Nodes"; each formula is that
@@ -944,6 +1003,9 @@ const RuleTable& rules() {
       {"hextiledimage", hextiledimage},
       {"place2d", place2d},
       {"normalmap", normalmap},
+      {"UsdUVTexture", usdUvTexture},
+      {"UsdPrimvarReader", usdPrimvarReader},
+      {"UsdTransform2d", usdTransform2d},
       {"gltf_image", gltfImage},
       {"gltf_colorimage", gltfColorImage},
       {"gltf_normalmap", gltfNormalmap},

@@ -1082,10 +1082,11 @@ def build_open_pbr():
 
 def build_usd_preview_surface():
     L = Library(header(
-        'UsdPreviewSurface (nodedef only)', 'libraries/bxdf/usd_preview_surface.mtlx', [
+        'UsdPreviewSurface and its texture nodes (nodedefs only)', 'libraries/bxdf/usd_preview_surface.mtlx', [
             '',
             'No nodegraph: mxc lowers UsdPreviewSurface to closures in C++',
-            '(compiler/lower/UsdPreviewSurfaceLowering.cpp).',
+            '(compiler/lower/UsdPreviewSurfaceLowering.cpp), and UsdUVTexture, UsdPrimvarReader',
+            'and UsdTransform2d by rules (compiler/lower/StdlibRules.cpp).',
             'Source: the UsdPreviewSurface specification, version 2.6 (OpenUSD documentation,',
             '"UsdPreviewSurface Specification"), section "Preview Surface": input names, types',
             'and fallback values; opacityMode (2.6) is 0 for transparent, 1 for presence.']))
@@ -1111,6 +1112,39 @@ def build_usd_preview_surface():
                        'version': '2.6', 'isdefaultversion': 'true',
                        'doc': 'UsdPreviewSurface, version 2.6.'},
            inputs + [('output', {'name': 'out', 'type': SS})])
+    L.count += 1
+
+    # The texture nodes of the UsdPreviewSurface specification ("Texture Reader", "Primvar
+    # Reader", "Transform2d"), with MaterialX's names, inputs and defaults for them; lowered by
+    # rules in compiler/lower/StdlibRules.cpp. MaterialX spells the wrap mode `repeat` as
+    # `periodic`. Version 2.2 of UsdUVTexture also had an rgba output.
+    def clean(ports):
+        return [(tag, {k: v for k, v in attrs.items() if v is not None}) for tag, attrs in ports]
+
+    L.section('UsdUVTexture')
+    channels = [o(F, name='r'), o(F, name='g'), o(F, name='b'), o(F, name='a'), o(C3, name='rgb')]
+    L.elem('nodedef', {'name': 'ND_UsdUVTexture', 'node': 'UsdUVTexture', 'nodegroup': 'texture2d', 'version': '2.2',
+                       'inherit': 'ND_UsdUVTexture_23'},
+           clean(channels + [o(C4, name='rgba')]))
+    wrap = dict(enum='black,clamp,periodic,mirror')
+    L.elem('nodedef', {'name': 'ND_UsdUVTexture_23', 'node': 'UsdUVTexture', 'nodegroup': 'texture2d', 'version': '2.3',
+                       'isdefaultversion': 'true'},
+           clean([i('file', FN, '', u=True), i('st', V2, None, g='UV0'),
+            i('wrapS', STR, 'periodic', u=True, **wrap), i('wrapT', STR, 'periodic', u=True, **wrap),
+            i('fallback', C4, '0, 0, 0, 1'), i('scale', C4, '1, 1, 1, 1', u=True), i('bias', C4, '0, 0, 0, 0', u=True)]
+           + channels))
+    L.count += 2
+    L.section('UsdPrimvarReader')
+    fallbacks = [(I, '0'), (B, 'false'), (STR, ''), (FN, ''), (F, '0'), (V2, '0, 0'), (V3, '0, 0, 0'),
+                 (V4, '0, 0, 0, 0')]
+    for typ, value in fallbacks:
+        uniform = typ in (STR, FN)
+        L.elem('nodedef', {'name': 'ND_UsdPrimvarReader_' + typ, 'node': 'UsdPrimvarReader', 'nodegroup': 'geometric'},
+               clean([i('varname', STR, '', u=True), i('fallback', typ, value, u=uniform), o(typ, u=uniform)]))
+        L.count += 1
+    L.section('UsdTransform2d')
+    L.elem('nodedef', {'name': 'ND_UsdTransform2d', 'node': 'UsdTransform2d', 'nodegroup': 'math'},
+           clean([i('in', V2, '0, 0'), i('rotation', F, '0'), i('scale', V2, '1, 1'), i('translation', V2, '0, 0'), o(V2)]))
     L.count += 1
     return L
 

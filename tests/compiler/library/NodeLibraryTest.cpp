@@ -15,7 +15,7 @@ namespace {
 TEST(NodeLibrary, BuiltinLibraryLoadsCleanly) {
   Context context;
   EXPECT_FALSE(context.diagnostics.hasErrors()) << context.diagnostics.format();
-  EXPECT_EQ(context.libraries.top().nodeDefCount(), 800u);
+  EXPECT_EQ(context.libraries.top().nodeDefCount(), 811u);
   EXPECT_NE(context.libraries.top().findNodeDef("ND_open_pbr_surface_surfaceshader"), nullptr);
   EXPECT_NE(context.libraries.top().findGeomPropDef("Nworld"), nullptr);
   EXPECT_TRUE(context.libraries.top().isKnownType("BSDF"));
@@ -57,10 +57,10 @@ TEST(NodeLibrary, BuiltinIsSignatureCompatibleWithMaterialX) {
     for (const doc::NodeDef& theirDef : d->nodedefs) {
       // Helpers that only MaterialX's own OpenPBR graph uses; mxc lowers OpenPBR in C++.
       if (theirDef.name == "ND_open_pbr_anisotropy") continue;
-      // Only the definitions of the libraries mxc provides (not translations nor the USD
-      // texture nodes).
+      // Only the definitions of the libraries mxc provides (not translations).
       std::string path = d->path();
       bool provided = path.find("_defs.mtlx") != std::string::npos || path.find("bxdf/standard_surface") != std::string::npos ||
+                      path.find("bxdf/usd_preview_surface") != std::string::npos ||
                       path.find("bxdf/open_pbr_surface") != std::string::npos ||
                       path.find("bxdf/disney_principled") != std::string::npos ||
                       path.find("bxdf/lama/") != std::string::npos ||
@@ -97,9 +97,10 @@ TEST(NodeLibrary, BuiltinIsSignatureCompatibleWithMaterialX) {
     }
   }
   // Every nodedef of the libraries mxc provides: stdlib 703, pbrlib 42, cmlib 20, nprlib 3,
-  // lights 3, Standard Surface 2, OpenPBR 1, UsdPreviewSurface 1, glTF PBR 1 and its 8 texture
+  // lights 3, Standard Surface 2, OpenPBR 1, UsdPreviewSurface 1 and its 11 texture nodes
+  // (UsdUVTexture 2.2 and 2.3, 8 UsdPrimvarReader, UsdTransform2d), glTF PBR 1 and its 8 texture
   // lookups, Disney Principled 1, Lama 15.
-  EXPECT_EQ(compared, 800u);
+  EXPECT_EQ(compared, 811u);
 }
 
 TEST(NodeLibrary, LaterLayersShadowEarlierDefinitions) {

@@ -451,15 +451,18 @@ namespace {
 
 /// `e` evaluated with every texture sample replaced by `texel` (its first components), other
 /// operations folded as the compiler folds them; nullopt when a leaf is not constant.
-std::optional<ir::Constant> withTexel(const ir::ExprGraph& g, ir::ExprId e, const std::vector<float>& texel) {
+/// `missing` is what ImageMissing reads (whether the file could not be read).
+std::optional<ir::Constant> withTexel(const ir::ExprGraph& g, ir::ExprId e, const std::vector<float>& texel,
+                                      bool missing = false) {
   if (g[e].op == ir::Op::ImageSample) {
     const int n = ir::componentCount(g[e].type);
     return ir::Constant{g[e].type, std::vector<float>(texel.begin(), texel.begin() + n)};
   }
+  if (g[e].op == ir::Op::ImageMissing) return ir::Constant{ir::Type::Bool, {missing ? 1.0f : 0.0f}};
   if (g[e].op == ir::Op::Constant) return ir::evaluateExpr(g, e);
   std::vector<ir::Constant> args;
   for (ir::ExprId a : g.argsOf(e)) {
-    std::optional<ir::Constant> v = withTexel(g, a, texel);
+    std::optional<ir::Constant> v = withTexel(g, a, texel, missing);
     if (!v) return std::nullopt;
     args.push_back(*v);
   }
@@ -468,11 +471,12 @@ std::optional<ir::Constant> withTexel(const ir::ExprGraph& g, ir::ExprId e, cons
 
 /// The emission colour of an unlit surface fed by the float node "v" (its elements `nodes`),
 /// for a texel: the arithmetic a texture node's rule does on what it samples.
-float floatFromTexel(const std::string& nodes, const std::vector<float>& texel) {
+float floatFromTexel(const std::string& nodes, const std::vector<float>& texel, bool missing = false) {
   std::vector<ir::Material> materials = unlitMaterials(
       nodes + "  <convert name=\"c\" type=\"color3\"><input name=\"in\" type=\"float\" nodename=\"v\"/></convert>\n", "c");
   if (materials.empty() || materials[0].emissions.empty()) return NAN;
-  std::optional<ir::Constant> v = withTexel(materials[0].exprs, materials[0].emissions[0].slots.value(ir::Slot::Color), texel);
+  std::optional<ir::Constant> v =
+      withTexel(materials[0].exprs, materials[0].emissions[0].slots.value(ir::Slot::Color), texel, missing);
   return v && !v->v.empty() ? v->v[0] : NAN;
 }
 
@@ -505,6 +509,75 @@ TEST(StdlibRules, GltfIridescenceAndAnisotropyTextures) {
     EXPECT_NEAR(ours, expected, 1e-5f) << output;
     EXPECT_NEAR(ours, theirs, 1e-5f) << output;
   }
+}
+
+// UsdUVTexture (UsdPreviewSurface specification, "Texture Reader"): each component of the texel
+// times scale plus bias; where the file cannot be read, the fallback as it is; with wrapS black,
+// transparent black outside [0, 1] (then scaled and biased). Every output reads the same rgba.
+TEST(StdlibRules, UsdUvTextureScalesBiasesAndFallsBack) {
+  const std::vector<float> texel = {0.2f, 0.4f, 0.6f, 0.8f};
+  auto texture = [](const std::string& st, const std::string& wrapS, const std::string& output) {
+    return "  <UsdUVTexture name=\"t\" type=\"multioutput\">"
+           "<input name=\"file\" type=\"filename\" value=\"missing.png\"/>"
+           "<input name=\"st\" type=\"vector2\" value=\"" + st + "\"/>"
+           "<input name=\"wrapS\" type=\"string\" value=\"" + wrapS + "\"/>"
+           "<input name=\"fallback\" type=\"color4\" value=\"0.3, 0.35, 0.4, 0.45\"/>"
+           "<input name=\"scale\" type=\"color4\" value=\"2, 1, 0.5, 1\"/>"
+           "<input name=\"bias\" type=\"color4\" value=\"0.1, 0, 0.05, -0.2\"/></UsdUVTexture>\n"
+           "  <dot name=\"v\" type=\"float\"><input name=\"in\" type=\"float\" nodename=\"t\" output=\"" + output +
+           "\"/></dot>\n";
+  };
+  const char* outputs[] = {"r", "g", "b", "a"};
+  const float scaled[] = {0.5f, 0.4f, 0.35f, 0.6f};
+  const float fallback[] = {0.3f, 0.35f, 0.4f, 0.45f};
+  const float bias[] = {0.1f, 0.0f, 0.05f, -0.2f};
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_NEAR(floatFromTexel(texture("0.5, 0.5", "periodic", outputs[k]), texel), scaled[k], 1e-6f) << outputs[k];
+    EXPECT_NEAR(floatFromTexel(texture("0.5, 0.5", "periodic", outputs[k]), texel, true), fallback[k], 1e-6f) << outputs[k];
+    // Outside [0, 1] along s: repeat reads the texel, black reads transparent black.
+    EXPECT_NEAR(floatFromTexel(texture("1.5, 0.5", "periodic", outputs[k]), texel), scaled[k], 1e-6f) << outputs[k];
+    EXPECT_NEAR(floatFromTexel(texture("1.5, 0.5", "black", outputs[k]), texel), bias[k], 1e-6f) << outputs[k];
+    EXPECT_NEAR(floatFromTexel(texture("0.5, 1.5", "black", outputs[k]), texel), scaled[k], 1e-6f) << outputs[k] << " (t repeats)";
+  }
+}
+
+// UsdTransform2d: scale, then rotate counter-clockwise (degrees), then translate; and
+// UsdPrimvarReader: `st` is the first texture coordinate set, other names a primvar of that name
+// with the fallback where the geometry has none.
+TEST(StdlibRules, UsdTransform2dAndPrimvarReader) {
+  auto component = [](int k) {
+    return "  <UsdTransform2d name=\"p\" type=\"vector2\"><input name=\"in\" type=\"vector2\" value=\"0.5, 0.25\"/>"
+           "<input name=\"scale\" type=\"vector2\" value=\"2, 4\"/><input name=\"rotation\" type=\"float\" value=\"90\"/>"
+           "<input name=\"translation\" type=\"vector2\" value=\"0.1, 0.2\"/></UsdTransform2d>\n"
+           "  <extract name=\"v\" type=\"float\"><input name=\"in\" type=\"vector2\" nodename=\"p\"/>"
+           "<input name=\"index\" type=\"integer\" value=\"" + std::to_string(k) + "\"/></extract>\n";
+  };
+  // (0.5, 0.25) * (2, 4) = (1, 1); a quarter turn: (-1, 1); plus (0.1, 0.2).
+  EXPECT_NEAR(floatOf(component(0)), -0.9f, 1e-5f);
+  EXPECT_NEAR(floatOf(component(1)), 1.2f, 1e-5f);
+
+  auto reader = [](const std::string& varname) {
+    std::vector<ir::Material> materials = unlitMaterials(
+        "  <UsdPrimvarReader name=\"p\" type=\"vector3\"><input name=\"varname\" type=\"string\" value=\"" + varname +
+            "\"/><input name=\"fallback\" type=\"vector3\" value=\"0.1, 0.2, 0.3\"/></UsdPrimvarReader>\n"
+            "  <UsdPrimvarReader name=\"q\" type=\"vector2\"><input name=\"varname\" type=\"string\" value=\"st\"/>"
+            "</UsdPrimvarReader>\n  <convert name=\"v\" type=\"color3\"><input name=\"in\" type=\"vector3\" "
+            "nodename=\"p\"/></convert>\n  <add name=\"w\" type=\"color3\"><input name=\"in1\" type=\"color3\" nodename=\"v\"/>"
+            "<input name=\"in2\" type=\"float\" nodename=\"x\"/></add>\n  <extract name=\"x\" type=\"float\">"
+            "<input name=\"in\" type=\"vector2\" nodename=\"q\"/><input name=\"index\" type=\"integer\" value=\"0\"/></extract>\n",
+        "w");
+    std::set<std::string> geomprops;
+    if (materials.empty()) return geomprops;
+    const ir::ExprGraph& g = materials[0].exprs;
+    for (ir::ExprId id = 0; id < g.size(); ++id) {
+      if (g[id].op == ir::Op::GeomProp) geomprops.insert(g.text(id));
+    }
+    return geomprops;
+  };
+  const std::set<std::string> read = reader("rest");
+  EXPECT_TRUE(read.count("rest")) << "the primvar named";
+  EXPECT_TRUE(read.count("UV0")) << "st is the texture coordinate";
+  EXPECT_FALSE(read.count("st"));
 }
 
 }  // namespace
