@@ -305,7 +305,10 @@ bool isSceneFile(const std::filesystem::path& path) {
 std::variant<Scene, std::string> readScene(const std::filesystem::path& path) {
   auto bytes = readInputFile(path, kMaxSceneBytes);
   if (auto* why = std::get_if<1>(&bytes)) return fmt::format("error: cannot read the scene '{}': {}", path.string(), *why);
-  const std::string& text = std::get<0>(bytes);
+  return readSceneText(path, std::get<0>(bytes));
+}
+
+std::variant<Scene, std::string> readSceneText(const std::filesystem::path& path, const std::string& text) {
   // A byte offset (0-based) as "file:line:column".
   auto position = [&](size_t offset) {
     offset = std::min(offset, text.size());

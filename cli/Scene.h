@@ -66,5 +66,8 @@ bool isSceneFile(const std::filesystem::path& path);
 /// Reads and checks a scene file, or returns why it cannot be used ("file: field: problem";
 /// JSON syntax errors as "file:line:column: ...").
 std::variant<Scene, std::string> readScene(const std::filesystem::path& path);
+/// The same for the scene's text, read from `path` (which names it in messages and is the
+/// folder its relative files are found in): the fuzz target's entry point.
+std::variant<Scene, std::string> readSceneText(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace mxc::cli

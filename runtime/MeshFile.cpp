@@ -549,18 +549,28 @@ std::variant<Mesh, std::string> loadObjText(const std::filesystem::path& path, c
   return mesh;
 }
 
+/// Why the extension of `path` names no mesh format mxc reads, if it does not.
+std::optional<std::string> formatProblem(const std::filesystem::path& path) {
+  const std::string extension = lower(path.extension().string());
+  if (extension == ".obj" || extension == ".glb" || extension == ".gltf") return std::nullopt;
+  return fmt::format("{}: unknown mesh format '{}' (expected .glb, .gltf or .obj)", path.string(), path.extension().string());
+}
+
 }  // namespace
 
 std::variant<Mesh, std::string> loadMesh(const std::filesystem::path& path) {
   // What the path is comes first (a FIFO, a directory, nothing): then its format.
   if (auto why = inputFileProblem(path)) return fmt::format("cannot read the mesh '{}': {}", path.string(), *why);
-  const std::string extension = lower(path.extension().string());
-  if (extension != ".obj" && extension != ".glb" && extension != ".gltf") {
-    return fmt::format("{}: unknown mesh format '{}' (expected .glb, .gltf or .obj)", path.string(), path.extension().string());
-  }
+  if (auto problem = formatProblem(path)) return *problem;
   auto bytes = readInputFile(path, kMaxMeshBytes);
   if (auto* why = std::get_if<1>(&bytes)) return fmt::format("cannot read the mesh '{}': {}", path.string(), *why);
-  auto mesh = extension == ".obj" ? loadObjText(path, std::get<0>(bytes)) : loadGltf(path, std::get<0>(bytes), extension == ".glb");
+  return loadMeshBytes(path, std::get<0>(bytes));
+}
+
+std::variant<Mesh, std::string> loadMeshBytes(const std::filesystem::path& path, const std::string& bytes) {
+  if (auto problem = formatProblem(path)) return *problem;
+  const std::string extension = lower(path.extension().string());
+  auto mesh = extension == ".obj" ? loadObjText(path, bytes) : loadGltf(path, bytes, extension == ".glb");
   if (auto* loaded = std::get_if<Mesh>(&mesh)) {
     if (auto problem = valueProblem(*loaded)) return fmt::format("{}: {}", path.string(), *problem);
   }

@@ -31,5 +31,8 @@ namespace mxc::rt {
 /// Reads `path` by its extension (.glb, .gltf, .obj, any case), or returns why it cannot,
 /// naming the file ("path: message").
 std::variant<Mesh, std::string> loadMesh(const std::filesystem::path& path);
+/// The same for the file's bytes, read from `path` (whose extension gives the format and whose
+/// folder a glTF's relative buffers are found in): the fuzz target's entry point.
+std::variant<Mesh, std::string> loadMeshBytes(const std::filesystem::path& path, const std::string& bytes);
 
 }  // namespace mxc::rt

@@ -1,6 +1,8 @@
-// Replays the fuzz targets on the seed corpus (every .mtlx under ../shared/corpus) and on every
-// input the fuzzers found (tests/fuzz/regressions/), in the normal build and under the
-// sanitizer build: each must come back without a crash or an exception.
+// Replays the fuzz targets on the seed corpus (every .mtlx under ../shared/corpus, and
+// tests/fuzz/seeds/ for the inline source, scene and mesh targets) and on every input the
+// fuzzers found (tests/fuzz/regressions/), in the normal build and under the sanitizer build:
+// each must come back without a crash or an exception. The seeds are checked to reach what they
+// are for: the valid ones are read, the campaign's crash categories are refused with a message.
 
 #include <gtest/gtest.h>
 
@@ -8,6 +10,8 @@
 #include <iterator>
 
 #include "FuzzTargets.h"
+#include "cli/Scene.h"
+#include "runtime/MeshFile.h"
 #include "support/TestSupport.h"
 
 namespace mxc::test {
@@ -44,6 +48,78 @@ INSTANTIATE_TEST_SUITE_P(Inputs, FuzzRegression, ::testing::ValuesIn(inputs()),
                            for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
                            return name;
                          });
+
+std::string readBytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+/// Every seed of a target's folder (tests/fuzz/seeds/<folder>), as "folder/file".
+std::vector<std::string> seeds() {
+  std::vector<std::string> files;
+  for (const char* folder : {"inline", "scene", "mesh"}) {
+    for (const auto& e : fs::directory_iterator(sourceDir() / "tests/fuzz/seeds" / folder)) {
+      if (e.is_regular_file()) files.push_back(std::string(folder) + "/" + e.path().filename().string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+class FuzzSeed : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(FuzzSeed, TargetReturns) {
+  const std::string bytes = readBytes(sourceDir() / "tests/fuzz/seeds" / GetParam());
+  if (!GetParam().starts_with("inline/")) {
+    ASSERT_FALSE(bytes.empty()) << GetParam();  // an empty source is a seed
+  }
+  const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
+  if (GetParam().starts_with("inline/")) {
+    EXPECT_NO_THROW(fuzz::compileInlineSource(data, bytes.size()));
+  } else if (GetParam().starts_with("scene/")) {
+    EXPECT_NO_THROW(fuzz::readSceneJson(data, bytes.size()));
+  } else {
+    EXPECT_NO_THROW(fuzz::loadMeshFile(data, bytes.size()));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, FuzzSeed, ::testing::ValuesIn(seeds()), [](const ::testing::TestParamInfo<std::string>& param) {
+  std::string name = param.param;
+  for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return name;
+});
+
+// The mesh and scene seeds reach the readers: the valid ones load, each broken one is refused
+// with a message about what is wrong (not a crash, not a silent success).
+TEST(FuzzSeeds, ValidMeshesLoadAndBrokenOnesAreRefused) {
+  const fs::path folder = sourceDir() / "tests/fuzz/seeds/mesh";
+  for (const char* name : {"triangle.obj", "triangle.gltf", "triangle.glb", "quad_negative_indices.obj"}) {
+    auto mesh = rt::loadMeshBytes(folder / name, readBytes(folder / name));
+    ASSERT_TRUE(std::holds_alternative<rt::Mesh>(mesh)) << name << ": " << std::get<std::string>(mesh);
+    EXPECT_GE(std::get<rt::Mesh>(mesh).vertices.size(), 3u) << name;
+  }
+  for (auto [name, why] : {std::pair{"position_nan.obj", "finite"}, {"position_inf.obj", "finite"},
+                           {"index_beyond_an_integer.obj", ""}, {"huge_triangle.obj", ""},
+                           {"buffer_beyond_the_file.gltf", ""}, {"no_faces.obj", ""}}) {
+    auto mesh = rt::loadMeshBytes(folder / name, readBytes(folder / name));
+    ASSERT_TRUE(std::holds_alternative<std::string>(mesh)) << name << " was read";
+    EXPECT_NE(std::get<std::string>(mesh).find(why), std::string::npos) << name << ": " << std::get<std::string>(mesh);
+  }
+}
+
+TEST(FuzzSeeds, ValidScenesReadAndBrokenOnesAreRefused) {
+  const fs::path folder = sourceDir() / "tests/fuzz/seeds/scene";
+  for (const char* name : {"minimal.json", "lights_and_environment.json", "scale_tiny.json", "scale_huge.json"}) {
+    auto scene = cli::readSceneText(folder / name, readBytes(folder / name));
+    EXPECT_TRUE(std::holds_alternative<cli::Scene>(scene)) << name << ": " << std::get<std::string>(scene);
+  }
+  for (auto [name, why] : {std::pair{"not_json.json", "not valid JSON"}, {"number_beyond_a_double.json", "beyond the range of a double"},
+                           {"camera_far.json", "camera"}, {"camera_up_along_view.json", "camera"}}) {
+    auto scene = cli::readSceneText(folder / name, readBytes(folder / name));
+    ASSERT_TRUE(std::holds_alternative<std::string>(scene)) << name << " was read";
+    EXPECT_NE(std::get<std::string>(scene).find(why), std::string::npos) << name << ": " << std::get<std::string>(scene);
+  }
+}
 
 }  // namespace
 }  // namespace mxc::test

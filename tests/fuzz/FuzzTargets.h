@@ -19,4 +19,16 @@ void parseXml(const uint8_t* data, size_t size);
 /// not ours, and it is slow per input).
 void compileDocument(const uint8_t* data, size_t size);
 
+/// Inline source implementations (compiler/lower/InlineSource.cpp): the bytes are the
+/// `sourcecode` of a node's implementation (made XML-safe), for a float and a vector3 output
+/// with inputs of several types, compiled as compileDocument compiles.
+void compileInlineSource(const uint8_t* data, size_t size);
+
+/// A scene file's text (cli/Scene.cpp), read and checked as `mxc render SCENE.json` does.
+void readSceneJson(const uint8_t* data, size_t size);
+
+/// A mesh file's bytes (runtime/MeshFile.cpp): a binary glTF when they start with its magic,
+/// a glTF when its first non-blank byte is '{', an OBJ otherwise.
+void loadMeshFile(const uint8_t* data, size_t size);
+
 }  // namespace mxc::fuzz
