@@ -284,6 +284,7 @@ ExprId sampleTiles(Context& c, const NodeRef& n, ExprId uv, Type type, const std
   ExprId tileU = c.b.unary(Op::Floor, c.b.extract(uv, 0));
   ExprId tileV = c.b.unary(Op::Floor, c.b.extract(uv, 1));
   ExprId local = c.b.sub(uv, c.b.construct(Type::Vec2, {tileU, tileV}));
+  if (fallback == ir::kNoExpr) fallback = in(c, n, "default");
   ExprId result = fallback;
   for (const Context::UdimTile& tile : tiles) {
     c.material.addImage(tile.file, c.origin(n, "file"));
@@ -305,7 +306,7 @@ ExprId sampleTiles(Context& c, const NodeRef& n, ExprId uv, Type type, const std
 /// "the file could not be read" (false for a UDIM set, whose tiles each fall back).
 ExprId sample(Context& c, const NodeRef& n, ExprId uv, Type type, std::string_view uaddress, std::string_view vaddress,
               ExprId fallback = ir::kNoExpr, ExprId* missing = nullptr) {
-  if (fallback == ir::kNoExpr) fallback = in(c, n, "default");
+  // The default is read where the sample needs it (the IR's expressions keep their order).
   std::string filter = c.stringInput(n, "filtertype");
   if (filter.empty()) filter = "linear";
   const std::string space = texelSpace(c, n, type);
@@ -316,6 +317,7 @@ ExprId sample(Context& c, const NodeRef& n, ExprId uv, Type type, std::string_vi
   const std::string file = c.imageFile(n);
   c.material.addImage(file, c.origin(n, "file"));
   ExprId texture = c.material.exprs.named(Op::Texture, Type::String, file);
+  if (fallback == ir::kNoExpr) fallback = in(c, n, "default");
   ExprId sampled = c.material.exprs.opWithString(Op::ImageSample, type, {texture, uv, fallback},
                                                  fmt::format("{},{},{},{}", uaddress, vaddress, filter, space));
   if (missing) *missing = c.material.exprs.opWithString(Op::ImageMissing, Type::Bool, {texture}, space);

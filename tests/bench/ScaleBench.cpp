@@ -4,9 +4,11 @@
 // ratio near 10 is linear) for mxc's own stages, for glslang, and for the whole compile. Then the peak resident memory of the
 // `mxc compile` process, for open_pbr_default and for the 100k-node document. Last, a chain of
 // documents each including the next (N/4 and N files): loading is linear when the growth is
-// near 4.
+// near 4. Last, documents of 1k, 10k, ... materials (up to --materials), each its own
+// open_pbr_surface, compiled by `mxc compile DOC -o DIR/out.spv` as a user runs it: the time per
+// material and its growth (10x the materials: linear near 10), and the peak memory per material.
 //
-//   build/tests/bench/scale_bench [--max N] [--no-glslang] [--includes N]
+//   build/tests/bench/scale_bench [--max N] [--no-glslang] [--includes N] [--materials N]
 //
 // --no-glslang stops after GLSL (glslang's own constant lookup is quadratic in the number of
 // distinct literals, which dominates beyond 100k nodes).
@@ -154,6 +156,25 @@ double includeChainMs(int files) {
   return ms;
 }
 
+/// A document of `count` materials, each an open_pbr_surface of its own colour and roughness
+/// (distinct values: no two compile to the same shader), written to a file.
+fs::path generateMaterials(int count) {
+  const fs::path path = fs::temp_directory_path() / fmt::format("mxc_materials_{}_{}.mtlx", count, ::getpid());
+  std::ofstream out(path);
+  out << "<?xml version=\"1.0\"?>\n<materialx version=\"1.39\">\n";
+  for (int i = 0; i < count; ++i) {
+    const double t = double(i) / std::max(count, 1);
+    out << fmt::format("  <open_pbr_surface name=\"s{0}\" type=\"surfaceshader\">\n"
+                       "    <input name=\"base_color\" type=\"color3\" value=\"{1:.6f}, 0.5, {2:.6f}\" />\n"
+                       "    <input name=\"specular_roughness\" type=\"float\" value=\"{3:.6f}\" />\n  </open_pbr_surface>\n"
+                       "  <surfacematerial name=\"M{0}\" type=\"material\"><input name=\"surfaceshader\" "
+                       "type=\"surfaceshader\" nodename=\"s{0}\" /></surfacematerial>\n",
+                       i, t, 1.0 - t, 0.1 + 0.8 * t);
+  }
+  out << "</materialx>\n";
+  return path;
+}
+
 /// Peak resident memory (MiB) of `mxc compile FILE -q`, from the kernel's accounting.
 double peakMiB(const fs::path& file) {
   const mxc::bench::ChildRun run = mxc::bench::runChild(MXC_BINARY, {"compile", "-q", file.string()}, true);
@@ -169,9 +190,11 @@ int main(int argc, char** argv) {
   }
   bool glslang = true;
   int includes = 40000;
+  int materials = 10000;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--no-glslang")) glslang = false;
     if (!std::strcmp(argv[i], "--includes") && i + 1 < argc) includes = std::max(4, std::atoi(argv[i + 1]));
+    if (!std::strcmp(argv[i], "--materials") && i + 1 < argc) materials = std::atoi(argv[i + 1]);
   }
   // Memory first, while this process is small: a child's peak counts the pages it had from
   // fork until exec.
@@ -206,5 +229,31 @@ int main(int argc, char** argv) {
   std::printf("\npeak resident memory of `mxc compile` (one process, library, glslang and SPIRV-Tools included):\n");
   std::printf("  %-28s %8.1f MiB   (target: at most 48 MiB)\n", "open_pbr_default.mtlx", openPbrPeak);
   std::printf("  %-28s %8.1f MiB   (target: under 1 GiB)\n", fmt::format("{} generated nodes", max).c_str(), largestPeak);
+
+  // Many materials, one process: `mxc compile DOC -o DIR/out.spv` (DIR/out_<material>.spv each).
+  std::printf("\n%10s %10s %14s %8s %10s %14s\n", "materials", "wall", "per material", "growth", "peak", "per material");
+  double previous = 0.0;
+  for (int count = 1000; count <= materials; count *= 10) {
+    const fs::path document = generateMaterials(count);
+    const fs::path folder = fs::temp_directory_path() / fmt::format("mxc_materials_out_{}_{}", count, ::getpid());
+    fs::create_directories(folder);
+    const mxc::bench::ChildRun run =
+        mxc::bench::runChild(MXC_BINARY, {"compile", "-q", document.string(), "-o", (folder / "out.spv").string()}, true);
+    size_t written = 0;
+    for (const auto& e : fs::directory_iterator(folder)) {
+      written += e.path().extension() == ".spv" && e.path().stem().extension() != ".vert";
+    }
+    fs::remove_all(folder);
+    fs::remove(document);
+    if (!run.ok || written < size_t(count)) {
+      std::fprintf(stderr, "compiling %d materials failed (%zu shaders written)\n", count, written);
+      return 1;
+    }
+    const double perMaterial = 1000.0 * run.seconds / count;
+    std::printf("%10d %8.1f s %11.3f ms %8s %7.0f MiB %11.1f KiB\n", count, run.seconds, perMaterial,
+                previous > 0 ? fmt::format("{:.1f}x", run.seconds / previous).c_str() : "-", run.peakMiB,
+                1024.0 * run.peakMiB / count);
+    previous = run.seconds;
+  }
   return 0;
 }

@@ -251,7 +251,9 @@ TEST(InputSafety, AFolderNameThatIsNotUtf8GivesJsonWithAWarning) {
 TEST(InputSafety, ThousandsOfErrorsPrintAFewHundred) {
   TempFolder folder("errors");
   std::string body;
-  for (int i = 0; i < 5000; ++i) body += "  <nosuchnode name=\"a" + std::to_string(i) + "\" type=\"float\"/>\n";
+  for (int i = 0; i < 5000; ++i) {
+    body += "  <constant name=\"a" + std::to_string(i) + "\" type=\"float\"><input name=\"value\" type=\"float\" value=\"x\"/></constant>\n";
+  }
   writeText(folder / "errors.mtlx", mtlx(body));
   CommandRun r = mxc("inspect " + (folder / "errors.mtlx").string());
   EXPECT_EQ(r.exitCode, 1);

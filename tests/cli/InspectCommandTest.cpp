@@ -207,7 +207,8 @@ TEST(InspectCommand, OutputFileIsWrittenWholeOrNotAtAll) {
   const fs::path out = folder / "report.json";
   std::ofstream(out) << "previous";
   // A failing run leaves the previous file as it was.
-  fs::path bad = writeTemp("bad2.mtlx", mtlx("  <nosuchnode name=\"a\" type=\"float\"/>\n"));
+  fs::path bad = writeTemp("bad2.mtlx", mtlx("  <constant name=\"a\" type=\"float\"><input name=\"value\" type=\"float\" "
+                                            "value=\"x\"/></constant>\n"));
   EXPECT_EQ(mxc("inspect --json -o " + out.string() + " " + bad.string()).exitCode, 1);
   std::ifstream before(out);
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(before), {}), "previous");
@@ -220,6 +221,30 @@ TEST(InspectCommand, OutputFileIsWrittenWholeOrNotAtAll) {
   // An output folder that does not exist is an output failure (3), not a document error.
   EXPECT_EQ(mxc("inspect -o /no/such/folder/r.txt " + corpus("openpbr-presets/open_pbr_glass.mtlx")).exitCode, 3);
   fs::remove(bad);
+}
+
+// A node of a category no nodedef defines is read with a warning (MaterialX reads it so): inspect
+// exits 0; compiling a material that needs it exits 1, naming the node.
+TEST(InspectCommand, AnUnknownCategoryIsAWarningUntilAMaterialNeedsIt) {
+  TempFolder folder("unknown");
+  writeText(folder / "light.mtlx", mtlx("  <lightcompoundtest name=\"rig\" type=\"lightshader\"/>\n"
+                                        "  <open_pbr_surface name=\"s\" type=\"surfaceshader\"/>\n"
+                                        "  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
+                                        "type=\"surfaceshader\" nodename=\"s\"/></surfacematerial>\n"));
+  CommandRun inspect = mxc("inspect " + (folder / "light.mtlx").string());
+  EXPECT_EQ(inspect.exitCode, 0) << inspect.err;
+  EXPECT_NE(inspect.err.find("light.mtlx:3:3: warning: unknown node category <lightcompoundtest>"), std::string::npos) << inspect.err;
+  EXPECT_EQ(mxc("compile " + (folder / "light.mtlx").string() + " -o " + (folder / "m.spv").string()).exitCode, 0);
+  writeText(folder / "shader.mtlx", mtlx("  <mystery_surface name=\"s\" type=\"surfaceshader\"/>\n"
+                                         "  <surfacematerial name=\"M\" type=\"material\"><input name=\"surfaceshader\" "
+                                         "type=\"surfaceshader\" nodename=\"s\"/></surfacematerial>\n"));
+  EXPECT_EQ(mxc("inspect " + (folder / "shader.mtlx").string()).exitCode, 0);
+  CommandRun compile = mxc("compile " + (folder / "shader.mtlx").string() + " -o " + (folder / "s.spv").string());
+  EXPECT_EQ(compile.exitCode, 1);
+  EXPECT_NE(compile.err.find("shader.mtlx:3:3: error: node 's' is a <mystery_surface>, which no nodedef defines"),
+            std::string::npos)
+      << compile.err;
+  EXPECT_FALSE(fs::exists(folder / "s.spv"));
 }
 
 TEST(InspectCommand, LibraryFolderOptions) {
