@@ -18,6 +18,7 @@
 #include "cli/SceneDocuments.h"
 #include "cli/Verbosity.h"
 #include "compiler/document/Document.h"
+#include "compiler/driver/ShaderGroups.h"
 #include "compiler/glsl/ShaderBuilder.h"
 #include "compiler/glsl/ShaderInterface.h"
 #include "compiler/target/Target.h"
@@ -91,11 +92,32 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
   // A module on standard output would be mixed with the summary lines.
   const bool quiet = cli::quiet() || options.output == "-" || options.glsl == "-";
   int result = kOk;
-  for (const Unit& unit : units) {
+  // The materials of one document compile by library, as a batch's do (driver/ShaderGroups.h):
+  // the shaders of up to kGroupedShaders materials are built, their libraries planned as groups
+  // (one glslang compile and one validation each), and the modules cut from them. A chunk at a
+  // time, so that a document of many materials does not hold every shader's text at once.
+  constexpr size_t kGroupedShaders = 16;
+  const bool grouped = units.size() > 1 && std::all_of(units.begin(), units.end(), [&](const Unit& u) {
+    return u.pipeline == units.front().pipeline;
+  });
+  std::vector<std::shared_ptr<const glsl::MaterialShader>> chunk;
+  size_t chunkStart = 0;
+  for (size_t u = 0; u < units.size(); ++u) {
+    const Unit& unit = units[u];
     const ir::Material& material = *unit.material;
     Compiler& compiler = unit.pipeline->compiler();
     auto stage = std::chrono::steady_clock::now();
-    glsl::MaterialShader shader = compiler.shader(material);
+    if (grouped && (chunk.empty() || u >= chunkStart + chunk.size())) {
+      chunk.clear();
+      chunkStart = u;
+      for (size_t k = u; k < std::min(units.size(), u + kGroupedShaders); ++k) {
+        chunk.push_back(std::make_shared<const glsl::MaterialShader>(compiler.shader(*units[k].material)));
+      }
+      planShaderGroups(compiler.shaderCache(), chunk, compiler.request());
+    }
+    glsl::MaterialShader own;
+    if (!grouped) own = compiler.shader(material);
+    const glsl::MaterialShader& shader = grouped ? *chunk[u - chunkStart] : own;
     detail("{}: GLSL generated in {:.1f} ms", material.name, millisecondsSince(stage));
     stage = std::chrono::steady_clock::now();
     ShaderCache::Served served = ShaderCache::Served::Compiled;
@@ -103,6 +125,8 @@ int compileUnits(const CompileOptions& options, Session& session, const std::vec
     if (served == ShaderCache::Served::SameCode) {
       detail("{}: SPIR-V of a shader with the same code, compiled for another material, taken in {:.1f} ms",
              material.name, millisecondsSince(stage));
+    } else if (served == ShaderCache::Served::CutFromGroup) {
+      detail("{}: SPIR-V cut from the compile of its library's group in {:.1f} ms", material.name, millisecondsSince(stage));
     } else {
       detail("{}: SPIR-V compiled{} and validated in {:.1f} ms", material.name, options.optimize ? ", optimised" : "",
              millisecondsSince(stage));

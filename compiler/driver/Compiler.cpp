@@ -85,8 +85,7 @@ glsl::MaterialShader Compiler::shader(const ir::Material& material, glsl::Shader
 }
 
 std::optional<std::vector<uint32_t>> Compiler::spirv(const glsl::MaterialShader& shader, ShaderCache::Served* served) {
-  return compileShader(shader, request_, request_.shaderCache ? request_.shaderCache : &workspace_.shaderCache,
-                       workspace_.diagnostics, served);
+  return compileShader(shader, request_, &shaderCache(), workspace_.diagnostics, served);
 }
 
 std::optional<target::Translation> Compiler::translate(const std::vector<uint32_t>& words, spirv::Stage stage,

@@ -116,6 +116,8 @@ class Compiler {
   Compiler(Workspace& workspace, CompileRequest request);
 
   const CompileRequest& request() const { return request_; }
+  /// The cache spirv() compiles through: the request's, else the workspace's.
+  ShaderCache& shaderCache() { return request_.shaderCache ? *request_.shaderCache : workspace_.shaderCache; }
   Workspace& workspace() { return workspace_; }
   Diagnostics& diagnostics() { return workspace_.diagnostics; }
 

@@ -155,5 +155,38 @@ TEST(CompileBatch, AShaderCodeCompilesOnceAndWritesWhatItWritesAlone) {
   EXPECT_NE(readBytes(folder / "out/docs/blue/Blue.spv"), readBytes(folder / "out/docs/red/Red.spv"));
 }
 
+// One document of several materials compiles them by library, as a batch does: the shaders of
+// one library are one glslang compile, each material's module cut from it, and each module is
+// byte for byte what the material compiles to alone (--material).
+TEST(CompileBatch, ADocumentsMaterialsCompileByLibraryAndWriteWhatEachWritesAlone) {
+  TempFolder folder("document_groups");
+  std::string body;
+  const char* colors[] = {"0.7, 0.1, 0.1", "0.1, 0.7, 0.1", "0.1, 0.1, 0.7"};
+  for (int i = 0; i < 3; ++i) {
+    body += "  <open_pbr_surface name=\"s" + std::to_string(i) + "\" type=\"surfaceshader\"><input name=\"base_color\" "
+            "type=\"color3\" value=\"" + colors[i] + "\"/></open_pbr_surface>\n  <surfacematerial name=\"M" + std::to_string(i) +
+            "\" type=\"material\"><input name=\"surfaceshader\" type=\"surfaceshader\" nodename=\"s" + std::to_string(i) +
+            "\"/></surfacematerial>\n";
+  }
+  writeText(folder / "three.mtlx", "<materialx version=\"1.39\">\n" + body + "</materialx>\n");
+  CommandRun all = mxc("compile " + (folder / "three.mtlx").string() + " -o " + (folder / "out.spv").string() + " -v");
+  ASSERT_EQ(all.exitCode, 0) << all.err;
+  size_t cut = 0;
+  for (size_t at = all.err.find("SPIR-V cut from the compile of its library's group"); at != std::string::npos;
+       at = all.err.find("SPIR-V cut from the compile of its library's group", at + 1)) {
+    ++cut;
+  }
+  EXPECT_EQ(cut, 3u) << all.err;
+  for (int i = 0; i < 3; ++i) {
+    const std::string material = "M" + std::to_string(i);
+    const fs::path alone = folder / (material + ".spv");
+    CommandRun single = mxc("compile " + (folder / "three.mtlx").string() + " --material " + material + " -o " + alone.string());
+    ASSERT_EQ(single.exitCode, 0) << single.err;
+    EXPECT_FALSE(readBytes(alone).empty());
+    EXPECT_EQ(readBytes(folder / ("out_" + material + ".spv")), readBytes(alone)) << material;
+  }
+  EXPECT_NE(readBytes(folder / "out_M0.spv"), readBytes(folder / "out_M1.spv"));
+}
+
 }  // namespace
 }  // namespace mxc::test
