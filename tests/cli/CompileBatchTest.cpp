@@ -12,16 +12,11 @@
 namespace mxc::test {
 namespace {
 
-std::string readBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 /// Every file under `folder`, by its path relative to it, with its bytes.
 std::map<std::string, std::string> filesUnder(const fs::path& folder) {
   std::map<std::string, std::string> out;
   for (const auto& entry : fs::recursive_directory_iterator(folder)) {
-    if (entry.is_regular_file()) out[fs::relative(entry.path(), folder).string()] = readBytes(entry.path());
+    if (entry.is_regular_file()) out[fs::relative(entry.path(), folder).string()] = readFileBytes(entry.path());
   }
   return out;
 }
@@ -59,7 +54,7 @@ TEST(CompileBatch, GoesOnPastAFailingDocumentAndSaysWhichFailed) {
                            "single/RedPaint.spv", "single/Plastic.frag"}) {
     EXPECT_TRUE(fs::is_regular_file(out / path)) << path;
   }
-  EXPECT_EQ(readBytes(out / "docs/good/Plastic.spv").substr(0, 4), std::string("\x03\x02\x23\x07", 4));
+  EXPECT_EQ(readFileBytes(out / "docs/good/Plastic.spv").substr(0, 4), std::string("\x03\x02\x23\x07", 4));
   EXPECT_FALSE(fs::exists(out / "docs/sub/broken")) << "nothing of a failed document";
   // Without -o, a batch only checks that everything compiles.
   r = mxc("compile " + (folder / "docs/good.mtlx").string() + " " + (folder / "single.mtlx").string());
@@ -149,10 +144,10 @@ TEST(CompileBatch, AShaderCodeCompilesOnceAndWritesWhatItWritesAlone) {
     const fs::path alone = folder / (name + ".spv");
     CommandRun single = mxc("compile " + (folder / "docs" / (name + ".mtlx")).string() + " -o " + alone.string());
     ASSERT_EQ(single.exitCode, 0) << single.err;
-    EXPECT_EQ(readBytes(folder / "out/docs" / name / (material + ".spv")), readBytes(alone)) << name;
-    EXPECT_FALSE(readBytes(alone).empty());
+    EXPECT_EQ(readFileBytes(folder / "out/docs" / name / (material + ".spv")), readFileBytes(alone)) << name;
+    EXPECT_FALSE(readFileBytes(alone).empty());
   }
-  EXPECT_NE(readBytes(folder / "out/docs/blue/Blue.spv"), readBytes(folder / "out/docs/red/Red.spv"));
+  EXPECT_NE(readFileBytes(folder / "out/docs/blue/Blue.spv"), readFileBytes(folder / "out/docs/red/Red.spv"));
 }
 
 // One document of several materials compiles them by library, as a batch does: the shaders of
@@ -182,10 +177,10 @@ TEST(CompileBatch, ADocumentsMaterialsCompileByLibraryAndWriteWhatEachWritesAlon
     const fs::path alone = folder / (material + ".spv");
     CommandRun single = mxc("compile " + (folder / "three.mtlx").string() + " --material " + material + " -o " + alone.string());
     ASSERT_EQ(single.exitCode, 0) << single.err;
-    EXPECT_FALSE(readBytes(alone).empty());
-    EXPECT_EQ(readBytes(folder / ("out_" + material + ".spv")), readBytes(alone)) << material;
+    EXPECT_FALSE(readFileBytes(alone).empty());
+    EXPECT_EQ(readFileBytes(folder / ("out_" + material + ".spv")), readFileBytes(alone)) << material;
   }
-  EXPECT_NE(readBytes(folder / "out_M0.spv"), readBytes(folder / "out_M1.spv"));
+  EXPECT_NE(readFileBytes(folder / "out_M0.spv"), readFileBytes(folder / "out_M1.spv"));
 }
 
 }  // namespace

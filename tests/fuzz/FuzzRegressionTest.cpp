@@ -49,11 +49,6 @@ INSTANTIATE_TEST_SUITE_P(Inputs, FuzzRegression, ::testing::ValuesIn(inputs()),
                            return name;
                          });
 
-std::string readBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), {});
-}
-
 /// Every seed of a target's folder (tests/fuzz/seeds/<folder>), as "folder/file".
 std::vector<std::string> seeds() {
   std::vector<std::string> files;
@@ -69,7 +64,7 @@ std::vector<std::string> seeds() {
 class FuzzSeed : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(FuzzSeed, TargetReturns) {
-  const std::string bytes = readBytes(sourceDir() / "tests/fuzz/seeds" / GetParam());
+  const std::string bytes = readFileBytes(sourceDir() / "tests/fuzz/seeds" / GetParam());
   if (!GetParam().starts_with("inline/")) {
     ASSERT_FALSE(bytes.empty()) << GetParam();  // an empty source is a seed
   }
@@ -94,14 +89,14 @@ INSTANTIATE_TEST_SUITE_P(Seeds, FuzzSeed, ::testing::ValuesIn(seeds()), [](const
 TEST(FuzzSeeds, ValidMeshesLoadAndBrokenOnesAreRefused) {
   const fs::path folder = sourceDir() / "tests/fuzz/seeds/mesh";
   for (const char* name : {"triangle.obj", "triangle.gltf", "triangle.glb", "quad_negative_indices.obj"}) {
-    auto mesh = rt::loadMeshBytes(folder / name, readBytes(folder / name));
+    auto mesh = rt::loadMeshBytes(folder / name, readFileBytes(folder / name));
     ASSERT_TRUE(std::holds_alternative<rt::Mesh>(mesh)) << name << ": " << std::get<std::string>(mesh);
     EXPECT_GE(std::get<rt::Mesh>(mesh).vertices.size(), 3u) << name;
   }
   for (auto [name, why] : {std::pair{"position_nan.obj", "finite"}, {"position_inf.obj", "finite"},
                            {"index_beyond_an_integer.obj", ""}, {"huge_triangle.obj", ""},
                            {"buffer_beyond_the_file.gltf", ""}, {"no_faces.obj", ""}}) {
-    auto mesh = rt::loadMeshBytes(folder / name, readBytes(folder / name));
+    auto mesh = rt::loadMeshBytes(folder / name, readFileBytes(folder / name));
     ASSERT_TRUE(std::holds_alternative<std::string>(mesh)) << name << " was read";
     EXPECT_NE(std::get<std::string>(mesh).find(why), std::string::npos) << name << ": " << std::get<std::string>(mesh);
   }
@@ -110,12 +105,12 @@ TEST(FuzzSeeds, ValidMeshesLoadAndBrokenOnesAreRefused) {
 TEST(FuzzSeeds, ValidScenesReadAndBrokenOnesAreRefused) {
   const fs::path folder = sourceDir() / "tests/fuzz/seeds/scene";
   for (const char* name : {"minimal.json", "lights_and_environment.json", "scale_tiny.json", "scale_huge.json"}) {
-    auto scene = cli::readSceneText(folder / name, readBytes(folder / name));
+    auto scene = cli::readSceneText(folder / name, readFileBytes(folder / name));
     EXPECT_TRUE(std::holds_alternative<cli::Scene>(scene)) << name << ": " << std::get<std::string>(scene);
   }
   for (auto [name, why] : {std::pair{"not_json.json", "not valid JSON"}, {"number_beyond_a_double.json", "beyond the range of a double"},
                            {"camera_far.json", "camera"}, {"camera_up_along_view.json", "camera"}}) {
-    auto scene = cli::readSceneText(folder / name, readBytes(folder / name));
+    auto scene = cli::readSceneText(folder / name, readFileBytes(folder / name));
     ASSERT_TRUE(std::holds_alternative<std::string>(scene)) << name << " was read";
     EXPECT_NE(std::get<std::string>(scene).find(why), std::string::npos) << name << ": " << std::get<std::string>(scene);
   }

@@ -88,12 +88,6 @@ inline pid_t spawnMxc(const std::vector<std::string>& arguments) {
   return pid;
 }
 
-/// The whole content of a file ("" when it cannot be read).
-inline std::string readFileBytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 inline void writeText(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
 /// A document whose material's base colour is the image `file` (its file input on line 4).

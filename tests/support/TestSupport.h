@@ -25,6 +25,12 @@ namespace mxc::test {
 inline std::filesystem::path sharedDir() { return std::filesystem::path(MXC_SHARED_DIR); }
 inline std::filesystem::path sourceDir() { return std::filesystem::path(MXC_SOURCE_DIR); }
 
+/// The whole content of a file ("" when it cannot be read).
+inline std::string readFileBytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 /// Every .mtlx under ../shared/corpus, relative to the shared folder (so outputs hold no machine
 /// paths), sorted.
 inline std::vector<std::string> corpusDocuments() {
