@@ -1,5 +1,6 @@
 #include "runtime/MaterialResources.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include <fmt/format.h>
@@ -18,7 +19,7 @@ MaterialResources::MaterialResources(VulkanContext& context, const glsl::Materia
   // Without a cache of the caller's, the material's own: its textures of one file are shared.
   TextureCache own(context);
   TextureCache& cache = textures ? *textures : own;
-  uint32_t missing = 0;
+  std::vector<uint32_t> missing(std::max<size_t>((material.textures.size() + 31) / 32, 1), 0);  // a mask per 32 textures
   for (size_t k = 0; k < material.textures.size(); ++k) {
     const glsl::TextureBinding& t = material.textures[k];
     std::filesystem::path path = t.path;
@@ -39,13 +40,15 @@ MaterialResources::MaterialResources(VulkanContext& context, const glsl::Materia
       }
     }
     if (!texture || !texture->error().empty()) {
-      missing |= 1u << (k % 32);
+      missing[k / 32] |= 1u << (k % 32);
       if (!texture) texture = cache.placeholder();
     }
     textures_.push_back(std::move(texture));
   }
   for (glsl::UniformField& f : material_.parameters) {
-    if (f.name == "missing_textures") f.value = {static_cast<float>(missing)};
+    for (size_t word = 0; word < missing.size(); ++word) {
+      if (f.name == glsl::missingTexturesMember(word * 32)) f.bits = missing[word];
+    }
   }
   parameters_ = context.createBuffer(material_.parameterBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   std::vector<uint8_t> bytes = glsl::packParameters(material_.parameters, material_.parameterBytes);

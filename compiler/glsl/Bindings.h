@@ -3,7 +3,9 @@
 /// The descriptor bindings (set 0) shared by every generated shader and the Vulkan harness that
 /// runs it. The harness binds what a stage declares; unused bindings are simply absent.
 
+#include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace mxc::glsl {
 
@@ -17,6 +19,17 @@ enum Binding : uint32_t {
   kOutputBinding = 4,      ///< storage buffer written by compute stages
   kFirstTextureBinding = 5 ///< sampler2D per image file, in ExprEmitter order
 };
+
+/// The parameter block member (kParameterBinding) holding the "could not be read" bit of
+/// texture k: a uint each for textures 0-31 (missing_textures), 32-63 (missing_textures_32) and
+/// so on; its bit is k % 32. The harness sets it, the shader then uses the image node's default.
+inline std::string missingTexturesMember(size_t k) {
+  return k < 32 ? std::string("missing_textures") : "missing_textures_" + std::to_string(k / 32 * 32);
+}
+/// Whether a parameter block member is one of the missing_textures masks.
+inline bool isMissingTexturesMember(const std::string& name) {
+  return name == "missing_textures" || name.rfind("missing_textures_", 0) == 0;
+}
 
 /// Under MXC_SEPARATE_SAMPLERS (the WGSL target, which has no combined image sampler), the
 /// sampler of the texture at binding b of a set is at binding b + kSeparateSamplerOffset of that

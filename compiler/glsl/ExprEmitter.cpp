@@ -178,7 +178,7 @@ std::string ExprEmitter::texture(const std::string& path, const std::string& col
 std::string ExprEmitter::missing(const std::string& sampler) const {
   size_t k = textures_.size() - 1;
   for (size_t t = 0; t < textures_.size(); ++t) k = textures_[t].name == sampler ? t : k;
-  return fmt::format("(MXC_PARAMETER(mxc_params.missing_textures) & {}u) != 0u", 1u << (k % 32));
+  return fmt::format("(MXC_PARAMETER(mxc_params.{}) & {}u) != 0u", missingTexturesMember(k), 1u << (k % 32));
 }
 
 std::string ExprEmitter::emit(ExprId id) {

@@ -75,7 +75,7 @@ class ExprEmitter {
   std::string emit(ir::ExprId id);
   std::string literal(ir::ExprId id) const;
   std::string texture(const std::string& path, const std::string& colorspace);
-  /// The GLSL condition "the file of `sampler` could not be read": its bit of missing_textures.
+  /// The GLSL condition "the file of `sampler` could not be read": its bit of its missing_textures mask.
   std::string missing(const std::string& sampler) const;
 
   const ir::Material& m_;

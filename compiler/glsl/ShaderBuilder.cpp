@@ -214,6 +214,7 @@ std::vector<UniformField> parameterLayout(const ir::Material& material, const Ex
   fields.push_back({"missing_textures", ir::Type::Int, 0, {0.0f}});
   fields.push_back({"frame", ir::Type::Float, 0, {1.0f}});
   fields.push_back({"time", ir::Type::Float, 0, {0.0f}});
+  for (size_t k = 32; k < exprs.textures().size(); k += 32) fields.push_back({missingTexturesMember(k), ir::Type::Int, 0, {0.0f}});
   for (const auto& [name, type] : exprs.parameters()) {
     if (name == "frame" || name == "time") continue;
     UniformField f{name, type, 0, std::vector<float>(std::max(ir::componentCount(type), 1), 0.0f)};
@@ -438,7 +439,7 @@ spirv::GlslSource buildEnvironmentSampleShader() {
 namespace mxc::glsl {
 
 std::string parameterType(const UniformField& f) {
-  if (f.name == "missing_textures") return "uint";
+  if (isMissingTexturesMember(f.name)) return "uint";
   return glslType(f.type);
 }
 
@@ -448,8 +449,12 @@ std::vector<uint8_t> packParameters(const std::vector<UniformField>& fields, uin
     if (offset + size <= out.size()) std::memcpy(out.data() + offset, data, size);
   };
   for (const UniformField& f : fields) {
+    if (isMissingTexturesMember(f.name)) {
+      put(f.offset, &f.bits, 4);
+      continue;
+    }
     if (f.value.empty()) continue;
-    if (f.type == ir::Type::Int || f.type == ir::Type::Bool || f.name == "missing_textures") {
+    if (f.type == ir::Type::Int || f.type == ir::Type::Bool) {
       const int32_t v = f.type == ir::Type::Bool ? (f.value[0] != 0.0f ? 1 : 0) : static_cast<int32_t>(f.value[0]);
       put(f.offset, &v, 4);
     } else if (f.type == ir::Type::Mat3 || f.type == ir::Type::Mat4) {

@@ -31,12 +31,17 @@ struct UniformField {
   ir::Type type = ir::Type::Float;
   uint32_t offset = 0;
   std::vector<float> value;  ///< its default (componentCount floats; 1 for Bool, Int)
+  /// A bit-mask member's value (missing_textures*), written as a uint: a float holds only 24
+  /// bits exactly, so texture 24's bit and texture 0's could not both be set through `value`.
+  uint32_t bits = 0;
 };
+
 
 /// What the harness must provide to run a material shader.
 struct MaterialInterface {
   std::vector<TextureBinding> textures;
   std::vector<UniformField> parameters;  ///< always has missing_textures, frame and time first
+                                         ///< (then missing_textures_32... past 32 textures)
   uint32_t parameterBytes = 0;
   int lobes = 0;                        ///< lobes of the closure (MXC_MAX_LOBES)
   /// Samples (walks) one invocation may draw per dispatch: 0 for no limit; 1 for the reference
@@ -118,6 +123,6 @@ namespace mxc::glsl {
 /// The bytes of the parameter block: each field's value at its std140 offset (matrices given
 /// row by row, as ExprGraph::constantComponents lists them, are stored as padded columns).
 std::vector<uint8_t> packParameters(const std::vector<UniformField>& fields, uint32_t bytes);
-/// The GLSL type a parameter block member is declared with (missing_textures is a uint).
+/// The GLSL type a parameter block member is declared with (the missing_textures masks are uints).
 std::string parameterType(const UniformField& field);
 }  // namespace mxc::glsl

@@ -113,6 +113,9 @@ json shaderInterfaceJson(const ir::Material& material, const MaterialShader& sha
                 {"offset", f.offset},
                 {"default", f.value}};
     if (f.name == "missing_textures") member["meaning"] = "bit k set: texture k could not be read, the image node's default is used";
+    if (f.name != "missing_textures" && isMissingTexturesMember(f.name)) {
+      member["meaning"] = fmt::format("bit k set: texture {} + k could not be read, the image node's default is used", f.name.substr(17));
+    }
     if (f.name == "frame") member["meaning"] = "the frame index, from 1 (MaterialX's frame geometric property)";
     if (f.name == "time") member["meaning"] = "seconds (MaterialX's time geometric property)";
     for (const ir::Parameter& p : material.parameters) {
@@ -147,7 +150,8 @@ json shaderInterfaceJson(const ir::Material& material, const MaterialShader& sha
                  {"type", "combined_image_sampler"},
                  {"name", t.name},
                  {"file", t.path},
-                 {"missingBit", k},
+                 {"missingMember", missingTexturesMember(k)},
+                 {"missingBit", k % 32},
                  {"colorspace", t.colorspace},
                  {"decode", decode ? "srgb" : "none"},
                  {"image",

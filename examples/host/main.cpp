@@ -478,7 +478,7 @@ int run(const Options& options) {
   check(vkCreateSampler(gpu.device, &samplerInfo, nullptr, &sampler), "vkCreateSampler");
   Buffer view{};
   json viewMembers;
-  uint32_t missingTextures = 0;
+  std::map<std::string, uint32_t> missingTextures;  // each missing_textures mask member's bits
   Buffer parameters{};
   for (const json& d : interface["descriptors"]) {
     const std::string name = d["name"], type = d["type"];
@@ -500,7 +500,7 @@ int run(const Options& options) {
         if (texels.levels.empty()) {
           std::fprintf(stderr, "warning: cannot read %s: the material uses the image node's default\n",
                        d["file"].get<std::string>().c_str());
-          missingTextures |= 1u << (d.value("missingBit", 0u) % 32);
+          missingTextures[d.value("missingMember", std::string("missing_textures"))] |= 1u << (d.value("missingBit", 0u) % 32);
         }
       }
       if (texels.levels.empty()) texels.levels.push_back({0, 0, 0, 0});  // the environment (none here), or a missing file
@@ -533,7 +533,8 @@ int run(const Options& options) {
     for (const json& d : interface["descriptors"]) {
       if (d["name"] != "MxcParameters") continue;
       for (const json& m : d["members"]) {
-        if (m["name"] == "missing_textures") std::memcpy(static_cast<char*>(parameters.mapped) + m["offset"].get<uint32_t>(), &missingTextures, 4);
+        auto bits = missingTextures.find(m["name"].get<std::string>());
+        if (bits != missingTextures.end()) std::memcpy(static_cast<char*>(parameters.mapped) + m["offset"].get<uint32_t>(), &bits->second, 4);
       }
     }
   }

@@ -7,10 +7,14 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <cmath>
+#include <map>
 #include <thread>
 
 #include "runtime/ImageIO.h"
 #include "support/CommandSupport.h"
+#include "support/RenderCommandSupport.h"
 
 namespace mxc::test {
 namespace {
@@ -172,7 +176,7 @@ std::string manyTexturesDocument(const TempFolder& folder, int count) {
   std::string body;
   for (int k = 0; k < count; ++k) {
     const std::string file = "t" + std::to_string(k) + ".exr";
-    EXPECT_FALSE(rt::writeImage(folder / file, rt::RgbaImage{2, 2, std::vector<float>(16, 0.01f * float(k))}).has_value());
+    EXPECT_FALSE(rt::writeImage(folder / file, rt::RgbaImage{2, 2, std::vector<float>(16, 0.001f * float(k))}).has_value());
     body += "  <image name=\"i" + std::to_string(k) + "\" type=\"color3\"><input name=\"file\" type=\"filename\" value=\"" +
             file + "\"/></image>\n";
     if (k > 0) {
@@ -208,6 +212,74 @@ TEST(InputSafety, MoreTexturesThanTheDeviceTakesAreAnErrorNotACrash) {
   CommandRun eval = mxc("eval " + (folder / "many.mtlx").string() + " --dirs " + (folder / "d.csv").string());
   EXPECT_EQ(eval.exitCode, 1) << eval.err;
   EXPECT_NE(eval.err.find("the compute stage binds 41 samplers"), std::string::npos) << eval.err;
+}
+
+TEST(InputSafety, EveryMissingTextureUsesItsDefaultHoweverManyTexturesAMaterialReads) {
+  // The missing-texture mask went through a float: textures 0 and 25 missing gave 2^25 + 1,
+  // which a float rounds to 2^25, so texture 0 sampled the placeholder instead of its default.
+  TempFolder folder("missing_textures");
+  std::string missing = manyTexturesDocument(folder, 26);
+  for (const std::string k : {"0", "25"}) {
+    const std::string file = "<input name=\"file\" type=\"filename\" value=\"t" + k + ".exr\"/>";
+    ASSERT_NE(missing.find(file), std::string::npos);
+    missing.replace(missing.find(file), file.size(),
+                    "<input name=\"file\" type=\"filename\" value=\"gone" + k + ".exr\"/>"
+                    "<input name=\"default\" type=\"color3\" value=\"0.3, 0.2, 0.1\"/>");
+  }
+  writeText(folder / "missing.mtlx", missing);
+  // The same material with files holding the defaults: the image it should render.
+  std::vector<float> texels;
+  for (int p = 0; p < 4; ++p) texels.insert(texels.end(), {0.3f, 0.2f, 0.1f, 1.0f});
+  for (const std::string k : {"0", "25"}) {
+    ASSERT_FALSE(rt::writeImage(folder / ("t" + k + ".exr"), rt::RgbaImage{2, 2, texels}).has_value());
+  }
+  std::string present = missing;
+  for (const std::string k : {"0", "25"}) {
+    const std::string gone = "value=\"gone" + k + ".exr\"";
+    present.replace(present.find(gone), gone.size(), "value=\"t" + k + ".exr\"");
+  }
+  writeText(folder / "present.mtlx", present);
+  const std::string options = " --size 16 --spp 1 --env none";
+  rt::RgbaImage withDefaults = renderCommand((folder / "missing.mtlx").string() + options);
+  rt::RgbaImage withFiles = renderCommand((folder / "present.mtlx").string() + options);
+  ASSERT_EQ(withDefaults.pixels.size(), withFiles.pixels.size());
+  ASSERT_FALSE(withDefaults.pixels.empty());
+  float worst = 0.0f, brightest = 0.0f;
+  for (size_t i = 0; i < withFiles.pixels.size(); ++i) {
+    worst = std::max(worst, std::abs(withDefaults.pixels[i] - withFiles.pixels[i]));
+    brightest = std::max(brightest, withFiles.pixels[i]);
+  }
+  EXPECT_LT(worst, 1e-4f);
+  EXPECT_GT(brightest, 0.05f);  // the sphere is lit: the comparison sees the base colour
+}
+
+TEST(InputSafety, TexturesPast32HaveTheirOwnMissingMask) {
+  // One uint held the bits: texture 32 + k aliased texture k (a target that takes 40 textures).
+  TempFolder folder("missing_mask");
+  writeText(folder / "40.mtlx", manyTexturesDocument(folder, 40));
+  CommandRun compile = mxc("compile " + (folder / "40.mtlx").string() + " -q -o " + (folder / "m.spv").string() +
+                           " --glsl " + (folder / "m.glsl").string());
+  ASSERT_EQ(compile.exitCode, 0) << compile.err;
+  const auto description = nlohmann::json::parse(readFileBytes(folder / "m.json"));
+  std::map<std::string, uint32_t> offsets;
+  for (const auto& d : description["descriptors"]) {
+    if (d["name"] == "mxc_texture_35") {
+      EXPECT_EQ(d["missingMember"], "missing_textures_32");
+      EXPECT_EQ(d["missingBit"], 3);
+    }
+    if (d["name"] == "mxc_texture_3") {
+      EXPECT_EQ(d["missingMember"], "missing_textures");
+      EXPECT_EQ(d["missingBit"], 3);
+    }
+    if (d["name"] != "MxcParameters") continue;
+    for (const auto& m : d["members"]) offsets[m["name"]] = m["offset"];
+  }
+  ASSERT_TRUE(offsets.count("missing_textures") && offsets.count("missing_textures_32"));
+  EXPECT_NE(offsets["missing_textures"], offsets["missing_textures_32"]);
+  const std::string glsl = readFileBytes(folder / "m.glsl");
+  EXPECT_NE(glsl.find("uint missing_textures_32;"), std::string::npos);
+  EXPECT_NE(glsl.find("mxc_params.missing_textures_32) & 8u"), std::string::npos);
+  EXPECT_NE(glsl.find("mxc_params.missing_textures) & 8u"), std::string::npos);
 }
 
 TEST(InputSafety, CompileSaysWhichTargetsTakeTooFewTextures) {
