@@ -6,6 +6,8 @@
 #include <cstring>
 #include <memory>
 #include <stdexcept>
+#include <string_view>
+#include <unordered_map>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
@@ -76,6 +78,7 @@ struct ItemObjects {
   VkPipeline depthPipeline = VK_NULL_HANDLE;
   VkPipeline shadePipeline = VK_NULL_HANDLE;
   bool ownsDepth = false, ownsShade = false;  ///< created for this item (else another item's, shared)
+  bool ownsBuffers = false;                   ///< the mesh's buffers were made for this item (else shared)
   std::vector<VkDescriptorSet> descriptorSets;
 };
 
@@ -103,6 +106,30 @@ bool samePipeline(const DrawItem& a, const DrawItem& b, bool shading) {
   return true;
 }
 
+/// A hash of what samePipeline compares (the shaders' words, vertex inputs and set layouts):
+/// items are compared only with those of the same hash, so finding each item's pipeline owner
+/// takes time linear in the items, not quadratic (10,000 objects of one material). `words`
+/// remembers each SPIR-V vector's hash: the items of a scene share a few.
+size_t pipelineHash(const DrawItem& item, bool shading, std::unordered_map<const std::vector<uint32_t>*, size_t>& words) {
+  auto mix = [](size_t h, size_t v) { return h ^ (v + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2)); };
+  auto spirvHash = [&](const std::vector<uint32_t>* code) -> size_t {
+    if (!code) return 0;
+    auto [at, added] = words.try_emplace(code, 0);
+    if (added) {
+      at->second = std::hash<std::string_view>{}(
+          std::string_view(reinterpret_cast<const char*>(code->data()), code->size() * sizeof(uint32_t)));
+    }
+    return at->second;
+  };
+  size_t h = mix(spirvHash(item.vertexSpirv), shading ? spirvHash(item.fragmentSpirv) : 0);
+  for (const VertexInput& in : item.inputs) h = mix(mix(mix(h, in.location), size_t(in.format)), in.offset);
+  for (const DescriptorSet* set : item.sets) {
+    h = mix(h, set->stages());
+    for (VkDescriptorType type : set->types()) h = mix(h, size_t(type));
+  }
+  return h;
+}
+
 /// Vulkan objects of one render, destroyed together.
 struct Frame {
   VulkanContext& context;
@@ -118,7 +145,9 @@ struct Frame {
       if (item.shadePipeline && item.ownsShade) vkDestroyPipeline(d, item.shadePipeline, nullptr);
       if (item.depthPipeline && item.ownsDepth) vkDestroyPipeline(d, item.depthPipeline, nullptr);
       if (item.layout) vkDestroyPipelineLayout(d, item.layout, nullptr);
-      for (Buffer* b : {&item.vertices, &item.indices}) context.destroy(*b);
+      if (item.ownsBuffers) {
+        for (Buffer* b : {&item.vertices, &item.indices}) context.destroy(*b);
+      }
     }
     if (framebuffer) vkDestroyFramebuffer(d, framebuffer, nullptr);
     if (renderPass) vkDestroyRenderPass(d, renderPass, nullptr);
@@ -456,16 +485,27 @@ void Renderer::drawItems(const std::vector<DrawItem>& items, const std::vector<s
   fb.layers = 1;
   check(vkCreateFramebuffer(device, &fb, nullptr, &f.framebuffer), "vkCreateFramebuffer");
   f.items.resize(items.size());
-  // Which item's pipelines each item uses (its own, or an earlier item's that is the same).
+  // Which item's pipelines each item uses (its own, or an earlier item's that is the same):
+  // the owners met so far, by hash, each compared in full before it is shared.
   std::vector<size_t> shadeOwner(items.size()), depthOwner(items.size());
-  for (size_t i = 0; i < items.size(); ++i) {
-    shadeOwner[i] = depthOwner[i] = i;
-    for (size_t j = 0; j < i; ++j) {
-      if (shadeOwner[j] == j && shadeOwner[i] == i && samePipeline(items[j], items[i], true)) shadeOwner[i] = j;
-      if (depthOwner[j] == j && depthOwner[i] == i && samePipeline(items[j], items[i], false)) depthOwner[i] = j;
+  std::unordered_map<const std::vector<uint32_t>*, size_t> spirvHashes;
+  std::unordered_map<size_t, std::vector<size_t>> shadeOwners, depthOwners;
+  auto ownerOf = [&](size_t i, bool shading) {
+    std::vector<size_t>& candidates = (shading ? shadeOwners : depthOwners)[pipelineHash(items[i], shading, spirvHashes)];
+    for (size_t j : candidates) {
+      if (samePipeline(items[j], items[i], shading)) return j;
     }
+    candidates.push_back(i);
+    return i;
+  };
+  // Which item's buffers each item draws from: one pair per mesh, however many objects show it.
+  std::unordered_map<const Mesh*, size_t> meshOwner;
+  for (size_t i = 0; i < items.size(); ++i) {
+    shadeOwner[i] = ownerOf(i, true);
+    depthOwner[i] = ownerOf(i, false);
     f.items[i].ownsShade = shadeOwner[i] == i;
     f.items[i].ownsDepth = depthOwner[i] == i;
+    f.items[i].ownsBuffers = meshOwner.try_emplace(items[i].mesh, i).first->second == i;
   }
   // The modules are needed only while the pipelines are created (only the owners' are made).
   std::vector<std::unique_ptr<ShaderModule>> modules(2 * items.size());
@@ -473,10 +513,18 @@ void Renderer::drawItems(const std::vector<DrawItem>& items, const std::vector<s
     const DrawItem& item = items[i];
     ItemObjects& o = f.items[i];
     const Mesh& mesh = *item.mesh;
-    o.vertices = context_.createBuffer(mesh.vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    std::memcpy(o.vertices.mapped, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex));
-    o.indices = context_.createBuffer(mesh.indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-    std::memcpy(o.indices.mapped, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
+    if (o.ownsBuffers) {
+      o.vertices = context_.createBuffer(mesh.vertices.size() * sizeof(Vertex), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+      std::memcpy(o.vertices.mapped, mesh.vertices.data(), mesh.vertices.size() * sizeof(Vertex));
+      o.indices = context_.createBuffer(mesh.indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+      std::memcpy(o.indices.mapped, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
+    } else {
+      // An earlier item of the same mesh made them (items are visited in order): drawn from,
+      // destroyed by that item alone.
+      const ItemObjects& owner = f.items[meshOwner.at(item.mesh)];
+      o.vertices = owner.vertices;
+      o.indices = owner.indices;
+    }
     // The item's range of the mesh's triangles, clamped to the mesh.
     o.firstIndex = std::min(item.firstIndex, static_cast<uint32_t>(mesh.indices.size()));
     const uint32_t available = static_cast<uint32_t>(mesh.indices.size()) - o.firstIndex;

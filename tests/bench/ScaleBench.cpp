@@ -7,8 +7,10 @@
 // near 4. Last, documents of 1k, 10k, ... materials (up to --materials), each its own
 // open_pbr_surface, compiled by `mxc compile DOC -o DIR/out.spv` as a user runs it: the time per
 // material and its growth (10x the materials: linear near 10), and the peak memory per material.
+// Last, `mxc render` of scenes of 1 and of --objects spheres of one material: the peak memory
+// each further object takes (its mesh is shared with the others: only its own blocks are not).
 //
-//   build/tests/bench/scale_bench [--max N] [--no-glslang] [--includes N] [--materials N]
+//   build/tests/bench/scale_bench [--max N] [--no-glslang] [--includes N] [--materials N] [--objects N]
 //
 // --no-glslang stops after GLSL (glslang's own constant lookup is quadratic in the number of
 // distinct literals, which dominates beyond 100k nodes).
@@ -175,6 +177,25 @@ fs::path generateMaterials(int count) {
   return path;
 }
 
+/// A scene (docs/scenes.md) of `count` unit spheres of open_pbr_default in a square grid, all
+/// in view, rendered at 32x32 with 1 sample.
+fs::path generateObjects(int count) {
+  const fs::path path = fs::temp_directory_path() / fmt::format("mxc_objects_{}_{}.json", count, ::getpid());
+  const fs::path document = fs::path(MXC_SHARED_DIR) / "corpus/materialx/examples/OpenPbr/open_pbr_default.mtlx";
+  int side = 1;
+  while (side * side < count) ++side;
+  std::ofstream out(path);
+  out << fmt::format("{{\"mxc_scene\": 1, \"documents\": [\"{}\"], \"objects\": [\n", document.string());
+  for (int i = 0; i < count; ++i) {
+    out << fmt::format("  {{\"name\": \"o{}\", \"mesh\": \"sphere\", \"material\": \"Default\", \"translate\": [{}, {}, 0]}}{}\n", i,
+                       2.5 * (i % side - 0.5 * (side - 1)), 2.5 * (i / side - 0.5 * (side - 1)), i + 1 < count ? "," : "");
+  }
+  out << fmt::format("], \"environment\": {{\"type\": \"sky\"}}, \"camera\": {{\"position\": [0, 0, {}], \"target\": [0, 0, 0], "
+                     "\"fov\": 40}}, \"render\": {{\"size\": [32, 32], \"spp\": 1}}}}\n",
+                     4.0 + 3.5 * side);
+  return path;
+}
+
 /// Peak resident memory (MiB) of `mxc compile FILE -q`, from the kernel's accounting.
 double peakMiB(const fs::path& file) {
   const mxc::bench::ChildRun run = mxc::bench::runChild(MXC_BINARY, {"compile", "-q", file.string()}, true);
@@ -191,7 +212,9 @@ int main(int argc, char** argv) {
   bool glslang = true;
   int includes = 40000;
   int materials = 10000;
+  int objects = 10000;
   for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--objects") && i + 1 < argc) objects = std::max(2, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--no-glslang")) glslang = false;
     if (!std::strcmp(argv[i], "--includes") && i + 1 < argc) includes = std::max(4, std::atoi(argv[i + 1]));
     if (!std::strcmp(argv[i], "--materials") && i + 1 < argc) materials = std::atoi(argv[i + 1]);
@@ -254,6 +277,25 @@ int main(int argc, char** argv) {
                 previous > 0 ? fmt::format("{:.1f}x", run.seconds / previous).c_str() : "-", run.peakMiB,
                 1024.0 * run.peakMiB / count);
     previous = run.seconds;
+  }
+
+  // Many objects of one material and one mesh: `mxc render SCENE -o out.png`.
+  std::printf("\n%10s %10s %10s %14s\n", "objects", "wall", "peak", "per object");
+  double onePeak = 0.0;
+  for (const int count : {1, objects}) {
+    const fs::path scene = generateObjects(count);
+    const fs::path image = fs::temp_directory_path() / fmt::format("mxc_objects_{}_{}.png", count, ::getpid());
+    const mxc::bench::ChildRun run = mxc::bench::runChild(MXC_BINARY, {"render", scene.string(), "-o", image.string()}, true);
+    const bool written = fs::exists(image);
+    fs::remove(scene);
+    fs::remove(image);
+    if (!run.ok || !written) {
+      std::fprintf(stderr, "rendering %d objects failed\n", count);
+      return 1;
+    }
+    if (count == 1) onePeak = run.peakMiB;
+    std::printf("%10d %8.1f s %6.0f MiB %11s\n", count, run.seconds, run.peakMiB,
+                count == 1 ? "-" : fmt::format("{:.1f} KiB", 1024.0 * (run.peakMiB - onePeak) / (count - 1)).c_str());
   }
   return 0;
 }
