@@ -70,6 +70,7 @@ std::vector<VkDescriptorType> MaterialResources::layout(const glsl::MaterialInte
 }
 
 bool MaterialResources::setParameter(const std::string& name, const std::vector<float>& value) {
+  if (glsl::isMissingTexturesMember(name)) return false;  // packParameters writes their bits, never `value`
   for (glsl::UniformField& f : material_.parameters) {
     if (f.name != name || f.value.size() != value.size()) continue;
     f.value = value;

@@ -33,7 +33,8 @@ class MaterialResources {
   /// output, then one sampler per texture.
   static std::vector<VkDescriptorType> layout(const glsl::MaterialInterface& material);
 
-  /// Sets a parameter (`--param`, frame, time) to new values; false when it does not exist.
+  /// Sets a parameter (`--param`, frame, time) to new values; false when it does not exist, and
+  /// for the missing_textures masks, which the textures' files set (their bits are not floats).
   bool setParameter(const std::string& name, const std::vector<float>& value);
   /// Binds the tables, the parameters and the textures into `set`.
   void bind(DescriptorSet& set, const AlbedoTables& tables) const;

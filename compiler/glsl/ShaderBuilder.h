@@ -36,7 +36,6 @@ struct UniformField {
   uint32_t bits = 0;
 };
 
-
 /// What the harness must provide to run a material shader.
 struct MaterialInterface {
   std::vector<TextureBinding> textures;

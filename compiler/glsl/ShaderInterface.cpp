@@ -112,9 +112,10 @@ json shaderInterfaceJson(const ir::Material& material, const MaterialShader& sha
                 {"type", parameterType(f)},
                 {"offset", f.offset},
                 {"default", f.value}};
-    if (f.name == "missing_textures") member["meaning"] = "bit k set: texture k could not be read, the image node's default is used";
-    if (f.name != "missing_textures" && isMissingTexturesMember(f.name)) {
-      member["meaning"] = fmt::format("bit k set: texture {} + k could not be read, the image node's default is used", f.name.substr(17));
+    if (isMissingTexturesMember(f.name)) {
+      // missing_textures_32 holds textures 32 + k: its first texture is its name's suffix.
+      const std::string first = f.name == "missing_textures" ? "" : f.name.substr(f.name.rfind('_') + 1) + " + ";
+      member["meaning"] = "bit k set: texture " + first + "k could not be read, the image node's default is used";
     }
     if (f.name == "frame") member["meaning"] = "the frame index, from 1 (MaterialX's frame geometric property)";
     if (f.name == "time") member["meaning"] = "seconds (MaterialX's time geometric property)";
