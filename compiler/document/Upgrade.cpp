@@ -29,7 +29,7 @@ int renameAtan2Inputs(ScopeNodes scope) {
 // reinterpreted, a vector3 connection goes through a new convert node.
 int convertSubsurfaceRadius(Document& doc, ScopeNodes scope) {
   int edits = 0;
-  std::vector<Node> added;
+  AddedNodes added{doc, scope, {}};
   for (Node& n : *scope.nodes) {
     if (n.category != "subsurface_bsdf") continue;
     Input* radius = n.findInput("radius");
@@ -41,23 +41,15 @@ int convertSubsurfaceRadius(Document& doc, ScopeNodes scope) {
       continue;
     }
     if (!radius->isConnected()) continue;
-    Node convert;
-    convert.category = "convert";
-    convert.name = doc.own(scope.uniqueName(std::string(n.name) + "_radius_color3"));
-    convert.type = "color3";
-    convert.location = radius->location;
-    Input in = *radius;
-    in.name = "in";
-    in.type = "vector3";
-    in.element = {};
-    convert.inputs.push_back(in);
-    radius->nodename = convert.name;
+    // The convert sits where the radius was written (its messages point at that input).
+    const size_t convert = added.add("convert", "color3", std::string(n.name) + "_radius_color3", radius->location);
+    added.nodes[convert].inputs.push_back(added.moved(radius, "in", "vector3", "", radius->location));
+    radius->nodename = added.nodes[convert].name;
     radius->nodegraph = {};
     radius->interfacename = {};
     radius->output = {};
-    added.push_back(std::move(convert));
   }
-  for (Node& n : added) scope.nodes->push_back(std::move(n));
+  added.commit();
   return edits;
 }
 
@@ -191,59 +183,6 @@ int convertSwizzleNodes(Document& doc, ScopeNodes scope) {
   }
   return edits;
 }
-
-/// The nodes an upgrade adds to a scope, appended to it once the scope's nodes are no longer
-/// walked. Nodes are named by the index `add` returns: a reference would not survive the next.
-struct AddedNodes {
-  Document& doc;
-  ScopeNodes scope;
-  std::vector<Node> nodes;
-
-  /// A node of `category` and `type` at `near`'s place, named from `base` uniquely in the scope.
-  size_t add(std::string_view category, std::string_view type, const std::string& base, const Node& near) {
-    std::string name = scope.uniqueName(base);
-    for (int i = 2; std::any_of(nodes.begin(), nodes.end(), [&](const Node& a) { return a.name == name; }); ++i) {
-      name = scope.uniqueName(base + "_" + std::to_string(i));
-    }
-    Node node;
-    node.category = category;
-    node.type = type;
-    node.location = near.location;
-    node.name = doc.own(name);
-    nodes.push_back(std::move(node));
-    return nodes.size() - 1;
-  }
-  /// The input `name` of type `type` connected to added node `k`.
-  Input connection(std::string_view name, std::string_view type, size_t k) const {
-    Input in;
-    in.name = name;
-    in.type = type;
-    in.nodename = nodes[k].name;
-    in.location = nodes[k].location;
-    return in;
-  }
-  /// `from` as the input `name` (its binding kept: a value, a connection or an interface
-  /// name), or a value input of `type` written `fallback` when `from` is absent.
-  Input moved(const Input* from, std::string_view name, std::string_view type, std::string_view fallback,
-              SourceLocation where) {
-    Input in;
-    if (from) in = *from;
-    in.name = name;
-    in.type = type;
-    in.element = {};
-    if (!from) {
-      in.location = where;
-      in.valueLocation = where;
-      in.valueString = doc.own(std::string(fallback));
-      in.value = tryParseValue(valueTypeOf(type), *in.valueString);
-    }
-    return in;
-  }
-  void commit() {
-    for (Node& n : nodes) scope.nodes->push_back(std::move(n));
-    nodes.clear();
-  }
-};
 
 // MaterialX 1.39 changed normalmap (its specification's "normalmap" and the 1.39 changes): the
 // `space` input is gone, the nodedef ND_normalmap became ND_normalmap_float (a vector2 scale

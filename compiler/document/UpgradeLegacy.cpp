@@ -209,7 +209,7 @@ int renameNodesOf137(ScopeNodes scope) {
 /// A 1.37 BSDF node with a `base` input layered itself over that base; 1.38 writes
 /// layer(top = node, base = base). The node takes the name `<name>__layer_top` and the layer
 /// takes its name, so every connection to the old node now reaches the layer.
-void layerOverBase(Document& doc, ScopeNodes& scope, Node& node, std::vector<Node>& added) {
+void layerOverBase(Document& doc, ScopeNodes& scope, Node& node, AddedNodes& added) {
   auto base = std::find_if(node.inputs.begin(), node.inputs.end(), [](const Input& in) { return in.name == "base"; });
   if (base == node.inputs.end()) return;
   if (base->isConnected()) {
@@ -227,7 +227,7 @@ void layerOverBase(Document& doc, ScopeNodes& scope, Node& node, std::vector<Nod
     Input under = *base;
     under.element = {};
     layer.inputs = {top, under};
-    added.push_back(std::move(layer));
+    added.nodes.push_back(std::move(layer));
   }
   node.inputs.erase(base);
 }
@@ -237,7 +237,7 @@ void layerOverBase(Document& doc, ScopeNodes& scope, Node& node, std::vector<Nod
 // atan2's inputs.
 int upgradeBsdfsOf138(Document& doc, ScopeNodes scope) {
   int edits = 0;
-  std::vector<Node> added;
+  AddedNodes added{doc, scope, {}};
   for (size_t i = 0; i < scope.nodes->size(); ++i) {
     Node& n = (*scope.nodes)[i];
     const std::string_view category = n.category;
@@ -262,11 +262,8 @@ int upgradeBsdfsOf138(Document& doc, ScopeNodes scope) {
       // The artistic (reflectivity, edge_color) inputs move to an artistic_ior node (Gulbrandsen
       // 2014) whose ior and extinction outputs feed the conductor.
       n.category = "conductor_bsdf";
-      Node artistic;
-      artistic.category = "artistic_ior";
-      artistic.name = doc.own(scope.uniqueName(std::string(n.name) + "__artistic_ior"));
-      artistic.type = "multioutput";
-      artistic.location = n.location;
+      const size_t k = added.add("artistic_ior", "multioutput", std::string(n.name) + "__artistic_ior", n);
+      Node& artistic = added.nodes[k];
       for (std::string_view output : {"ior", "extinction"}) {
         Output out;
         out.name = output;
@@ -287,7 +284,6 @@ int upgradeBsdfsOf138(Document& doc, ScopeNodes scope) {
         in.location = n.location;
         n.inputs.push_back(in);
       }
-      added.push_back(std::move(artistic));
     } else if (category == "diffuse_brdf") {
       n.category = "oren_nayar_diffuse_bsdf";
     } else if (category == "burley_diffuse_brdf") {
@@ -312,11 +308,11 @@ int upgradeBsdfsOf138(Document& doc, ScopeNodes scope) {
     }
     ++edits;
   }
-  for (Node& n : added) scope.nodes->push_back(std::move(n));
+  added.commit();
 
   // artistic_ior's outputs became color3 in 1.38; an input that took them as vector3 now goes
   // through a convert node (one per output, shared by its readers).
-  std::vector<Node> converts;
+  AddedNodes converts{doc, scope, {}};
   std::map<std::pair<std::string_view, std::string_view>, std::string_view> convertOf;
   for (Node& n : *scope.nodes) {
     if (n.category == "artistic_ior") {
@@ -332,24 +328,20 @@ int upgradeBsdfsOf138(Document& doc, ScopeNodes scope) {
       port.output = {};
       return;
     }
-    Node convert;
-    convert.category = "convert";
-    convert.name = doc.own(scope.uniqueName(fmt::format("{}__convert_{}", port.nodename, port.output)));
-    convert.type = "vector3";
-    convert.location = port.location;
+    const size_t k = converts.add("convert", "vector3", fmt::format("{}__convert_{}", port.nodename, port.output),
+                                  port.location);
     Input in;
     in.name = "in";
     in.type = "color3";
     in.nodename = port.nodename;
     in.output = port.output;
     in.location = port.location;
-    convert.inputs.push_back(in);
-    convertOf[{port.nodename, port.output}] = convert.name;
-    port.nodename = convert.name;
+    converts.nodes[k].inputs.push_back(in);
+    convertOf[{port.nodename, port.output}] = converts.nodes[k].name;
+    port.nodename = converts.nodes[k].name;
     port.output = {};
-    converts.push_back(std::move(convert));
   });
-  for (Node& n : converts) scope.nodes->push_back(std::move(n));
+  converts.commit();
   return edits;
 }
 
@@ -396,13 +388,18 @@ void upgradeTo138(Document& doc, Diagnostics& diagnostics) {
   doc.upgradeNotes.push_back(fmt::format("upgraded from MaterialX {}", doc.version));
   convertMaterials(doc, diagnostics);
   int renamed = 0;
+  int forms126 = 0;
   int bsdfs = 0;
   int filenames = 0;
   for (ScopeNodes scope : scopesOf(doc)) {
-    if (version < Version{1, 34}) renamed += upgradeNodesOf126(scope, version);
+    if (version < Version{1, 34}) forms126 += upgradeNodesOf126(scope, version);
     if (version < Version{1, 37}) renamed += renameNodesOf137(scope);
     bsdfs += upgradeBsdfsOf138(doc, scope);
     if (version < Version{1, 36}) scope.forEachPort([&](Port& port) { filenames += renameFilenameTokens(doc, port); });
+  }
+  if (forms126) {
+    doc.upgradeNotes.push_back(
+        fmt::format("{} 1.26 forms upgraded (opgraphnode inputs typed, constant color named value)", forms126));
   }
   if (renamed) doc.upgradeNotes.push_back(fmt::format("{} nodes renamed to their 1.37 categories", renamed));
   if (bsdfs) doc.upgradeNotes.push_back(fmt::format("{} nodes upgraded to the 1.38 BSDFs and atan2", bsdfs));

@@ -159,6 +159,9 @@ TEST(DocumentLoader, Upgrades138SubsurfaceRadiusAndAtan2) {
   ASSERT_EQ(radius->source, resolve::InputSource::Connection);
   EXPECT_EQ(radius->upstream.node->category(), "convert");
   EXPECT_EQ(radius->upstream.type, "color3");
+  // The added convert is placed at the radius input it serves (line 4), not at its node.
+  EXPECT_EQ(radius->upstream.node->node->location.line(), 4u);
+  EXPECT_EQ(radius->upstream.node->findInput("in")->location.line(), 4u);
   EXPECT_FLOAT_EQ(r.top.findNode("angle")->findInput("iny")->value->as<float>(), 1.0f);
   EXPECT_FLOAT_EQ(r.top.findNode("angle")->findInput("inx")->value->as<float>(), 2.0f);
 }

@@ -2,6 +2,8 @@
 // are the ones MaterialX 1.39.5's own upgrade gives for the same text (read with
 // MaterialX.readFromXmlFile and written back), checked here on the resolved graph.
 
+#include <algorithm>
+
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -114,6 +116,14 @@ TEST(UpgradeLegacy, A122OpGraphShaderAndMaterial) {
   ASSERT_EQ(rough->source, resolve::InputSource::Connection);
   ASSERT_NE(feeding(rough), nullptr);
   EXPECT_FLOAT_EQ(feeding(rough)->findInput("value")->value->as<float>(), 0.4f);
+  // The 1.26 edits have a note of their own: the one opgraphnode node input typed, two constants'
+  // `color` named `value`; no node was renamed to a 1.37 category.
+  const std::vector<std::string>& notes = r.document->upgradeNotes;
+  EXPECT_NE(std::find(notes.begin(), notes.end(),
+                      "3 1.26 forms upgraded (opgraphnode inputs typed, constant color named value)"),
+            notes.end())
+      << fmt::format("{}", fmt::join(notes, "; "));
+  for (const std::string& note : notes) EXPECT_EQ(note.find("1.37 categories"), std::string::npos) << note;
 }
 
 TEST(UpgradeLegacy, A137GraphGetsTheNewBsdfsLayersAndArtisticIor) {
