@@ -30,6 +30,7 @@ std::optional<ShaderCache::Words> ShaderCache::getOrCompile(const std::string& k
           ++hits_;
           *served = Served::SameCode;
         }
+        touch(it->second);
         return it->second.words;
       }
       // Another worker compiles this code: wait for its words, or for its failure (the entry
@@ -56,11 +57,35 @@ std::optional<ShaderCache::Words> ShaderCache::getOrCompile(const std::string& k
     entries_.erase(key);
     return words;
   }
-  Entry& entry = entries_.at(key);
-  entry.words = std::move(*words);  // a move: nothing here throws before the entry is complete
-  entry.pending = false;
-  return entry.words;
+  auto entry = entries_.find(key);
+  if (!completeEntry(entry, *words)) return words;  // not kept, as a failed compile's
+  return entry->second.words;
 }
+
+bool ShaderCache::completeEntry(std::map<std::string, Entry>::iterator entry, Words& words) {
+  // Only the list node allocates: should it fail, the entry is dropped (its waiters wake to
+  // compile the code themselves) and `words` stays the caller's.
+  try {
+    used_.push_front(&entry->first);
+  } catch (...) {
+    entries_.erase(entry);
+    return false;
+  }
+  entry->second.words = std::move(words);
+  entry->second.pending = false;
+  entry->second.used = used_.begin();
+  held_ += bytesOf(entry->first, entry->second);
+  while (held_ > capacity_ && used_.size() > 1) {
+    auto victim = entries_.find(*used_.back());
+    held_ -= bytesOf(victim->first, victim->second);
+    used_.pop_back();
+    entries_.erase(victim);
+    ++evicted_;
+  }
+  return true;
+}
+
+void ShaderCache::touch(Entry& entry) { used_.splice(used_.begin(), used_, entry.used); }
 
 void ShaderCache::addGroup(const std::vector<std::string>& keys, GroupCompile compile) {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -93,11 +118,9 @@ void ShaderCache::runGroup(std::unique_lock<std::mutex>& lock, const std::shared
       entries_.erase(key);
       continue;
     }
-    Entry& entry = entries_.at(key);
-    entry.words = std::move(it->second);
-    entry.pending = false;
-    entry.unclaimed = true;
-    ++grouped_;
+    auto entry = entries_.find(key);
+    entry->second.unclaimed = true;
+    if (completeEntry(entry, it->second)) ++grouped_;
   }
   done_.notify_all();
 }
@@ -116,6 +139,16 @@ bool ShaderCache::compileAGroup() {
 size_t ShaderCache::grouped() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return grouped_;
+}
+
+size_t ShaderCache::heldBytes() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return held_;
+}
+
+size_t ShaderCache::evicted() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return evicted_;
 }
 
 size_t ShaderCache::hits() const {

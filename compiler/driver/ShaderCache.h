@@ -13,6 +13,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
+#include <list>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -25,6 +26,13 @@ namespace mxc {
 class ShaderCache {
  public:
   using Words = std::vector<uint32_t>;
+  /// What the complete entries may hold, keys and modules together, before the least recently
+  /// used are dropped: a document of 100k distinct materials would otherwise keep every module
+  /// (about 110 kB for an OpenPBR shader) and key to the end. A dropped code is compiled again
+  /// if a later material has it, so the bound costs time only when sharing spans more shaders
+  /// than it holds (256 MiB: some 1,500 OpenPBR shaders).
+  static constexpr size_t kDefaultCapacityBytes = size_t(256) << 20;
+  explicit ShaderCache(size_t capacityBytes = kDefaultCapacityBytes) : capacity_(capacityBytes) {}
   /// How getOrCompile came by a key's module.
   enum class Served {
     Compiled,      ///< compiled for this call
@@ -40,9 +48,9 @@ class ShaderCache {
   /// report nothing (spirv::compile reports errors only): a material served from the cache
   /// gets no messages.
   ///
-  /// Entries live as long as the cache (a batch, a workspace): a key is the generated part of a
-  /// shader (library files count by their paths: under a fifth of the text, ShaderBuilderTest
-  /// checks) and a module about 25 kB, so a batch holds some tens of kB per distinct shader.
+  /// Entries live as long as the cache (a batch, a workspace) or until the capacity drops them:
+  /// a key is the generated part of a shader (library files count by their paths: under a
+  /// fifth of the text, ShaderBuilderTest checks) and a module 25-110 kB.
   std::optional<Words> getOrCompile(const std::string& key, const std::function<std::optional<Words>()>& compile,
                                     Served* served = nullptr);
 
@@ -61,12 +69,18 @@ class ShaderCache {
   size_t hits() const;
   /// Modules made by group compiles so far.
   size_t grouped() const;
+  /// Bytes of keys and modules the complete entries hold now (at most the capacity, but for
+  /// one entry larger than it, kept until the next).
+  size_t heldBytes() const;
+  /// Complete entries dropped to stay within the capacity so far.
+  size_t evicted() const;
 
  private:
   struct Entry {
     bool pending = true;
     bool unclaimed = false;  ///< made by a group compile, not yet taken by its material
     Words words;
+    std::list<const std::string*>::iterator used;  ///< its place in used_, once complete
   };
   struct Group {
     std::vector<std::string> keys;
@@ -74,6 +88,15 @@ class ShaderCache {
   };
   /// Runs `group` (taken out of groups_, its keys' entries pending) with the lock released.
   void runGroup(std::unique_lock<std::mutex>& lock, const std::shared_ptr<Group>& group);
+  /// Makes the pending `entry` complete with `words` (moved from) and most recently used, then
+  /// drops the least recently used complete entries past the capacity (never `entry` itself).
+  /// False, `entry` erased and `words` left as they were, when there was no memory for it.
+  bool completeEntry(std::map<std::string, Entry>::iterator entry, Words& words);
+  /// `key`'s complete entry is used again: it moves to the front.
+  void touch(Entry& entry);
+  static size_t bytesOf(const std::string& key, const Entry& entry) {
+    return key.size() + entry.words.size() * sizeof(uint32_t);
+  }
 
   mutable std::mutex mutex_;
   std::condition_variable done_;
@@ -81,6 +104,12 @@ class ShaderCache {
   std::map<std::string, std::shared_ptr<Group>> groups_;  ///< the group of each key not yet compiled
   size_t hits_ = 0;
   size_t grouped_ = 0;
+  size_t capacity_;
+  size_t held_ = 0;    ///< bytesOf every complete entry
+  size_t evicted_ = 0;
+  /// The keys (in entries_, whose nodes do not move) of the complete entries, most recently
+  /// used first.
+  std::list<const std::string*> used_;
 };
 
 }  // namespace mxc

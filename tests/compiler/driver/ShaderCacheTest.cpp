@@ -19,6 +19,67 @@ namespace {
 
 using Words = ShaderCache::Words;
 
+// A cache holds at most its capacity of keys and modules: past it the least recently used code
+// is dropped, and compiled again when a later material has it. Here each entry is a one-letter
+// key and 1,000 words (4,001 bytes), and the capacity holds two.
+TEST(ShaderCache, DropsTheLeastRecentlyUsedCodesPastItsCapacity) {
+  ShaderCache cache(2 * 4001);
+  std::map<std::string, int> compiles;
+  auto get = [&](const std::string& key) {
+    return cache.getOrCompile(key, [&]() -> std::optional<Words> {
+      ++compiles[key];
+      return Words(1000, uint32_t(key[0]));
+    });
+  };
+  EXPECT_EQ(get("a"), Words(1000, uint32_t('a')));
+  get("b");
+  EXPECT_EQ(cache.heldBytes(), 2u * 4001u);
+  get("a");  // a hit: "a" is now the most recently used, "b" the least
+  EXPECT_EQ(cache.hits(), 1u);
+  get("c");  // past the capacity: "b" goes
+  EXPECT_EQ(cache.evicted(), 1u);
+  EXPECT_EQ(cache.heldBytes(), 2u * 4001u);
+  EXPECT_EQ(get("a"), Words(1000, uint32_t('a')));
+  EXPECT_EQ(compiles["a"], 1);  // kept
+  EXPECT_EQ(get("b"), Words(1000, uint32_t('b')));
+  EXPECT_EQ(compiles["b"], 2);  // dropped, so compiled again (and "c" goes)
+  EXPECT_EQ(cache.evicted(), 2u);
+  EXPECT_EQ(compiles["c"], 1);
+  // One entry larger than the capacity is kept until the next one comes.
+  ShaderCache small(100);
+  EXPECT_EQ(small.getOrCompile("big", [] { return std::optional<Words>(Words(1000, 7u)); }), Words(1000, 7u));
+  EXPECT_EQ(small.heldBytes(), 4003u);
+  small.getOrCompile("next", [] { return std::optional<Words>(Words(10, 1u)); });
+  EXPECT_EQ(small.evicted(), 1u);
+  EXPECT_EQ(small.heldBytes(), 44u);
+}
+
+// Group compiles count against the capacity too; a member whose module was dropped before its
+// material came compiles alone, with the same words.
+TEST(ShaderCache, AGroupMemberDroppedBeforeItsMaterialCameCompilesAlone) {
+  ShaderCache cache(2 * 4001);
+  cache.addGroup({"a", "b", "c"}, [] {
+    std::map<std::string, Words> made;
+    for (const char* key : {"a", "b", "c"}) made[key] = Words(1000, uint32_t(key[0]));
+    return made;
+  });
+  int alone = 0;
+  auto compileAlone = [&](char key) {
+    return [&alone, key]() -> std::optional<Words> {
+      ++alone;
+      return Words(1000, uint32_t(key));
+    };
+  };
+  ShaderCache::Served served{};
+  EXPECT_EQ(cache.getOrCompile("c", compileAlone('c'), &served), Words(1000, uint32_t('c')));
+  EXPECT_EQ(served, ShaderCache::Served::CutFromGroup);
+  EXPECT_EQ(cache.grouped(), 3u);
+  EXPECT_EQ(cache.evicted(), 1u);  // "a", the first made
+  EXPECT_EQ(cache.getOrCompile("a", compileAlone('a'), &served), Words(1000, uint32_t('a')));
+  EXPECT_EQ(served, ShaderCache::Served::Compiled);
+  EXPECT_EQ(alone, 1);
+}
+
 TEST(ShaderCache, CompilesEachCodeOnceForEveryWorker) {
   ShaderCache cache;
   std::atomic<int> compiles{0};
