@@ -209,7 +209,7 @@ int renameNodesOf137(ScopeNodes scope) {
 /// A 1.37 BSDF node with a `base` input layered itself over that base; 1.38 writes
 /// layer(top = node, base = base). The node takes the name `<name>__layer_top` and the layer
 /// takes its name, so every connection to the old node now reaches the layer.
-void layerOverBase(Document& doc, ScopeNodes& scope, Node& node, AddedNodes& added) {
+void layerOverBase(Node& node, AddedNodes& added) {
   auto base = std::find_if(node.inputs.begin(), node.inputs.end(), [](const Input& in) { return in.name == "base"; });
   if (base == node.inputs.end()) return;
   if (base->isConnected()) {
@@ -218,7 +218,7 @@ void layerOverBase(Document& doc, ScopeNodes& scope, Node& node, AddedNodes& add
     layer.name = node.name;
     layer.type = "BSDF";
     layer.location = node.location;
-    node.name = doc.own(scope.uniqueName(std::string(node.name) + "__layer_top"));
+    node.name = added.doc.own(added.scope.uniqueName(std::string(node.name) + "__layer_top"));
     Input top;
     top.name = "top";
     top.type = "BSDF";
@@ -247,7 +247,7 @@ int upgradeBsdfsOf138(Document& doc, ScopeNodes scope) {
                    : category == "generalized_schlick_brdf" ? "generalized_schlick_bsdf"
                    : category == "sheen_brdf"               ? "sheen_bsdf"
                                                             : "thin_film_bsdf";
-      layerOverBase(doc, scope, n, added);
+      layerOverBase(n, added);
     } else if (category == "dielectric_btdf") {
       n.category = "dielectric_bsdf";
       std::erase_if(n.inputs, [](const Input& in) { return in.name == "interior"; });
