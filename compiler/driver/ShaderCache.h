@@ -30,7 +30,7 @@ class ShaderCache {
   /// used are dropped: a document of 100k distinct materials would otherwise keep every module
   /// (about 110 kB for an OpenPBR shader) and key to the end. A dropped code is compiled again
   /// if a later material has it, so the bound costs time only when sharing spans more shaders
-  /// than it holds (256 MiB: some 1,500 OpenPBR shaders).
+  /// than it holds (256 MiB: over a thousand OpenPBR shaders, 110 kB of module each and a key).
   static constexpr size_t kDefaultCapacityBytes = size_t(256) << 20;
   explicit ShaderCache(size_t capacityBytes = kDefaultCapacityBytes) : capacity_(capacityBytes) {}
   /// How getOrCompile came by a key's module.
